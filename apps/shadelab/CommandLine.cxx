@@ -1,0 +1,109 @@
+#include "CommandLine.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+namespace shadelab
+{
+namespace app
+{
+
+CommandLine::CommandLine(const std::vector<std::string>& args, const std::vector<OptionSpec>& specs)
+{
+  auto find = [&](const std::string& word) -> const OptionSpec* {
+    for (const OptionSpec& spec : specs)
+    {
+      if (word == "--" + spec.name || (!spec.shortName.empty() && word == "-" + spec.shortName))
+      {
+        return &spec;
+      }
+    }
+    return nullptr;
+  };
+  for (size_t i = 0; i < args.size(); ++i)
+  {
+    std::string word = args[i];
+    std::string inlineValue;
+    bool hasInlineValue = false;
+    const size_t equals = word.find('=');
+    if (word.rfind("--", 0) == 0 && equals != std::string::npos)
+    {
+      inlineValue = word.substr(equals + 1);
+      word = word.substr(0, equals);
+      hasInlineValue = true;
+    }
+    if (word.size() < 2 || word[0] != '-')
+    {
+      this->Positional.push_back(word);
+      continue;
+    }
+    const OptionSpec* spec = find(word);
+    if (!spec)
+    {
+      throw UsageError("unknown option " + word + " (see --help)");
+    }
+    if (spec->valueName.empty())
+    {
+      if (hasInlineValue)
+      {
+        throw UsageError("option --" + spec->name + " takes no value");
+      }
+      this->Values[spec->name] = "1";
+      continue;
+    }
+    if (!hasInlineValue)
+    {
+      if (i + 1 >= args.size())
+      {
+        throw UsageError("option " + word + " needs a value (" + spec->valueName + ")");
+      }
+      inlineValue = args[++i];
+    }
+    this->Values[spec->name] = inlineValue;
+  }
+}
+
+std::string CommandLine::get(const std::string& name, const std::string& fallback) const
+{
+  auto it = this->Values.find(name);
+  return it == this->Values.end() ? fallback : it->second;
+}
+
+double CommandLine::getNumber(const std::string& name, double fallback, double lo, double hi) const
+{
+  auto it = this->Values.find(name);
+  if (it == this->Values.end())
+  {
+    return fallback;
+  }
+  char* end = nullptr;
+  const double value = std::strtod(it->second.c_str(), &end);
+  if (it->second.empty() || *end != '\0' || !std::isfinite(value))
+  {
+    throw UsageError("option --" + name + ": \"" + it->second + "\" is not a number");
+  }
+  if (value < lo || value > hi)
+  {
+    std::ostringstream s;
+    s << "option --" << name << ": " << value << " is out of range [" << lo << ", " << hi << "]";
+    throw UsageError(s.str());
+  }
+  return value;
+}
+
+std::string CommandLine::describe(const std::vector<OptionSpec>& specs)
+{
+  std::ostringstream out;
+  for (const OptionSpec& spec : specs)
+  {
+    std::string left = "  " + (spec.shortName.empty() ? std::string("    ") : "-" + spec.shortName + ", ") + "--" +
+      spec.name + (spec.valueName.empty() ? "" : " " + spec.valueName);
+    left.resize(std::max<size_t>(left.size() + 2, 30), ' ');
+    out << left << spec.help << "\n";
+  }
+  return out.str();
+}
+
+} // namespace app
+} // namespace shadelab

@@ -1,0 +1,65 @@
+#ifndef shadelab_app_CommandLine_h
+#define shadelab_app_CommandLine_h
+/**
+ * @file CommandLine.h
+ * @brief The small option parser shared by every `shadelab` subcommand.
+ *
+ * Options are `--name value` or `--name=value`, short aliases like `-o`, and
+ * positional arguments. Every problem is a UsageError whose text is one line.
+ */
+
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace shadelab
+{
+namespace app
+{
+
+/// Bad command-line use: exit status 2, message printed as one line.
+struct UsageError : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+/// Bad input or a failed job: exit status 1, message printed as one line.
+struct JobError : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+/// One option a subcommand accepts.
+struct OptionSpec
+{
+  std::string name;      ///< long name without dashes, e.g. "scene"
+  std::string shortName; ///< e.g. "o", or ""
+  std::string valueName; ///< e.g. "FILE"; empty for a flag
+  std::string help;
+};
+
+class CommandLine
+{
+public:
+  /// Parses @p args (without the program and subcommand names). Throws UsageError.
+  CommandLine(const std::vector<std::string>& args, const std::vector<OptionSpec>& specs);
+
+  bool has(const std::string& name) const { return this->Values.count(name) != 0; }
+  std::string get(const std::string& name, const std::string& fallback = std::string()) const;
+  /// A number option in [lo, hi]; throws UsageError naming the option otherwise.
+  double getNumber(const std::string& name, double fallback, double lo, double hi) const;
+  const std::vector<std::string>& positional() const { return this->Positional; }
+
+  /// "  -o, --output FILE   help" lines for --help.
+  static std::string describe(const std::vector<OptionSpec>& specs);
+
+private:
+  std::map<std::string, std::string> Values;
+  std::vector<std::string> Positional;
+};
+
+} // namespace app
+} // namespace shadelab
+
+#endif

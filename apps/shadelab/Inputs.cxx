@@ -1,0 +1,102 @@
+#include "Inputs.h"
+
+#include "CommandLine.h"
+
+#include "shadelab/DefaultScene.h"
+#include "shadelab/Scene.h"
+#include "slImageWriter.h"
+#include "slMeshReader.h"
+#include "slMeshWriter.h"
+#include "slScene.h"
+
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+
+#include <cstdio>
+
+namespace shadelab
+{
+namespace app
+{
+
+const char* meshFormatsText()
+{
+  return "OBJ, PLY, STL, VTP, VTK or OFF";
+}
+
+vtkSmartPointer<vtkPolyData> loadMesh(const std::string& path)
+{
+  vtkNew<slMeshReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  if (*reader->GetErrorMessage())
+  {
+    throw JobError(reader->GetErrorMessage());
+  }
+  vtkSmartPointer<vtkPolyData> mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->ShallowCopy(reader->GetOutput());
+  return mesh;
+}
+
+vtkSmartPointer<slScene> loadScene(const std::string& path)
+{
+  auto scene = vtkSmartPointer<slScene>::New();
+  if (path.empty())
+  {
+    scene->SetScene(shadelab::defaultScene());
+  }
+  else if (!scene->ReadFile(path.c_str()))
+  {
+    throw JobError(scene->GetErrorMessage());
+  }
+  return scene;
+}
+
+void applySceneOverrides(const CommandLine& cl, slScene* scene)
+{
+  if (cl.has("model") && !scene->SetModelName(cl.get("model").c_str()))
+  {
+    throw UsageError("--model: \"" + cl.get("model") + "\" is not a lighting model (lambert, phong, " +
+      "blinn-phong, lambert-normalized, phong-normalized, blinn-phong-normalized)");
+  }
+  if (cl.has("frequency") && !scene->SetFrequencyName(cl.get("frequency").c_str()))
+  {
+    throw UsageError("--frequency: \"" + cl.get("frequency") + "\" is not one of flat, gouraud, phong");
+  }
+}
+
+void parseSize(const std::string& text, int& width, int& height)
+{
+  char x = 0, extra = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &width, &x, &height, &extra) != 3 || (x != 'x' && x != 'X') ||
+    width < 16 || height < 16 || width > 8192 || height > 8192)
+  {
+    throw UsageError("--size: \"" + text + "\" is not WxH with 16 <= W, H <= 8192");
+  }
+}
+
+void writeMesh(vtkPolyData* mesh, const std::string& path)
+{
+  vtkNew<slMeshWriter> writer;
+  writer->SetInputData(mesh);
+  writer->SetFileName(path.c_str());
+  if (!writer->Write())
+  {
+    throw JobError(writer->GetErrorMessage());
+  }
+}
+
+void writeImage(vtkImageData* image, const std::string& path)
+{
+  vtkNew<slImageWriter> writer;
+  writer->SetInputData(image);
+  writer->SetFileName(path.c_str());
+  if (!writer->Write())
+  {
+    throw JobError(writer->GetErrorMessage());
+  }
+}
+
+} // namespace app
+} // namespace shadelab

@@ -1,0 +1,48 @@
+#ifndef shadelab_app_Inputs_h
+#define shadelab_app_Inputs_h
+/**
+ * @file Inputs.h
+ * @brief Loading what subcommands share: meshes, scenes, option overrides,
+ * and writing images, each turning failures into one-line JobErrors.
+ */
+
+#include <vtkSmartPointer.h>
+
+#include <string>
+
+class slScene;
+class vtkImageData;
+class vtkPolyData;
+
+namespace shadelab
+{
+namespace app
+{
+class CommandLine;
+
+/// "OBJ, PLY, STL, VTP, VTK or OFF".
+const char* meshFormatsText();
+
+/// Reads a mesh with slMeshReader. Throws JobError ("FILE: problem").
+vtkSmartPointer<vtkPolyData> loadMesh(const std::string& path);
+
+/// Reads a scene file, or returns the built-in default scene for "".
+/// Throws JobError ("FILE: KEY.PATH: problem").
+vtkSmartPointer<slScene> loadScene(const std::string& path);
+
+/// Applies --model and --frequency. Throws UsageError for unknown names.
+void applySceneOverrides(const CommandLine& cl, slScene* scene);
+
+/// Parses "WxH" (16..8192 each). Throws UsageError.
+void parseSize(const std::string& text, int& width, int& height);
+
+/// Writes a mesh all-or-nothing (VTP, VTK, PLY, OBJ, STL). Throws JobError.
+void writeMesh(vtkPolyData* mesh, const std::string& path);
+
+/// Writes an image all-or-nothing. Throws JobError.
+void writeImage(vtkImageData* image, const std::string& path);
+
+} // namespace app
+} // namespace shadelab
+
+#endif

@@ -1,0 +1,102 @@
+#include "slImageReader.h"
+
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
+vtkStandardNewMacro(slImageReader);
+
+slImageReader::slImageReader()
+{
+  this->SetNumberOfInputPorts(0);
+}
+
+slImageReader::~slImageReader()
+{
+  this->SetFileName(nullptr);
+}
+
+int slImageReader::RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  // The extent is only known after reading; report it here from the header.
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  int extent[6] = { 0, -1, 0, -1, 0, 0 };
+  if (this->FileName)
+  {
+    OIIO::ImageBuf probe(this->FileName);
+    if (probe.init_spec(this->FileName, 0, 0))
+    {
+      extent[1] = probe.spec().width - 1;
+      extent[3] = probe.spec().height - 1;
+    }
+  }
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+  return 1;
+}
+
+int slImageReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkImageData* output = vtkImageData::GetData(outputVector);
+  output->Initialize();
+  this->ErrorMessage.clear();
+  const std::string name = this->FileName ? this->FileName : "";
+  if (name.empty())
+  {
+    this->ErrorMessage = "(no file name): no image file given";
+    vtkErrorMacro(<< this->ErrorMessage);
+    return 0;
+  }
+
+  OIIO::ImageBuf image(name);
+  const bool is8Bit = image.init_spec(name, 0, 0) && image.spec().format == OIIO::TypeDesc::UINT8;
+  const OIIO::TypeDesc type = is8Bit && !this->OutputFloat ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT;
+  if (!image.read(0, 0, /*force*/ true, type))
+  {
+    std::string reason = image.geterror();
+    for (char& c : reason)
+    {
+      c = c == '\n' ? ' ' : c;
+    }
+    this->ErrorMessage = name + ": cannot read image: " + (reason.empty() ? "unknown format" : reason);
+    vtkErrorMacro(<< this->ErrorMessage);
+    return 0;
+  }
+  // OpenImageIO's row 0 is the top of the picture; VTK's is the bottom.
+  OIIO::ImageBuf flipped = OIIO::ImageBufAlgo::flip(image);
+
+  const OIIO::ImageSpec& spec = flipped.spec();
+  const int channels = spec.nchannels;
+  const vtkIdType pixels = static_cast<vtkIdType>(spec.width) * spec.height;
+  vtkSmartPointer<vtkDataArray> scalars;
+  if (type == OIIO::TypeDesc::UINT8)
+  {
+    scalars = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  }
+  else
+  {
+    scalars = vtkSmartPointer<vtkFloatArray>::New();
+  }
+  scalars->SetName("ImageScalars");
+  scalars->SetNumberOfComponents(channels);
+  scalars->SetNumberOfTuples(pixels);
+  flipped.get_pixels(OIIO::ROI::All(), type, scalars->GetVoidPointer(0));
+
+  output->SetExtent(0, spec.width - 1, 0, spec.height - 1, 0, 0);
+  output->GetPointData()->SetScalars(scalars);
+  return 1;
+}
+
+void slImageReader::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "OutputFloat: " << this->OutputFloat << "\n";
+}

@@ -1,0 +1,114 @@
+#include "slImageWriter.h"
+
+#include "shadelab/AtomicFile.h"
+
+#include <vtkDataArray.h>
+#include <vtkImageData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <stdexcept>
+
+vtkStandardNewMacro(slImageWriter);
+
+slImageWriter::slImageWriter()
+{
+  this->SetNumberOfOutputPorts(0);
+}
+
+slImageWriter::~slImageWriter()
+{
+  this->SetFileName(nullptr);
+}
+
+int slImageWriter::FillOutputPortInformation(int, vtkInformation*)
+{
+  return 1;
+}
+
+bool slImageWriter::Write()
+{
+  this->ErrorMessage.clear();
+  this->Modified();
+  this->Update();
+  return this->ErrorMessage.empty();
+}
+
+int slImageWriter::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  vtkImageData* image = vtkImageData::GetData(inputVector[0]);
+  return this->WriteImage(image) ? 1 : 0;
+}
+
+bool slImageWriter::WriteImage(vtkImageData* image)
+{
+  const std::string name = this->FileName ? this->FileName : "";
+  auto fail = [&](const std::string& problem) {
+    this->ErrorMessage = (name.empty() ? std::string("(no file name)") : name) + ": " + problem;
+    vtkErrorMacro(<< this->ErrorMessage);
+    return false;
+  };
+  if (name.empty())
+  {
+    return fail("no output file given");
+  }
+  vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
+  int dims[3] = { 0, 0, 0 };
+  if (image)
+  {
+    image->GetDimensions(dims);
+  }
+  if (!scalars || dims[0] < 1 || dims[1] < 1 || dims[2] != 1)
+  {
+    return fail("nothing to write (the input is not a non-empty 2D image with scalars)");
+  }
+  OIIO::TypeDesc type;
+  switch (scalars->GetDataType())
+  {
+    case VTK_UNSIGNED_CHAR:
+      type = OIIO::TypeDesc::UINT8;
+      break;
+    case VTK_FLOAT:
+      type = OIIO::TypeDesc::FLOAT;
+      break;
+    default:
+      return fail(std::string("unsupported scalar type ") + scalars->GetDataTypeAsString() +
+        " (use unsigned char or float)");
+  }
+  const OIIO::ImageSpec spec(dims[0], dims[1], scalars->GetNumberOfComponents(), type);
+  // Wrap VTK's buffer (bottom row first) and flip to OpenImageIO's top-first.
+  OIIO::ImageBuf wrapped(spec, scalars->GetVoidPointer(0));
+  OIIO::ImageBuf flipped = OIIO::ImageBufAlgo::flip(wrapped);
+  try
+  {
+    shadelab::AtomicOutput output(name);
+    if (!flipped.write(output.temporaryPath()))
+    {
+      std::string reason = flipped.geterror();
+      for (char& c : reason)
+      {
+        c = c == '\n' ? ' ' : c;
+      }
+      return fail("cannot write image: " + reason);
+    }
+    output.commit();
+  }
+  catch (const std::runtime_error& e)
+  {
+    this->ErrorMessage = e.what();
+    vtkErrorMacro(<< this->ErrorMessage);
+    return false;
+  }
+  return true;
+}
+
+void slImageWriter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+}

@@ -1,0 +1,62 @@
+#ifndef slImageWriter_h
+#define slImageWriter_h
+/**
+ * @class   slImageWriter
+ * @brief   Writes a 2D vtkImageData through OpenImageIO, all or nothing.
+ *
+ * The format follows the file name's extension (.png, .exr, .hdr, .tif, .jpg,
+ * ...). Unsigned char scalars are written as 8-bit, float scalars as float
+ * where the format allows it (EXR, HDR, TIFF) and quantised otherwise.
+ * Row 0 of the vtkImageData is the bottom of the picture.
+ *
+ * The image goes to a temporary file beside the target which is renamed over
+ * it only once complete: a failure never leaves a partial file nor destroys
+ * an existing one.
+ *
+ * @sa slImageReader vtkWindowToImageFilter
+ */
+
+#include "ShadeLabIOModule.h"
+
+#include <vtkImageAlgorithm.h>
+
+#include <string>
+
+class SHADELABIO_EXPORT slImageWriter : public vtkImageAlgorithm
+{
+public:
+  static slImageWriter* New();
+  vtkTypeMacro(slImageWriter, vtkImageAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// The file to write.
+  vtkSetStringMacro(FileName);
+  vtkGetStringMacro(FileName);
+  ///@}
+
+  /// Updates the input and writes it. Returns true on success; otherwise
+  /// GetErrorMessage() says why.
+  bool Write();
+
+  /// The reason the last Write() failed, or "".
+  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
+
+protected:
+  slImageWriter();
+  ~slImageWriter() override;
+
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+private:
+  slImageWriter(const slImageWriter&) = delete;
+  void operator=(const slImageWriter&) = delete;
+
+  bool WriteImage(vtkImageData* image);
+
+  char* FileName = nullptr;
+  std::string ErrorMessage;
+};
+
+#endif

@@ -1,0 +1,187 @@
+#include "slMeshReader.h"
+
+#include "slErrorCapture.h"
+#include "slFileExtension.h"
+#include "slOFFParser.h"
+#include "slPointWelding.h"
+
+#include <vtkAlgorithm.h>
+#include <vtkCellArray.h>
+#include <vtkDataArray.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkNew.h>
+#include <vtkOBJReader.h>
+#include <vtkObjectFactory.h>
+#include <vtkPLYReader.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataReader.h>
+#include <vtkSTLReader.h>
+#include <vtkSmartPointer.h>
+#include <vtkXMLPolyDataReader.h>
+
+#include <cmath>
+#include <fstream>
+
+vtkStandardNewMacro(slMeshReader);
+
+namespace
+{
+/// The VTK reader for an extension, or null for OFF and unknown extensions.
+vtkSmartPointer<vtkAlgorithm> makeVTKReader(const std::string& ext, const char* fileName)
+{
+  if (ext == ".obj")
+  {
+    auto r = vtkSmartPointer<vtkOBJReader>::New();
+    r->SetFileName(fileName);
+    return r;
+  }
+  if (ext == ".ply")
+  {
+    auto r = vtkSmartPointer<vtkPLYReader>::New();
+    r->SetFileName(fileName);
+    return r;
+  }
+  if (ext == ".stl")
+  {
+    auto r = vtkSmartPointer<vtkSTLReader>::New();
+    r->SetFileName(fileName);
+    return r;
+  }
+  if (ext == ".vtp")
+  {
+    auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    r->SetFileName(fileName);
+    return r;
+  }
+  if (ext == ".vtk")
+  {
+    auto r = vtkSmartPointer<vtkPolyDataReader>::New();
+    r->SetFileName(fileName);
+    return r;
+  }
+  return nullptr;
+}
+
+/// Index of the first point with a NaN or infinite coordinate, or -1.
+vtkIdType firstNonFinitePoint(vtkPoints* points)
+{
+  const vtkIdType n = points ? points->GetNumberOfPoints() : 0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double p[3];
+    points->GetPoint(i, p);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    {
+      return i;
+    }
+  }
+  return -1;
+}
+} // namespace
+
+slMeshReader::slMeshReader()
+{
+  this->SetNumberOfInputPorts(0);
+}
+
+slMeshReader::~slMeshReader()
+{
+  this->SetFileName(nullptr);
+}
+
+const char* slMeshReader::GetSupportedExtensions()
+{
+  return ".obj .ply .stl .vtp .vtk .off";
+}
+
+bool slMeshReader::CanReadFile(const char* fileName)
+{
+  return slExtensionInList(slLowerExtension(fileName), GetSupportedExtensions());
+}
+
+bool slMeshReader::Fail(const std::string& problem)
+{
+  this->ErrorMessage = std::string(this->FileName ? this->FileName : "(no file name)") + ": " + problem;
+  vtkErrorMacro(<< this->ErrorMessage);
+  return false;
+}
+
+int slMeshReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  output->Initialize();
+  this->ErrorMessage.clear();
+
+  if (!this->FileName || !*this->FileName)
+  {
+    return this->Fail("no file name given");
+  }
+  const std::string ext = slLowerExtension(this->FileName);
+  if (!CanReadFile(this->FileName))
+  {
+    return this->Fail("unsupported mesh format \"" + ext + "\" (supported: " + GetSupportedExtensions() + ")");
+  }
+  std::ifstream probe(this->FileName, std::ios::binary);
+  if (!probe)
+  {
+    return this->Fail("cannot open file");
+  }
+
+  vtkNew<vtkPolyData> mesh;
+  if (ext == ".off")
+  {
+    const std::string problem = slParseOFF(probe, mesh);
+    if (!problem.empty())
+    {
+      return this->Fail(problem);
+    }
+  }
+  else
+  {
+    probe.close();
+    vtkSmartPointer<vtkAlgorithm> reader = makeVTKReader(ext, this->FileName);
+    vtkNew<slErrorCapture> errors;
+    errors->Watch(reader);
+    reader->Update();
+    if (errors->HasError())
+    {
+      return this->Fail(errors->GetLastError());
+    }
+    vtkPolyData* read = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+    if (!read)
+    {
+      return this->Fail("the file does not hold polygonal data (vtkPolyData)");
+    }
+    mesh->DeepCopy(read);
+    if (ext == ".obj" && this->MergeDuplicatePoints)
+    {
+      slMergeIdenticalPoints(mesh);
+    }
+  }
+
+  if (mesh->GetNumberOfPoints() == 0)
+  {
+    return this->Fail("no points: empty, truncated or not a " + ext.substr(1) + " file");
+  }
+  if (mesh->GetNumberOfPolys() == 0 && mesh->GetNumberOfStrips() == 0)
+  {
+    return this->Fail("no polygons among its " + std::to_string(mesh->GetNumberOfCells()) + " cells");
+  }
+  const vtkIdType bad = firstNonFinitePoint(mesh->GetPoints());
+  if (bad >= 0)
+  {
+    return this->Fail("point " + std::to_string(bad) + " has a NaN or infinite coordinate");
+  }
+  output->ShallowCopy(mesh);
+  return 1;
+}
+
+void slMeshReader::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "MergeDuplicatePoints: " << this->MergeDuplicatePoints << "\n";
+  os << indent << "ErrorMessage: " << this->ErrorMessage << "\n";
+}

@@ -1,0 +1,82 @@
+#ifndef slMeshReader_h
+#define slMeshReader_h
+/**
+ * @class   slMeshReader
+ * @brief   Reads a surface mesh from OBJ, PLY, STL, VTP, legacy VTK or OFF.
+ *
+ * slMeshReader picks the reader from the file name's extension (case
+ * insensitive): .obj (vtkOBJReader, keeps texture coordinates and normals),
+ * .ply (vtkPLYReader), .stl (vtkSTLReader), .vtp (vtkXMLPolyDataReader),
+ * .vtk (vtkPolyDataReader; the file must hold polydata) and .off (ShadeLab's
+ * own OFF parser, which keeps non-manifold faces and reports errors by line).
+ *
+ * vtkOBJReader emits one point per face corner. With MergeDuplicatePoints
+ * on (the default), points equal in position and in every point-data value
+ * (texture coordinates, normals) are merged again, so the mesh is connected
+ * while texture and normal seams stay seams.
+ *
+ * The output is checked before it is passed on: a file that cannot be opened
+ * or parsed, a mesh without polygons, or a point with a NaN or infinite
+ * coordinate gives an error through vtkErrorMacro and an empty output. The
+ * one-line reason, naming the file, is available from GetErrorMessage().
+ *
+ * @warning Only polygonal cells are required; vertices, lines and strips are
+ * passed through as the underlying reader returns them.
+ *
+ * @sa vtkOBJReader vtkPLYReader vtkSTLReader vtkXMLPolyDataReader
+ */
+
+#include "ShadeLabIOModule.h"
+
+#include <vtkPolyDataAlgorithm.h>
+
+#include <string>
+
+class SHADELABIO_EXPORT slMeshReader : public vtkPolyDataAlgorithm
+{
+public:
+  static slMeshReader* New();
+  vtkTypeMacro(slMeshReader, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// The file to read.
+  vtkSetStringMacro(FileName);
+  vtkGetStringMacro(FileName);
+  ///@}
+
+  ///@{
+  /// Merge the per-corner points of OBJ files that are identical in position
+  /// and all point data. On by default.
+  vtkSetMacro(MergeDuplicatePoints, bool);
+  vtkGetMacro(MergeDuplicatePoints, bool);
+  vtkBooleanMacro(MergeDuplicatePoints, bool);
+  ///@}
+
+  /// The reason the last read failed ("FILE: problem"), or "" after success.
+  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
+
+  /// True if the extension of @p fileName is one slMeshReader reads.
+  static bool CanReadFile(const char* fileName);
+
+  /// The extensions read, e.g. ".obj .ply .stl .vtp .vtk .off".
+  static const char* GetSupportedExtensions();
+
+protected:
+  slMeshReader();
+  ~slMeshReader() override;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+private:
+  slMeshReader(const slMeshReader&) = delete;
+  void operator=(const slMeshReader&) = delete;
+
+  bool Fail(const std::string& problem);
+
+  char* FileName = nullptr;
+  bool MergeDuplicatePoints = true;
+  std::string ErrorMessage;
+};
+
+#endif

@@ -1,0 +1,70 @@
+#ifndef slMeshWriter_h
+#define slMeshWriter_h
+/**
+ * @class   slMeshWriter
+ * @brief   Writes a surface mesh to VTP, PLY, OBJ, STL or legacy VTK, all or
+ *          nothing.
+ *
+ * The format follows the file name's extension (case insensitive):
+ * .vtp (vtkXMLPolyDataWriter, binary, keeps every array), .vtk
+ * (vtkPolyDataWriter, binary, keeps every array), .ply (vtkPLYWriter,
+ * binary; keeps point normals, texture coordinates and RGB colours only),
+ * .obj (vtkOBJWriter; keeps point normals and texture coordinates only),
+ * .stl (vtkSTLWriter, binary; geometry only).
+ *
+ * The mesh goes to a temporary file beside the target, renamed over it only
+ * once complete: a failure never leaves a partial file nor destroys an
+ * existing one. GetErrorMessage() gives a one-line reason naming the file.
+ *
+ * @sa slMeshReader
+ */
+
+#include "ShadeLabIOModule.h"
+
+#include <vtkPolyDataAlgorithm.h>
+
+#include <string>
+
+class SHADELABIO_EXPORT slMeshWriter : public vtkPolyDataAlgorithm
+{
+public:
+  static slMeshWriter* New();
+  vtkTypeMacro(slMeshWriter, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// The file to write.
+  vtkSetStringMacro(FileName);
+  vtkGetStringMacro(FileName);
+  ///@}
+
+  /// Updates the input and writes it. Returns true on success.
+  bool Write();
+
+  /// The reason the last Write() failed, or "".
+  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
+
+  /// True if slMeshWriter writes files with the extension of @p fileName.
+  static bool CanWriteFile(const char* fileName);
+
+  /// ".vtp .vtk .ply .obj .stl"
+  static const char* GetSupportedExtensions();
+
+protected:
+  slMeshWriter();
+  ~slMeshWriter() override;
+
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+private:
+  slMeshWriter(const slMeshWriter&) = delete;
+  void operator=(const slMeshWriter&) = delete;
+
+  bool WriteMesh(vtkPolyData* mesh);
+
+  char* FileName = nullptr;
+  std::string ErrorMessage;
+};
+
+#endif

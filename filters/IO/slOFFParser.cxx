@@ -1,0 +1,140 @@
+#include "slOFFParser.h"
+
+#include <vtkCellArray.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+
+#include <cstdlib>
+#include <sstream>
+#include <vector>
+
+namespace
+{
+/// Reads the next line that has content, with '#' comments removed.
+bool nextLine(std::istream& in, std::string& line, long& lineNumber)
+{
+  while (std::getline(in, line))
+  {
+    ++lineNumber;
+    const size_t hash = line.find('#');
+    if (hash != std::string::npos)
+    {
+      line.erase(hash);
+    }
+    if (line.find_first_not_of(" \t\r") != std::string::npos)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+/// Reads one number token; accepts "nan" and "inf" so that they can be
+/// reported as non-finite coordinates rather than as syntax errors.
+bool readNumber(std::istream& in, double& value)
+{
+  std::string token;
+  if (!(in >> token))
+  {
+    return false;
+  }
+  char* end = nullptr;
+  value = std::strtod(token.c_str(), &end);
+  return end != token.c_str() && *end == '\0';
+}
+
+std::string at(long lineNumber, const std::string& problem)
+{
+  return "line " + std::to_string(lineNumber) + ": " + problem;
+}
+} // namespace
+
+std::string slParseOFF(std::istream& in, vtkPolyData* output)
+{
+  std::string line;
+  long lineNumber = 0;
+  if (!nextLine(in, line, lineNumber))
+  {
+    return "line 1: empty file, expected the OFF header";
+  }
+  std::istringstream header(line);
+  std::string keyword;
+  header >> keyword;
+  long numPoints = -1, numFaces = -1, numEdges = 0;
+  if (keyword == "OFF")
+  {
+    // The counts may follow on the same line or on the next one.
+    if (!(header >> numPoints >> numFaces))
+    {
+      if (!nextLine(in, line, lineNumber))
+      {
+        return at(lineNumber, "missing vertex and face counts");
+      }
+      header = std::istringstream(line);
+      header >> numPoints >> numFaces >> numEdges;
+    }
+  }
+  else
+  {
+    return at(lineNumber, "expected \"OFF\", found \"" + keyword + "\"");
+  }
+  if (numPoints < 0 || numFaces < 0)
+  {
+    return at(lineNumber, "bad vertex/face counts");
+  }
+
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToFloat();
+  points->SetNumberOfPoints(numPoints);
+  for (long i = 0; i < numPoints; ++i)
+  {
+    if (!nextLine(in, line, lineNumber))
+    {
+      return at(lineNumber, "file ends after " + std::to_string(i) + " of " + std::to_string(numPoints) +
+          " vertices");
+    }
+    std::istringstream values(line);
+    double x, y, z;
+    if (!readNumber(values, x) || !readNumber(values, y) || !readNumber(values, z))
+    {
+      return at(lineNumber, "expected three vertex coordinates");
+    }
+    points->SetPoint(i, x, y, z);
+  }
+
+  vtkNew<vtkCellArray> polys;
+  std::vector<vtkIdType> ids;
+  for (long f = 0; f < numFaces; ++f)
+  {
+    if (!nextLine(in, line, lineNumber))
+    {
+      return at(lineNumber, "file ends after " + std::to_string(f) + " of " + std::to_string(numFaces) + " faces");
+    }
+    std::istringstream values(line);
+    long count = 0;
+    if (!(values >> count) || count < 3)
+    {
+      return at(lineNumber, "a face needs a vertex count of at least 3");
+    }
+    ids.resize(static_cast<size_t>(count));
+    for (long k = 0; k < count; ++k)
+    {
+      long id = -1;
+      if (!(values >> id))
+      {
+        return at(lineNumber, "face has fewer than " + std::to_string(count) + " vertex indices");
+      }
+      if (id < 0 || id >= numPoints)
+      {
+        return at(lineNumber, "vertex index " + std::to_string(id) + " is out of range [0, " +
+            std::to_string(numPoints) + ")");
+      }
+      ids[static_cast<size_t>(k)] = id;
+    }
+    polys->InsertNextCell(count, ids.data());
+  }
+  output->SetPoints(points);
+  output->SetPolys(polys);
+  return std::string();
+}

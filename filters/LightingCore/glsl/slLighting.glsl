@@ -1,0 +1,259 @@
+// slLighting.glsl -- the ShadeLab lighting equation, written exactly once.
+//
+// This file is the single source of truth for every lighting formula in
+// ShadeLab. It is compiled two ways and must stay valid for both:
+//   * as C++17 through GLM, by shadelab/LightingGLSL.h (CPU filters, tests);
+//   * as GLSL 1.50 (the desktop profile VTK 9.1 uses), embedded verbatim into
+//     the render pass shaders through shadelab/LightingShaderSource.h.
+//
+// The subset both languages accept, and therefore the rules for editing here:
+//   * float literals carry an f suffix (1.0f): GLSL >= 1.30 accepts it and it
+//     keeps GLM overloads unambiguous in C++;
+//   * every function is prefixed SL_FUNC (inline in C++, empty in GLSL);
+//   * structs are filled member by member (no GLSL constructors, no C++
+//     brace initialisers), parameters are passed by value, no out/inout;
+//   * only built-ins that GLM also provides: dot, normalize, length, max,
+//     min, clamp, pow, exp2, smoothstep;
+//   * integer constants are `const int`, never preprocessor macros.
+//
+// Conventions: all vectors are in one space (world space on the CPU, view
+// space in the shaders). N is the surface normal, L points from the surface
+// toward the light, V from the surface toward the eye. Colours are linear RGB.
+
+const int SL_LIGHT_DIRECTIONAL = 0;
+const int SL_LIGHT_POINT = 1;
+const int SL_LIGHT_SPOT = 2;
+const int SL_LIGHT_AMBIENT = 3;
+
+const int SL_MODEL_LAMBERT = 0;
+const int SL_MODEL_PHONG = 1;
+const int SL_MODEL_BLINN_PHONG = 2;
+const int SL_MODEL_LAMBERT_NORMALIZED = 3;
+const int SL_MODEL_PHONG_NORMALIZED = 4;
+const int SL_MODEL_BLINN_PHONG_NORMALIZED = 5;
+
+const float SL_PI = 3.14159265358979f;
+// Below this length a vector has no direction; see slSafeNormalize.
+const float SL_TINY_LENGTH = 1e-20f;
+
+// One light, ready for evaluation (angles already turned into cosines).
+struct slLight
+{
+  int type;          // SL_LIGHT_*
+  vec3 position;     // point and spot lights
+  vec3 direction;    // unit vector the light travels along (directional, spot)
+  vec3 ambient;      // per-light ambient colour (OpenGL style)
+  vec3 diffuse;      // per-light diffuse colour
+  vec3 specular;     // per-light specular colour
+  float intensity;   // scales all three colours
+  vec3 attenuation;  // c1, c2, c3 of min(1, 1 / (c1 + c2 d + c3 d^2))
+  float cosCutoff;   // spot: cosine of the cutoff half-angle
+  float cosInner;    // spot: cosine where the smooth edge ends (== cosCutoff: hard edge)
+  float exponent;    // spot: cos^exponent falloff inside the cone
+};
+
+// Material coefficients k_a, k_d, k_s, k_e and the shininess n.
+struct slMaterial
+{
+  vec3 ambient;
+  vec3 diffuse;
+  vec3 specular;
+  vec3 emission;
+  float shininess;
+};
+
+// The four terms of the lighting equation; the total is their sum.
+struct slTerms
+{
+  vec3 ambient;
+  vec3 diffuse;
+  vec3 specular;
+  vec3 emission;
+};
+
+// normalize() that returns the zero vector instead of NaN for zero-length or
+// non-finite input, so degenerate geometry shades as "no direction".
+SL_FUNC vec3 slSafeNormalize(vec3 v)
+{
+  float len = length(v);
+  if (len > SL_TINY_LENGTH && len < 3.0e38f)
+  {
+    return v / len;
+  }
+  return vec3(0.0f);
+}
+
+// x^e for x clamped to >= 0, defined everywhere: GLSL leaves pow(0, e)
+// undefined for e <= 0, so 0^0 is taken as 1 (the limit from inside the lobe).
+SL_FUNC float slPow(float x, float e)
+{
+  if (x > 0.0f)
+  {
+    return pow(x, e);
+  }
+  return e > 0.0f ? 0.0f : 1.0f;
+}
+
+SL_FUNC bool slIsNormalizedModel(int model)
+{
+  return model >= SL_MODEL_LAMBERT_NORMALIZED;
+}
+
+// Distance attenuation f_att = min(1, 1 / (c1 + c2 d + c3 d^2)). A sum that is
+// not positive (all constants zero) means "no attenuation".
+SL_FUNC float slAttenuation(vec3 c, float d)
+{
+  float denominator = c.x + c.y * d + c.z * d * d;
+  return denominator > 1.0f ? 1.0f / denominator : 1.0f;
+}
+
+// Spot cone factor for a unit vector L toward the light: 0 outside the cutoff,
+// cos^exponent inside, times a smoothstep across the edge band when
+// cosInner > cosCutoff. Non-spot lights return 1.
+SL_FUNC float slSpotFactor(slLight light, vec3 L)
+{
+  if (light.type != SL_LIGHT_SPOT)
+  {
+    return 1.0f;
+  }
+  float cosAngle = dot(-L, light.direction);
+  if (cosAngle < light.cosCutoff)
+  {
+    return 0.0f;
+  }
+  float edge = 1.0f;
+  if (light.cosInner > light.cosCutoff)
+  {
+    edge = smoothstep(light.cosCutoff, light.cosInner, cosAngle);
+  }
+  return edge * slPow(cosAngle, light.exponent);
+}
+
+// Unit vector from the surface point P toward the light (zero for ambient
+// lights and for a light sitting exactly at P).
+SL_FUNC vec3 slDirectionToLight(slLight light, vec3 P)
+{
+  if (light.type == SL_LIGHT_DIRECTIONAL)
+  {
+    return slSafeNormalize(-light.direction);
+  }
+  if (light.type == SL_LIGHT_AMBIENT)
+  {
+    return vec3(0.0f);
+  }
+  return slSafeNormalize(light.position - P);
+}
+
+// Attenuation times spot factor: how much of the light reaches P.
+SL_FUNC float slLightReach(slLight light, vec3 P, vec3 L)
+{
+  if (light.type == SL_LIGHT_DIRECTIONAL || light.type == SL_LIGHT_AMBIENT)
+  {
+    return 1.0f;
+  }
+  return slAttenuation(light.attenuation, length(light.position - P)) * slSpotFactor(light, L);
+}
+
+// Exact Blinn-Phong normalisation (Giesen 2009): makes the directional albedo
+// of the cosine-weighted lobe exactly 1 at normal incidence, which is its
+// maximum over all incidence angles. The popular (n+8)/(8 pi) approximation
+// exceeds 1 by up to 7.5%, so it is not used.
+SL_FUNC float slBlinnPhongNormalization(float n)
+{
+  return (n + 2.0f) * (n + 4.0f) / (8.0f * SL_PI * (exp2(-0.5f * n) + n));
+}
+
+// The diffuse reflection factor for unit N and L: max(0, N.L) for the lecture
+// Lambert term, and (1/pi) max(0, N.L) for the energy-normalised BRDF rho/pi
+// (f_r times cos theta_i). Multiply by light colour and k_d.
+SL_FUNC float slDiffuseFactor(int model, vec3 N, vec3 L)
+{
+  float cosTheta = max(dot(N, L), 0.0f);
+  return slIsNormalizedModel(model) ? cosTheta / SL_PI : cosTheta;
+}
+
+// The specular reflection factor for unit N, L, V and shininess n; multiply
+// by light colour and k_s. Zero where N.L <= 0 (the light is behind the
+// surface) and for the Lambert models.
+//   Phong:        max(0, R.V)^n,                R = 2 (N.L) N - L
+//   Blinn-Phong:  max(0, N.H)^n,                H = (L + V) / |L + V|
+//   normalised:   f_r cos theta_i with f_r = (n+2)/(2 pi) max(0,R.V)^n (Phong)
+//                 or slBlinnPhongNormalization(n) max(0,N.H)^n (Blinn-Phong).
+SL_FUNC float slSpecularFactor(int model, vec3 N, vec3 L, vec3 V, float n)
+{
+  float cosTheta = dot(N, L);
+  if (cosTheta <= 0.0f || model == SL_MODEL_LAMBERT || model == SL_MODEL_LAMBERT_NORMALIZED)
+  {
+    return 0.0f;
+  }
+  if (model == SL_MODEL_PHONG || model == SL_MODEL_PHONG_NORMALIZED)
+  {
+    vec3 R = 2.0f * cosTheta * N - L;
+    float lobe = slPow(max(dot(R, V), 0.0f), n);
+    if (model == SL_MODEL_PHONG)
+    {
+      return lobe;
+    }
+    return lobe * (n + 2.0f) / (2.0f * SL_PI) * cosTheta;
+  }
+  vec3 H = slSafeNormalize(L + V);
+  float lobe = slPow(max(dot(N, H), 0.0f), n);
+  if (model == SL_MODEL_BLINN_PHONG)
+  {
+    return lobe;
+  }
+  return lobe * slBlinnPhongNormalization(n) * cosTheta;
+}
+
+SL_FUNC slTerms slZeroTerms()
+{
+  slTerms t;
+  t.ambient = vec3(0.0f);
+  t.diffuse = vec3(0.0f);
+  t.specular = vec3(0.0f);
+  t.emission = vec3(0.0f);
+  return t;
+}
+
+// What one light contributes at surface point P with normal N, seen from the
+// eye at E: ambient, diffuse and specular; emission stays zero (it belongs to
+// the material, see slAddEmission). N need not be unit length.
+SL_FUNC slTerms slShadeLight(slLight light, slMaterial m, int model, vec3 P, vec3 N, vec3 E)
+{
+  slTerms t = slZeroTerms();
+  if (light.type == SL_LIGHT_AMBIENT)
+  {
+    t.ambient = light.intensity * light.ambient * m.ambient;
+    return t;
+  }
+  vec3 n = slSafeNormalize(N);
+  vec3 v = slSafeNormalize(E - P);
+  vec3 L = slDirectionToLight(light, P);
+  float reach = light.intensity * slLightReach(light, P, L);
+  t.ambient = reach * light.ambient * m.ambient;
+  t.diffuse = reach * slDiffuseFactor(model, n, L) * light.diffuse * m.diffuse;
+  t.specular = reach * slSpecularFactor(model, n, L, v, m.shininess) * light.specular * m.specular;
+  return t;
+}
+
+SL_FUNC slTerms slAddTerms(slTerms a, slTerms b)
+{
+  slTerms t;
+  t.ambient = a.ambient + b.ambient;
+  t.diffuse = a.diffuse + b.diffuse;
+  t.specular = a.specular + b.specular;
+  t.emission = a.emission + b.emission;
+  return t;
+}
+
+// Emission is added once per point and lights nothing else.
+SL_FUNC slTerms slAddEmission(slTerms t, slMaterial m)
+{
+  t.emission = t.emission + m.emission;
+  return t;
+}
+
+SL_FUNC vec3 slTotal(slTerms t)
+{
+  return t.ambient + t.diffuse + t.specular + t.emission;
+}

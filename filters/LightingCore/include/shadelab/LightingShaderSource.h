@@ -1,0 +1,21 @@
+#ifndef shadelab_LightingShaderSource_h
+#define shadelab_LightingShaderSource_h
+/**
+ * @file LightingShaderSource.h
+ * @brief The text of glsl/slLighting.glsl, embedded at build time, ready to be
+ * spliced into a GLSL 1.50 shader.
+ *
+ * The build generates the definition from the .glsl file itself, so the GPU
+ * and the CPU (LightingGLSL.h) always compile the same characters.
+ */
+
+#include <string>
+
+namespace shadelab
+{
+/// The lighting functions as GLSL, prefixed with `#define SL_FUNC` so that the
+/// file's function markers vanish. Insert after the `#version` line.
+const std::string& lightingShaderSource();
+} // namespace shadelab
+
+#endif

@@ -1,0 +1,147 @@
+#ifndef shadelab_Scene_h
+#define shadelab_Scene_h
+/**
+ * @file Scene.h
+ * @brief The ShadeLab scene as a user writes it: lights, material, camera,
+ * lighting model, shading frequency, background and image size.
+ *
+ * Angles are in degrees and colours are linear RGB here, as in the JSON scene
+ * files (docs/scene-format.md). toEvaluationLight() and
+ * toEvaluationMaterial() turn them into the structs that the lighting
+ * equation (slLighting.glsl) evaluates.
+ */
+
+#include "shadelab/LightingGLSL.h"
+
+#include <glm/glm.hpp>
+
+#include <string>
+#include <vector>
+
+namespace shadelab
+{
+
+/// Values equal the SL_LIGHT_* constants of slLighting.glsl.
+enum class LightType
+{
+  Directional = glsl::SL_LIGHT_DIRECTIONAL,
+  Point = glsl::SL_LIGHT_POINT,
+  Spot = glsl::SL_LIGHT_SPOT,
+  Ambient = glsl::SL_LIGHT_AMBIENT
+};
+
+/// World lights are fixed in the scene. Camera lights use VTK's camera-light
+/// convention: coordinates relative to a camera at (0,0,1) looking at the
+/// origin with view up (0,1,0), in units of the camera's distance.
+enum class LightSpace
+{
+  World,
+  Camera
+};
+
+/// Values equal the SL_MODEL_* constants of slLighting.glsl.
+enum class ShadingModel
+{
+  Lambert = glsl::SL_MODEL_LAMBERT,
+  Phong = glsl::SL_MODEL_PHONG,
+  BlinnPhong = glsl::SL_MODEL_BLINN_PHONG,
+  LambertNormalized = glsl::SL_MODEL_LAMBERT_NORMALIZED,
+  PhongNormalized = glsl::SL_MODEL_PHONG_NORMALIZED,
+  BlinnPhongNormalized = glsl::SL_MODEL_BLINN_PHONG_NORMALIZED
+};
+
+/// Where lighting is evaluated: per face, per vertex, or per pixel.
+enum class ShadingFrequency
+{
+  Flat,
+  Gouraud,
+  Phong
+};
+
+struct SceneLight
+{
+  std::string name;
+  LightType type = LightType::Directional;
+  LightSpace space = LightSpace::World;
+  glm::vec3 position{ 0.0f, 0.0f, 1.0f };
+  glm::vec3 direction{ 0.0f, 0.0f, -1.0f }; ///< where the light travels; not normalised
+  glm::vec3 ambient{ 0.0f };
+  glm::vec3 diffuse{ 1.0f };
+  glm::vec3 specular{ 1.0f };
+  float intensity = 1.0f;
+  glm::vec3 attenuation{ 1.0f, 0.0f, 0.0f }; ///< c1, c2, c3
+  float cutoffDegrees = 30.0f;               ///< spot half-angle, in (0, 90]
+  float exponent = 0.0f;                     ///< spot falloff exponent, >= 0
+  float edgeDegrees = 0.0f;                  ///< width of the smooth spot edge, in [0, cutoff]
+};
+
+struct SceneMaterial
+{
+  glm::vec3 ambient{ 0.1f };
+  glm::vec3 diffuse{ 0.8f };
+  glm::vec3 specular{ 0.5f };
+  glm::vec3 emission{ 0.0f };
+  float shininess = 32.0f;
+  std::string diffuseTexture; ///< image for k_d, resolved against the scene file's folder
+};
+
+struct SceneCamera
+{
+  bool hasPosition = false; ///< false: fit the mesh in view, then apply azimuth/elevation
+  glm::vec3 position{ 0.0f, 0.0f, 1.0f };
+  glm::vec3 focalPoint{ 0.0f };
+  glm::vec3 viewUp{ 0.0f, 1.0f, 0.0f };
+  float viewAngle = 30.0f; ///< vertical, degrees
+  float azimuth = 0.0f;    ///< degrees, applied after fitting
+  float elevation = 0.0f;  ///< degrees, applied after fitting
+};
+
+struct Scene
+{
+  std::string description;
+  std::vector<SceneLight> lights;
+  SceneMaterial material;
+  SceneCamera camera;
+  ShadingModel model = ShadingModel::BlinnPhong;
+  ShadingFrequency frequency = ShadingFrequency::Phong;
+  glm::vec3 background{ 0.1f, 0.1f, 0.12f };
+  int width = 800;
+  int height = 600;
+  std::string sourceFile; ///< where it was read from; empty when built in code
+};
+
+/// The spelling used in scene files ("blinn-phong-normalized", "gouraud", ...).
+const char* modelName(ShadingModel model);
+const char* frequencyName(ShadingFrequency frequency);
+const char* lightTypeName(LightType type);
+const char* lightSpaceName(LightSpace space);
+
+/// Every valid spelling, in enum order, for messages and the JSON schema.
+const std::vector<std::string>& modelNames();
+const std::vector<std::string>& frequencyNames();
+const std::vector<std::string>& lightTypeNames();
+const std::vector<std::string>& lightSpaceNames();
+
+/// Parse a spelling; returns false (leaving @p out alone) if it is not one.
+bool parseModelName(const std::string& name, ShadingModel& out);
+bool parseFrequencyName(const std::string& name, ShadingFrequency& out);
+bool parseLightTypeName(const std::string& name, LightType& out);
+bool parseLightSpaceName(const std::string& name, LightSpace& out);
+
+/// The light as the lighting equation wants it: unit direction, cosines of
+/// the spot angles. A camera-space light must first go through
+/// lightInWorldSpace().
+glsl::slLight toEvaluationLight(const SceneLight& light);
+
+/// The material coefficients as the lighting equation wants them.
+glsl::slMaterial toEvaluationMaterial(const SceneMaterial& material);
+
+/// A camera-space light moved into world space for a camera at @p eye looking
+/// at @p focalPoint with @p viewUp (VTK's camera-light transform). World lights
+/// are returned unchanged.
+SceneLight lightInWorldSpace(
+  const SceneLight& light, const glm::vec3& eye, const glm::vec3& focalPoint, const glm::vec3& viewUp);
+
+} // namespace shadelab
+
+#endif

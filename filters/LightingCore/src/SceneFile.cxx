@@ -1,0 +1,632 @@
+#include "shadelab/SceneFile.h"
+
+#include "shadelab/AtomicFile.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <vector>
+
+namespace shadelab
+{
+namespace
+{
+using json = nlohmann::json;
+
+std::string join(const std::vector<std::string>& items)
+{
+  std::string out;
+  for (size_t i = 0; i < items.size(); ++i)
+  {
+    out += (i ? ", " : "") + ('"' + items[i] + '"');
+  }
+  return out;
+}
+
+std::string childPath(const std::string& parent, const std::string& key)
+{
+  return parent.empty() ? key : parent + "." + key;
+}
+
+std::string formatNumber(double value)
+{
+  std::ostringstream s;
+  s << value;
+  return s.str();
+}
+
+/// Reads one JSON document into a Scene, failing on the first problem with a
+/// message that names the file and the key path.
+class SceneReader
+{
+public:
+  explicit SceneReader(std::string fileName)
+    : File(std::move(fileName))
+  {
+  }
+
+  Scene read(const json& root)
+  {
+    Scene scene;
+    scene.sourceFile = this->File;
+    this->expectObject(root, "", { "$schema", "description", "imageSize", "background", "shading",
+                                   "material", "camera", "lights" });
+    if (root.contains("description"))
+    {
+      scene.description = this->string(root["description"], "description");
+    }
+    if (root.contains("imageSize"))
+    {
+      this->imageSize(root["imageSize"], "imageSize", scene);
+    }
+    if (root.contains("background"))
+    {
+      scene.background = this->color(root["background"], "background");
+    }
+    if (root.contains("shading"))
+    {
+      this->shading(root["shading"], "shading", scene);
+    }
+    if (root.contains("material"))
+    {
+      scene.material = this->material(root["material"], "material");
+    }
+    if (root.contains("camera"))
+    {
+      scene.camera = this->camera(root["camera"], "camera");
+    }
+    if (root.contains("lights"))
+    {
+      const json& lights = root["lights"];
+      if (!lights.is_array())
+      {
+        this->fail("lights", "expected an array of lights, got " + typeName(lights));
+      }
+      for (size_t i = 0; i < lights.size(); ++i)
+      {
+        scene.lights.push_back(this->light(lights[i], "lights[" + std::to_string(i) + "]"));
+      }
+    }
+    return scene;
+  }
+
+  [[noreturn]] void fail(const std::string& path, const std::string& problem) const
+  {
+    throw SceneError(this->File + ": " + (path.empty() ? "(top level)" : path) + ": " + problem);
+  }
+
+private:
+  std::string File;
+
+  static std::string typeName(const json& value)
+  {
+    if (value.is_number())
+    {
+      return "a number";
+    }
+    if (value.is_string())
+    {
+      return "a string";
+    }
+    if (value.is_boolean())
+    {
+      return "a boolean";
+    }
+    if (value.is_null())
+    {
+      return "null";
+    }
+    return value.is_array() ? "an array" : "an object";
+  }
+
+  void expectObject(const json& value, const std::string& path, const std::set<std::string>& allowed) const
+  {
+    if (!value.is_object())
+    {
+      this->fail(path, "expected an object, got " + typeName(value));
+    }
+    for (const auto& item : value.items())
+    {
+      if (!allowed.count(item.key()))
+      {
+        this->fail(childPath(path, item.key()),
+          "unknown key (allowed here: " + join(std::vector<std::string>(allowed.begin(), allowed.end())) +
+            ")");
+      }
+    }
+  }
+
+  std::string string(const json& value, const std::string& path) const
+  {
+    if (!value.is_string())
+    {
+      this->fail(path, "expected a string, got " + typeName(value));
+    }
+    return value.get<std::string>();
+  }
+
+  /// A finite number in [lo, hi]; an open end is excluded when its flag is set.
+  double number(const json& value, const std::string& path, double lo, double hi, bool openLo = false,
+    bool openHi = false) const
+  {
+    if (!value.is_number())
+    {
+      this->fail(path, "expected a number, got " + typeName(value));
+    }
+    const double x = value.get<double>();
+    if (!std::isfinite(x))
+    {
+      this->fail(path, "expected a finite number");
+    }
+    if (x < lo || x > hi || (openLo && x == lo) || (openHi && x == hi))
+    {
+      this->fail(path,
+        formatNumber(x) + " is out of range " + (openLo ? "(" : "[") + formatNumber(lo) + ", " +
+          (std::isinf(hi) ? std::string("inf") : formatNumber(hi)) + (openHi || std::isinf(hi) ? ")" : "]"));
+    }
+    return x;
+  }
+
+  glm::vec3 triple(const json& value, const std::string& path, const char* what, double lo) const
+  {
+    if (!value.is_array() || value.size() != 3)
+    {
+      this->fail(path,
+        std::string("expected ") + what + " of 3 numbers, got " +
+          (value.is_array() ? std::to_string(value.size()) + " components" : typeName(value)));
+    }
+    glm::vec3 out;
+    for (int i = 0; i < 3; ++i)
+    {
+      out[i] = static_cast<float>(
+        this->number(value[i], path + "[" + std::to_string(i) + "]", lo, HUGE_VAL));
+    }
+    return out;
+  }
+
+  glm::vec3 color(const json& value, const std::string& path) const
+  {
+    return this->triple(value, path, "an RGB colour", 0.0);
+  }
+
+  glm::vec3 point(const json& value, const std::string& path) const
+  {
+    return this->triple(value, path, "a point", -HUGE_VAL);
+  }
+
+  glm::vec3 direction(const json& value, const std::string& path) const
+  {
+    const glm::vec3 d = this->triple(value, path, "a direction", -HUGE_VAL);
+    if (!(glm::length(d) > 0.0f))
+    {
+      this->fail(path, "a direction must not have zero length");
+    }
+    return d;
+  }
+
+  template <typename Enum>
+  Enum choice(const json& value, const std::string& path, const std::vector<std::string>& names,
+    bool (*parse)(const std::string&, Enum&)) const
+  {
+    Enum out{};
+    if (!parse(this->string(value, path), out))
+    {
+      this->fail(path, "\"" + value.get<std::string>() + "\" is not one of " + join(names));
+    }
+    return out;
+  }
+
+  void imageSize(const json& value, const std::string& path, Scene& scene) const
+  {
+    if (!value.is_array() || value.size() != 2)
+    {
+      this->fail(path, "expected [width, height]");
+    }
+    for (int i = 0; i < 2; ++i)
+    {
+      const std::string itemPath = path + "[" + std::to_string(i) + "]";
+      if (!value[i].is_number_integer())
+      {
+        this->fail(itemPath, "expected a whole number of pixels, got " + typeName(value[i]));
+      }
+      (i ? scene.height : scene.width) = static_cast<int>(this->number(value[i], itemPath, 16, 8192));
+    }
+  }
+
+  void shading(const json& value, const std::string& path, Scene& scene) const
+  {
+    this->expectObject(value, path, { "model", "frequency" });
+    if (value.contains("model"))
+    {
+      scene.model = this->choice(value["model"], childPath(path, "model"), modelNames(), &parseModelName);
+    }
+    if (value.contains("frequency"))
+    {
+      scene.frequency =
+        this->choice(value["frequency"], childPath(path, "frequency"), frequencyNames(), &parseFrequencyName);
+    }
+  }
+
+  SceneMaterial material(const json& value, const std::string& path) const
+  {
+    this->expectObject(
+      value, path, { "ambient", "diffuse", "specular", "emission", "shininess", "diffuseTexture" });
+    SceneMaterial m;
+    const std::pair<const char*, glm::vec3*> colors[] = { { "ambient", &m.ambient },
+      { "diffuse", &m.diffuse }, { "specular", &m.specular }, { "emission", &m.emission } };
+    for (const auto& c : colors)
+    {
+      if (value.contains(c.first))
+      {
+        *c.second = this->color(value[c.first], childPath(path, c.first));
+      }
+    }
+    if (value.contains("shininess"))
+    {
+      m.shininess = static_cast<float>(this->number(value["shininess"], childPath(path, "shininess"), 0, 1e5));
+    }
+    if (value.contains("diffuseTexture"))
+    {
+      m.diffuseTexture = this->string(value["diffuseTexture"], childPath(path, "diffuseTexture"));
+      if (m.diffuseTexture.empty())
+      {
+        this->fail(childPath(path, "diffuseTexture"), "must name an image file");
+      }
+    }
+    return m;
+  }
+
+  SceneCamera camera(const json& value, const std::string& path) const
+  {
+    this->expectObject(
+      value, path, { "position", "focalPoint", "viewUp", "viewAngle", "azimuth", "elevation" });
+    SceneCamera c;
+    if (value.contains("position") != value.contains("focalPoint"))
+    {
+      this->fail(path, "give both position and focalPoint, or neither (then the mesh is fitted in view)");
+    }
+    if (value.contains("position"))
+    {
+      c.hasPosition = true;
+      c.position = this->point(value["position"], childPath(path, "position"));
+      c.focalPoint = this->point(value["focalPoint"], childPath(path, "focalPoint"));
+      if (!(glm::length(c.position - c.focalPoint) > 0.0f))
+      {
+        this->fail(childPath(path, "focalPoint"), "must differ from position");
+      }
+    }
+    if (value.contains("viewUp"))
+    {
+      c.viewUp = this->direction(value["viewUp"], childPath(path, "viewUp"));
+    }
+    if (value.contains("viewAngle"))
+    {
+      c.viewAngle =
+        static_cast<float>(this->number(value["viewAngle"], childPath(path, "viewAngle"), 0, 180, true, true));
+    }
+    if (value.contains("azimuth"))
+    {
+      c.azimuth = static_cast<float>(this->number(value["azimuth"], childPath(path, "azimuth"), -360, 360));
+    }
+    if (value.contains("elevation"))
+    {
+      c.elevation =
+        static_cast<float>(this->number(value["elevation"], childPath(path, "elevation"), -90, 90, true, true));
+    }
+    return c;
+  }
+
+  SceneLight light(const json& value, const std::string& path) const
+  {
+    if (!value.is_object())
+    {
+      this->fail(path, "expected an object, got " + typeName(value));
+    }
+    if (!value.contains("type"))
+    {
+      this->fail(path, "missing key \"type\" (one of " + join(lightTypeNames()) + ")");
+    }
+    SceneLight l;
+    l.type = this->choice(value["type"], childPath(path, "type"), lightTypeNames(), &parseLightTypeName);
+    std::set<std::string> allowed{ "name", "type", "intensity", "ambient" };
+    if (l.type != LightType::Ambient)
+    {
+      allowed.insert({ "space", "diffuse", "specular" });
+    }
+    if (l.type == LightType::Directional || l.type == LightType::Spot)
+    {
+      allowed.insert("direction");
+    }
+    if (l.type == LightType::Point || l.type == LightType::Spot)
+    {
+      allowed.insert({ "position", "attenuation" });
+    }
+    if (l.type == LightType::Spot)
+    {
+      allowed.insert({ "cutoff", "exponent", "edge" });
+    }
+    this->expectObject(value, path, allowed);
+
+    if (l.type == LightType::Ambient)
+    {
+      // An ambient light is only its colour: default white, no diffuse/specular.
+      l.ambient = glm::vec3(1.0f);
+      l.diffuse = l.specular = glm::vec3(0.0f);
+    }
+    if (value.contains("name"))
+    {
+      l.name = this->string(value["name"], childPath(path, "name"));
+    }
+    if (value.contains("space"))
+    {
+      l.space = this->choice(value["space"], childPath(path, "space"), lightSpaceNames(), &parseLightSpaceName);
+    }
+    if (value.contains("intensity"))
+    {
+      l.intensity = static_cast<float>(this->number(value["intensity"], childPath(path, "intensity"), 0, HUGE_VAL));
+    }
+    const std::pair<const char*, glm::vec3*> colors[] = { { "ambient", &l.ambient }, { "diffuse", &l.diffuse },
+      { "specular", &l.specular } };
+    for (const auto& c : colors)
+    {
+      if (value.contains(c.first))
+      {
+        *c.second = this->color(value[c.first], childPath(path, c.first));
+      }
+    }
+    if (value.contains("position"))
+    {
+      l.position = this->point(value["position"], childPath(path, "position"));
+    }
+    if (value.contains("direction"))
+    {
+      l.direction = this->direction(value["direction"], childPath(path, "direction"));
+    }
+    if (value.contains("attenuation"))
+    {
+      const std::string p = childPath(path, "attenuation");
+      const json& a = value["attenuation"];
+      if (!a.is_array() || a.size() != 3)
+      {
+        this->fail(p, "expected [c1, c2, c3] for min(1, 1/(c1 + c2 d + c3 d^2))");
+      }
+      l.attenuation = this->triple(a, p, "[c1, c2, c3]", 0.0);
+    }
+    if (value.contains("cutoff"))
+    {
+      l.cutoffDegrees =
+        static_cast<float>(this->number(value["cutoff"], childPath(path, "cutoff"), 0, 90, true, false));
+    }
+    if (value.contains("exponent"))
+    {
+      l.exponent = static_cast<float>(this->number(value["exponent"], childPath(path, "exponent"), 0, 1e4));
+    }
+    if (value.contains("edge"))
+    {
+      l.edgeDegrees =
+        static_cast<float>(this->number(value["edge"], childPath(path, "edge"), 0, l.cutoffDegrees));
+    }
+    return l;
+  }
+};
+
+/// Rejects duplicate keys, which nlohmann::json would silently collapse.
+class DuplicateKeyCheck
+{
+public:
+  explicit DuplicateKeyCheck(const SceneReader& reader)
+    : Reader(reader)
+  {
+  }
+
+  bool operator()(int depth, json::parse_event_t event, json& parsed)
+  {
+    switch (event)
+    {
+      case json::parse_event_t::object_start:
+      case json::parse_event_t::array_start:
+        this->Frames.push_back({ event == json::parse_event_t::array_start, {}, "", 0 });
+        break;
+      case json::parse_event_t::key:
+      {
+        Frame& top = this->Frames.back();
+        top.current = parsed.get<std::string>();
+        if (!top.keys.insert(top.current).second)
+        {
+          this->Reader.fail(this->path(), "duplicate key");
+        }
+        break;
+      }
+      case json::parse_event_t::object_end:
+      case json::parse_event_t::array_end:
+        this->Frames.pop_back();
+        this->elementDone();
+        break;
+      case json::parse_event_t::value:
+        this->elementDone();
+        break;
+    }
+    (void)depth;
+    return true;
+  }
+
+private:
+  struct Frame
+  {
+    bool isArray;
+    std::set<std::string> keys;
+    std::string current;
+    size_t index;
+  };
+  const SceneReader& Reader;
+  std::vector<Frame> Frames;
+
+  void elementDone()
+  {
+    if (!this->Frames.empty() && this->Frames.back().isArray)
+    {
+      ++this->Frames.back().index;
+    }
+  }
+
+  std::string path() const
+  {
+    std::string out;
+    for (const Frame& f : this->Frames)
+    {
+      out = f.isArray ? out + "[" + std::to_string(f.index) + "]" : childPath(out, f.current);
+    }
+    return out;
+  }
+};
+
+/// A float as the shortest double that reads back to it (0.1f -> 0.1, not
+/// 0.10000000149011612), so written files stay readable.
+double tidy(float value)
+{
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.9g", static_cast<double>(value));
+  for (int digits = 1; digits <= 9; ++digits)
+  {
+    char shorter[32];
+    std::snprintf(shorter, sizeof(shorter), "%.*g", digits, static_cast<double>(value));
+    if (std::strtof(shorter, nullptr) == value)
+    {
+      return std::strtod(shorter, nullptr);
+    }
+  }
+  return std::strtod(text, nullptr);
+}
+
+json vec(const glm::vec3& v)
+{
+  return json::array({ tidy(v.x), tidy(v.y), tidy(v.z) });
+}
+
+} // namespace
+
+Scene parseScene(const std::string& jsonText, const std::string& fileName)
+{
+  SceneReader reader(fileName);
+  json root;
+  try
+  {
+    root = json::parse(jsonText, DuplicateKeyCheck(reader));
+  }
+  catch (const json::parse_error& e)
+  {
+    // e.what() reads "[json.exception.parse_error.101] parse error at line L, column C: ...".
+    std::string what = e.what();
+    const size_t at = what.find("line ");
+    const size_t colon = what.find(": ", at == std::string::npos ? 0 : at);
+    std::string where = at == std::string::npos || colon == std::string::npos
+      ? "byte " + std::to_string(e.byte)
+      : what.substr(at, colon - at);
+    std::string problem = colon == std::string::npos ? what : what.substr(colon + 2);
+    throw SceneError(fileName + ": " + where + ": malformed JSON: " + problem);
+  }
+  return reader.read(root);
+}
+
+Scene readSceneFile(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+  {
+    throw SceneError(path + ": cannot open scene file");
+  }
+  std::stringstream text;
+  text << in.rdbuf();
+  if (in.bad())
+  {
+    throw SceneError(path + ": read error");
+  }
+  return parseScene(text.str(), path);
+}
+
+std::string sceneToJson(const Scene& scene)
+{
+  json root = json::object();
+  if (!scene.description.empty())
+  {
+    root["description"] = scene.description;
+  }
+  root["imageSize"] = json::array({ scene.width, scene.height });
+  root["background"] = vec(scene.background);
+  root["shading"] = { { "model", modelName(scene.model) }, { "frequency", frequencyName(scene.frequency) } };
+
+  const SceneMaterial& m = scene.material;
+  root["material"] = { { "ambient", vec(m.ambient) }, { "diffuse", vec(m.diffuse) },
+    { "specular", vec(m.specular) }, { "emission", vec(m.emission) }, { "shininess", tidy(m.shininess) } };
+  if (!m.diffuseTexture.empty())
+  {
+    root["material"]["diffuseTexture"] = m.diffuseTexture;
+  }
+
+  const SceneCamera& c = scene.camera;
+  json camera = { { "viewUp", vec(c.viewUp) }, { "viewAngle", tidy(c.viewAngle) } };
+  if (c.hasPosition)
+  {
+    camera["position"] = vec(c.position);
+    camera["focalPoint"] = vec(c.focalPoint);
+  }
+  else
+  {
+    camera["azimuth"] = tidy(c.azimuth);
+    camera["elevation"] = tidy(c.elevation);
+  }
+  root["camera"] = camera;
+
+  json lights = json::array();
+  for (const SceneLight& l : scene.lights)
+  {
+    json j = { { "type", lightTypeName(l.type) }, { "intensity", tidy(l.intensity) }, { "ambient", vec(l.ambient) } };
+    if (!l.name.empty())
+    {
+      j["name"] = l.name;
+    }
+    if (l.type != LightType::Ambient)
+    {
+      j["space"] = lightSpaceName(l.space);
+      j["diffuse"] = vec(l.diffuse);
+      j["specular"] = vec(l.specular);
+    }
+    if (l.type == LightType::Directional || l.type == LightType::Spot)
+    {
+      j["direction"] = vec(l.direction);
+    }
+    if (l.type == LightType::Point || l.type == LightType::Spot)
+    {
+      j["position"] = vec(l.position);
+      j["attenuation"] = vec(l.attenuation);
+    }
+    if (l.type == LightType::Spot)
+    {
+      j["cutoff"] = tidy(l.cutoffDegrees);
+      j["exponent"] = tidy(l.exponent);
+      j["edge"] = tidy(l.edgeDegrees);
+    }
+    lights.push_back(j);
+  }
+  root["lights"] = lights;
+  return root.dump(2) + "\n";
+}
+
+void writeSceneFile(const Scene& scene, const std::string& path)
+{
+  try
+  {
+    writeFileAtomically(path, sceneToJson(scene));
+  }
+  catch (const std::runtime_error& e)
+  {
+    throw SceneError(e.what());
+  }
+}
+
+} // namespace shadelab

@@ -1,0 +1,17 @@
+#include "shadelab/ShadePoint.h"
+
+namespace shadelab
+{
+
+glsl::slTerms shadePoint(const std::vector<glsl::slLight>& lights, const glsl::slMaterial& material,
+  int model, const glm::vec3& position, const glm::vec3& normal, const glm::vec3& eye)
+{
+  glsl::slTerms sum = glsl::slZeroTerms();
+  for (const glsl::slLight& light : lights)
+  {
+    sum = glsl::slAddTerms(sum, glsl::slShadeLight(light, material, model, position, normal, eye));
+  }
+  return glsl::slAddEmission(sum, material);
+}
+
+} // namespace shadelab

@@ -1,0 +1,149 @@
+#include "slScene.h"
+
+#include "shadelab/Scene.h"
+#include "shadelab/SceneFile.h"
+
+#include <vtkObjectFactory.h>
+
+vtkStandardNewMacro(slScene);
+
+slScene::slScene()
+  : Data(new shadelab::Scene)
+{
+}
+
+slScene::~slScene() = default;
+
+const shadelab::Scene& slScene::GetScene() const
+{
+  return *this->Data;
+}
+
+void slScene::SetScene(const shadelab::Scene& scene)
+{
+  *this->Data = scene;
+  this->Modified();
+}
+
+bool slScene::ReadFile(const char* path)
+{
+  try
+  {
+    this->SetScene(shadelab::readSceneFile(path ? path : ""));
+    this->ErrorMessage.clear();
+    return true;
+  }
+  catch (const shadelab::SceneError& e)
+  {
+    this->ErrorMessage = e.what();
+    return false;
+  }
+}
+
+bool slScene::ReadString(const char* jsonText, const char* nameForMessages)
+{
+  try
+  {
+    this->SetScene(shadelab::parseScene(jsonText ? jsonText : "", nameForMessages ? nameForMessages : "(string)"));
+    this->ErrorMessage.clear();
+    return true;
+  }
+  catch (const shadelab::SceneError& e)
+  {
+    this->ErrorMessage = e.what();
+    return false;
+  }
+}
+
+bool slScene::WriteFile(const char* path)
+{
+  try
+  {
+    shadelab::writeSceneFile(*this->Data, path ? path : "");
+    this->ErrorMessage.clear();
+    return true;
+  }
+  catch (const shadelab::SceneError& e)
+  {
+    this->ErrorMessage = e.what();
+    return false;
+  }
+}
+
+std::string slScene::ToJSON() const
+{
+  return shadelab::sceneToJson(*this->Data);
+}
+
+std::string slScene::GetModelName() const
+{
+  return shadelab::modelName(this->Data->model);
+}
+
+bool slScene::SetModelName(const char* name)
+{
+  if (!name || !shadelab::parseModelName(name, this->Data->model))
+  {
+    return false;
+  }
+  this->Modified();
+  return true;
+}
+
+std::string slScene::GetFrequencyName() const
+{
+  return shadelab::frequencyName(this->Data->frequency);
+}
+
+bool slScene::SetFrequencyName(const char* name)
+{
+  if (!name || !shadelab::parseFrequencyName(name, this->Data->frequency))
+  {
+    return false;
+  }
+  this->Modified();
+  return true;
+}
+
+int slScene::GetNumberOfLights() const
+{
+  return static_cast<int>(this->Data->lights.size());
+}
+
+int slScene::GetImageWidth() const
+{
+  return this->Data->width;
+}
+
+int slScene::GetImageHeight() const
+{
+  return this->Data->height;
+}
+
+std::string slScene::GetDiffuseTexturePath() const
+{
+  const std::string& texture = this->Data->material.diffuseTexture;
+  if (texture.empty() || texture.front() == '/')
+  {
+    return texture;
+  }
+  const std::string& source = this->Data->sourceFile;
+  const size_t slash = source.find_last_of('/');
+  return slash == std::string::npos ? texture : source.substr(0, slash + 1) + texture;
+}
+
+void slScene::Note(const std::string& item)
+{
+  this->ConversionNotes += item + "\n";
+}
+
+void slScene::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Source: " << (this->Data->sourceFile.empty() ? "(built in code)" : this->Data->sourceFile)
+     << "\n";
+  os << indent << "Model: " << this->GetModelName() << "\n";
+  os << indent << "Frequency: " << this->GetFrequencyName() << "\n";
+  os << indent << "Lights: " << this->GetNumberOfLights() << "\n";
+  os << indent << "ImageSize: " << this->Data->width << " x " << this->Data->height << "\n";
+}

@@ -1,0 +1,142 @@
+#ifndef slScene_h
+#define slScene_h
+/**
+ * @class   slScene
+ * @brief   A ShadeLab scene (lights, material, camera, lighting model, shading
+ *          frequency) read from JSON and converted to and from VTK objects.
+ *
+ * slScene reads and writes the JSON scene files described in
+ * docs/scene-format.md, with strict validation: every problem is reported as
+ * one line naming the file, the key path and the problem (GetErrorMessage()).
+ *
+ * It converts both ways between a scene and VTK's own objects, so a VTK
+ * user's lights, property and camera can drive ShadeLab and vice versa:
+ * ApplyToRenderer() / ApplyToActor() configure VTK's standard pipeline;
+ * SetLightsFromVTK(), SetMaterialFromVTK() and SetCameraFromVTK() read VTK
+ * objects back.
+ *
+ * Ambient lights: VTK has none, but it adds every property's ambient colour
+ * as if under one white ambient light. ApplyMaterial() therefore sets the
+ * property's ambient colour to k_a times the sum of the scene's ambient
+ * lights, and SetLightsFromVTK() adds that implicit white ambient light.
+ *
+ * @warning VTK 9.1's built-in lighting cannot show everything a scene holds.
+ * Each conversion lists what it could not carry in GetConversionNotes(): a
+ * light's own ambient colour (ignored by VTK's shaders), the min(1, .) clamp of attenuation, a spot's smooth edge, material
+ * emission, Blinn-Phong and the normalised models (VTK uses Phong's R.V), and
+ * true Gouraud shading (VTK lights every fragment). ShadeLab's render pass
+ * carries all of them.
+ *
+ * @sa vtkLight vtkProperty vtkCamera
+ */
+
+#include "ShadeLabSceneModule.h"
+
+#include <vtkObject.h>
+
+#include <memory>
+#include <string>
+
+class vtkActor;
+class vtkCamera;
+class vtkLight;
+class vtkLightCollection;
+class vtkProperty;
+class vtkRenderer;
+
+#ifndef __VTK_WRAP__
+namespace shadelab
+{
+struct Scene;
+}
+#endif
+
+class SHADELABSCENE_EXPORT slScene : public vtkObject
+{
+public:
+  static slScene* New();
+  vtkTypeMacro(slScene, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// Read / write a JSON scene file. On failure the scene is unchanged and
+  /// GetErrorMessage() gives the one-line reason. Writing is all or nothing.
+  bool ReadFile(const char* path);
+  bool WriteFile(const char* path);
+  ///@}
+
+  /// Parse JSON text; @p nameForMessages stands for the file in messages.
+  bool ReadString(const char* jsonText, const char* nameForMessages = "(string)");
+
+  /// The scene as JSON text.
+  std::string ToJSON() const;
+
+  /// The reason the last read or write failed, or "".
+  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
+
+  /// What the last conversion to or from VTK could not carry, one item per
+  /// line ("" when nothing was lost).
+  const char* GetConversionNotes() const { return this->ConversionNotes.c_str(); }
+
+  ///@{
+  /// Lighting model by its scene-file name ("lambert", "phong", "blinn-phong",
+  /// "lambert-normalized", "phong-normalized", "blinn-phong-normalized").
+  /// SetModelName() returns false for an unknown name.
+  std::string GetModelName() const;
+  bool SetModelName(const char* name);
+  ///@}
+
+  ///@{
+  /// Shading frequency by name ("flat", "gouraud", "phong").
+  std::string GetFrequencyName() const;
+  bool SetFrequencyName(const char* name);
+  ///@}
+
+  int GetNumberOfLights() const;
+  int GetImageWidth() const;
+  int GetImageHeight() const;
+
+  /// The diffuse texture resolved against the scene file's folder, or "".
+  std::string GetDiffuseTexturePath() const;
+
+  ///@{
+  /// Scene to VTK. ApplyToRenderer() sets the background, replaces the lights
+  /// and places the camera (fitting the visible props if the scene gives no
+  /// camera position, so call it after adding the actors). ApplyToActor() sets
+  /// the property, interpolation and diffuse texture.
+  void ApplyToRenderer(vtkRenderer* renderer);
+  bool ApplyToActor(vtkActor* actor);
+  void ApplyLights(vtkRenderer* renderer);
+  void ApplyMaterial(vtkProperty* property);
+  void ApplyCamera(vtkRenderer* renderer);
+  ///@}
+
+  ///@{
+  /// VTK to scene: replace the scene's lights, material or camera.
+  void SetLightsFromVTK(vtkLightCollection* lights);
+  void SetMaterialFromVTK(vtkProperty* property);
+  void SetCameraFromVTK(vtkCamera* camera);
+  ///@}
+
+#ifndef __VTK_WRAP__
+  /// The scene itself, for C++ users of the lighting core.
+  const shadelab::Scene& GetScene() const;
+  void SetScene(const shadelab::Scene& scene);
+#endif
+
+protected:
+  slScene();
+  ~slScene() override;
+
+private:
+  slScene(const slScene&) = delete;
+  void operator=(const slScene&) = delete;
+
+  void Note(const std::string& item);
+
+  std::unique_ptr<shadelab::Scene> Data;
+  std::string ErrorMessage;
+  std::string ConversionNotes;
+};
+
+#endif

@@ -1,0 +1,136 @@
+#include "slSceneRenderer.h"
+
+#include "slScene.h"
+
+#include <vtkActor.h>
+#include <vtkImageData.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkPolyDataNormals.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <vtkAutoInit.h>
+// The render window factory lives in RenderingOpenGL2; make sure it is registered.
+VTK_MODULE_INIT(vtkRenderingOpenGL2);
+
+#include "shadelab/Scene.h"
+
+#include <cstdlib>
+
+vtkStandardNewMacro(slSceneRenderer);
+
+slSceneRenderer::slSceneRenderer() = default;
+slSceneRenderer::~slSceneRenderer() = default;
+
+void slSceneRenderer::SetScene(slScene* scene)
+{
+  this->Scene = scene;
+  this->Modified();
+}
+slScene* slSceneRenderer::GetScene()
+{
+  return this->Scene;
+}
+void slSceneRenderer::SetMesh(vtkPolyData* mesh)
+{
+  this->Mesh = mesh;
+  this->Modified();
+}
+vtkPolyData* slSceneRenderer::GetMesh()
+{
+  return this->Mesh;
+}
+vtkImageData* slSceneRenderer::GetImage()
+{
+  return this->Image;
+}
+vtkRenderer* slSceneRenderer::GetRenderer()
+{
+  return this->Renderer;
+}
+vtkRenderWindow* slSceneRenderer::GetRenderWindow()
+{
+  return this->Window;
+}
+vtkActor* slSceneRenderer::GetActor()
+{
+  return this->Actor;
+}
+
+bool slSceneRenderer::HasDisplay()
+{
+  const char* display = std::getenv("DISPLAY");
+  return display && *display;
+}
+
+bool slSceneRenderer::Render()
+{
+  this->ErrorMessage.clear();
+  this->Image = nullptr;
+  if (!this->Scene || !this->Mesh)
+  {
+    this->ErrorMessage = "slSceneRenderer needs a scene and a mesh";
+    return false;
+  }
+  if (!HasDisplay())
+  {
+    this->ErrorMessage = "no X display (DISPLAY is unset): Debian's VTK renders through X11; run under xvfb-run";
+    return false;
+  }
+  const shadelab::Scene& scene = this->Scene->GetScene();
+
+  vtkSmartPointer<vtkPolyData> mesh = this->Mesh;
+  if (!mesh->GetPointData()->GetNormals() && scene.frequency != shadelab::ShadingFrequency::Flat)
+  {
+    vtkNew<vtkPolyDataNormals> normals;
+    normals->SetInputData(mesh);
+    normals->SplittingOff();
+    normals->ConsistencyOn();
+    normals->Update();
+    mesh = normals->GetOutput();
+  }
+
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(mesh);
+  mapper->ScalarVisibilityOff();
+  this->Actor = vtkSmartPointer<vtkActor>::New();
+  this->Actor->SetMapper(mapper);
+  if (!this->Scene->ApplyToActor(this->Actor))
+  {
+    this->ErrorMessage = this->Scene->GetErrorMessage();
+    return false;
+  }
+
+  this->Renderer = vtkSmartPointer<vtkRenderer>::New();
+  this->Renderer->AddActor(this->Actor);
+  this->Scene->ApplyToRenderer(this->Renderer);
+
+  this->Window = vtkSmartPointer<vtkRenderWindow>::New();
+  this->Window->SetOffScreenRendering(1);
+  this->Window->SetMultiSamples(0);
+  this->Window->SetSize(this->Width > 0 ? this->Width : scene.width, this->Height > 0 ? this->Height : scene.height);
+  this->Window->AddRenderer(this->Renderer);
+  this->Window->Render();
+
+  vtkNew<vtkWindowToImageFilter> capture;
+  capture->SetInput(this->Window);
+  capture->SetInputBufferTypeToRGB();
+  capture->ReadFrontBufferOff();
+  capture->Update();
+  this->Image = vtkSmartPointer<vtkImageData>::New();
+  this->Image->DeepCopy(capture->GetOutput());
+  return true;
+}
+
+void slSceneRenderer::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Width: " << this->Width << "\n";
+  os << indent << "Height: " << this->Height << "\n";
+  os << indent << "Scene: " << (this->Scene ? "set" : "(none)") << "\n";
+  os << indent << "Mesh: " << (this->Mesh ? "set" : "(none)") << "\n";
+}

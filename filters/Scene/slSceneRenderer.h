@@ -1,0 +1,96 @@
+#ifndef slSceneRenderer_h
+#define slSceneRenderer_h
+/**
+ * @class   slSceneRenderer
+ * @brief   Renders one mesh with an slScene offscreen and returns the image.
+ *
+ * slSceneRenderer builds VTK's standard pipeline (mapper, actor, renderer,
+ * offscreen render window) configured by an slScene, renders one frame at the
+ * scene's image size and captures it as an RGB vtkImageData. It is what
+ * `shadelab render` and the image regression tests use.
+ *
+ * Rendering is deterministic: fixed window size, multisampling off, and the
+ * camera fixed by the scene (or fitted to the mesh the same way each time).
+ * If the mesh has no point normals and the scene's frequency is not flat,
+ * smooth normals are computed (no feature splitting) so that Gouraud and
+ * Phong shading have normals to interpolate.
+ *
+ * @warning Debian's VTK renders through X11 only: an X server is needed
+ * (run under xvfb-run). Render() fails cleanly when DISPLAY is not set.
+ *
+ * @sa slScene vtkWindowToImageFilter
+ */
+
+#include "ShadeLabSceneModule.h"
+
+#include <vtkObject.h>
+#include <vtkSmartPointer.h>
+
+#include <string>
+
+class slScene;
+class vtkActor;
+class vtkImageData;
+class vtkPolyData;
+class vtkRenderWindow;
+class vtkRenderer;
+
+class SHADELABSCENE_EXPORT slSceneRenderer : public vtkObject
+{
+public:
+  static slSceneRenderer* New();
+  vtkTypeMacro(slSceneRenderer, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// The scene (required) and the mesh to render (required).
+  void SetScene(slScene* scene);
+  slScene* GetScene();
+  void SetMesh(vtkPolyData* mesh);
+  vtkPolyData* GetMesh();
+  ///@}
+
+  ///@{
+  /// Image size in pixels; 0 means "the scene's imageSize".
+  vtkSetClampMacro(Width, int, 0, 8192);
+  vtkGetMacro(Width, int);
+  vtkSetClampMacro(Height, int, 0, 8192);
+  vtkGetMacro(Height, int);
+  ///@}
+
+  /// Renders one frame. Returns false and sets GetErrorMessage() on failure.
+  bool Render();
+
+  /// The last rendered frame: RGB, unsigned char, row 0 at the bottom.
+  vtkImageData* GetImage();
+
+  /// The renderer and window of the last Render(), for further use.
+  vtkRenderer* GetRenderer();
+  vtkRenderWindow* GetRenderWindow();
+  vtkActor* GetActor();
+
+  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
+
+  /// True if an X display is available for rendering (DISPLAY is set).
+  static bool HasDisplay();
+
+protected:
+  slSceneRenderer();
+  ~slSceneRenderer() override;
+
+private:
+  slSceneRenderer(const slSceneRenderer&) = delete;
+  void operator=(const slSceneRenderer&) = delete;
+
+  vtkSmartPointer<slScene> Scene;
+  vtkSmartPointer<vtkPolyData> Mesh;
+  vtkSmartPointer<vtkRenderer> Renderer;
+  vtkSmartPointer<vtkRenderWindow> Window;
+  vtkSmartPointer<vtkActor> Actor;
+  vtkSmartPointer<vtkImageData> Image;
+  int Width = 0;
+  int Height = 0;
+  std::string ErrorMessage;
+};
+
+#endif

@@ -1,0 +1,330 @@
+// slScene's conversions to and from VTK's vtkLight, vtkProperty and vtkCamera.
+#include "slScene.h"
+
+#include "shadelab/Scene.h"
+#include "slImageReader.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkLight.h>
+#include <vtkLightCollection.h>
+#include <vtkNew.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkTexture.h>
+
+namespace
+{
+void toDouble(const glm::vec3& v, double out[3])
+{
+  out[0] = v.x;
+  out[1] = v.y;
+  out[2] = v.z;
+}
+
+glm::vec3 toVec3(const double v[3])
+{
+  return glm::vec3(static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]));
+}
+
+std::string lightPath(size_t index)
+{
+  return "lights[" + std::to_string(index) + "]";
+}
+} // namespace
+
+void slScene::ApplyLights(vtkRenderer* renderer)
+{
+  renderer->RemoveAllLights();
+  renderer->AutomaticLightCreationOff();
+  const std::vector<shadelab::SceneLight>& lights = this->Data->lights;
+  for (size_t i = 0; i < lights.size(); ++i)
+  {
+    const shadelab::SceneLight& l = lights[i];
+    if (l.type == shadelab::LightType::Ambient)
+    {
+      continue; // folded into the property's ambient colour, see ApplyMaterial()
+    }
+    vtkNew<vtkLight> light;
+    if (l.space == shadelab::LightSpace::Camera)
+    {
+      light->SetLightTypeToCameraLight();
+    }
+    else
+    {
+      light->SetLightTypeToSceneLight();
+    }
+    double c[3];
+    toDouble(l.ambient, c);
+    light->SetAmbientColor(c);
+    toDouble(l.diffuse, c);
+    light->SetDiffuseColor(c);
+    toDouble(l.specular, c);
+    light->SetSpecularColor(c);
+    light->SetIntensity(l.intensity);
+    if (l.ambient != glm::vec3(0.0f))
+    {
+      this->Note(lightPath(i) + ".ambient: VTK's shaders ignore a light's ambient colour");
+    }
+
+    if (l.type == shadelab::LightType::Directional)
+    {
+      // VTK: light arrives from Position toward FocalPoint.
+      light->SetPositional(false);
+      light->SetFocalPoint(0.0, 0.0, 0.0);
+      toDouble(-l.direction, c);
+      light->SetPosition(c);
+    }
+    else
+    {
+      light->SetPositional(true);
+      toDouble(l.position, c);
+      light->SetPosition(c);
+      toDouble(l.position + l.direction, c);
+      light->SetFocalPoint(c);
+      light->SetAttenuationValues(l.attenuation.x, l.attenuation.y, l.attenuation.z);
+      if (l.attenuation.x < 1.0f)
+      {
+        this->Note(lightPath(i) +
+          ".attenuation: VTK has no min(1, .) clamp, so it brightens where c1 + c2 d + c3 d^2 < 1");
+      }
+      if (l.type == shadelab::LightType::Spot)
+      {
+        light->SetConeAngle(l.cutoffDegrees);
+        light->SetExponent(l.exponent);
+        if (l.edgeDegrees > 0.0f)
+        {
+          this->Note(lightPath(i) + ".edge: VTK's spot cone has a hard edge");
+        }
+      }
+      else
+      {
+        light->SetConeAngle(180.0); // a cone of 90 degrees or more is no spot
+      }
+    }
+    renderer->AddLight(light);
+  }
+}
+
+void slScene::ApplyMaterial(vtkProperty* property)
+{
+  const shadelab::SceneMaterial& m = this->Data->material;
+  double c[3];
+  // VTK adds the property's ambient colour as if under one white ambient
+  // light; fold the scene's ambient lights into it: k_a * sum of their colours.
+  glm::vec3 ambientLight(0.0f);
+  for (const shadelab::SceneLight& l : this->Data->lights)
+  {
+    if (l.type == shadelab::LightType::Ambient)
+    {
+      ambientLight += l.intensity * l.ambient;
+    }
+  }
+  property->SetAmbient(1.0);
+  toDouble(m.ambient * ambientLight, c);
+  property->SetAmbientColor(c);
+  property->SetDiffuse(1.0);
+  toDouble(m.diffuse, c);
+  property->SetDiffuseColor(c);
+  const bool lambert = this->Data->model == shadelab::ShadingModel::Lambert ||
+    this->Data->model == shadelab::ShadingModel::LambertNormalized;
+  property->SetSpecular(lambert ? 0.0 : 1.0);
+  toDouble(m.specular, c);
+  property->SetSpecularColor(c);
+  property->SetSpecularPower(m.shininess);
+  if (m.emission != glm::vec3(0.0f))
+  {
+    this->Note("material.emission: VTK's built-in lighting has no emission term");
+  }
+  switch (this->Data->frequency)
+  {
+    case shadelab::ShadingFrequency::Flat:
+      property->SetInterpolationToFlat();
+      break;
+    case shadelab::ShadingFrequency::Gouraud:
+      property->SetInterpolationToGouraud();
+      this->Note("shading.frequency: VTK 9.1 lights Gouraud per fragment, like Phong");
+      break;
+    case shadelab::ShadingFrequency::Phong:
+      property->SetInterpolationToPhong();
+      break;
+  }
+  const shadelab::ShadingModel model = this->Data->model;
+  if (model != shadelab::ShadingModel::Lambert && model != shadelab::ShadingModel::Phong)
+  {
+    this->Note(std::string("shading.model: VTK's built-in lighting does not do \"") +
+      shadelab::modelName(model) + "\"; it shows " + (lambert ? "lambert" : "phong"));
+  }
+}
+
+void slScene::ApplyCamera(vtkRenderer* renderer)
+{
+  const shadelab::SceneCamera& c = this->Data->camera;
+  vtkCamera* camera = renderer->GetActiveCamera();
+  double v[3];
+  camera->SetViewAngle(c.viewAngle);
+  toDouble(c.viewUp, v);
+  camera->SetViewUp(v);
+  if (c.hasPosition)
+  {
+    toDouble(c.position, v);
+    camera->SetPosition(v);
+    toDouble(c.focalPoint, v);
+    camera->SetFocalPoint(v);
+  }
+  else
+  {
+    camera->SetPosition(0.0, 0.0, 1.0);
+    camera->SetFocalPoint(0.0, 0.0, 0.0);
+    renderer->ResetCamera();
+    camera->Azimuth(c.azimuth);
+    camera->Elevation(c.elevation);
+  }
+  camera->OrthogonalizeViewUp();
+  renderer->ResetCameraClippingRange();
+}
+
+void slScene::ApplyToRenderer(vtkRenderer* renderer)
+{
+  this->ConversionNotes.clear();
+  double c[3];
+  toDouble(this->Data->background, c);
+  renderer->SetBackground(c);
+  this->ApplyLights(renderer);
+  this->ApplyCamera(renderer);
+}
+
+bool slScene::ApplyToActor(vtkActor* actor)
+{
+  this->ApplyMaterial(actor->GetProperty());
+  const std::string texturePath = this->GetDiffuseTexturePath();
+  if (texturePath.empty())
+  {
+    actor->SetTexture(nullptr);
+    return true;
+  }
+  vtkNew<slImageReader> reader;
+  reader->SetFileName(texturePath.c_str());
+  reader->Update();
+  if (*reader->GetErrorMessage())
+  {
+    this->ErrorMessage = std::string(reader->GetErrorMessage()) + " (material.diffuseTexture of " +
+      (this->Data->sourceFile.empty() ? std::string("the scene") : this->Data->sourceFile) + ")";
+    return false;
+  }
+  vtkNew<vtkTexture> texture;
+  texture->SetInputConnection(reader->GetOutputPort());
+  texture->InterpolateOn();
+  texture->MipmapOn();
+  // VTK multiplies the texture into the ambient and diffuse colours: the
+  // scene's k_a and k_d act as tints of the texture.
+  actor->SetTexture(texture);
+  return true;
+}
+
+void slScene::SetLightsFromVTK(vtkLightCollection* lights)
+{
+  this->ConversionNotes.clear();
+  std::vector<shadelab::SceneLight>& out = this->Data->lights;
+  out.clear();
+  // VTK lights every actor with its property's ambient colour as if under a
+  // white ambient light of intensity 1; make that light explicit.
+  shadelab::SceneLight implicitAmbient;
+  implicitAmbient.name = "VTK property ambient";
+  implicitAmbient.type = shadelab::LightType::Ambient;
+  implicitAmbient.ambient = glm::vec3(1.0f);
+  implicitAmbient.diffuse = implicitAmbient.specular = glm::vec3(0.0f);
+  out.push_back(implicitAmbient);
+  lights->InitTraversal();
+  size_t index = 0;
+  for (vtkLight* light = lights->GetNextItem(); light; light = lights->GetNextItem(), ++index)
+  {
+    if (!light->GetSwitch())
+    {
+      this->Note("VTK light " + std::to_string(index) + " is switched off; skipped");
+      continue;
+    }
+    shadelab::SceneLight l;
+    l.ambient = toVec3(light->GetAmbientColor());
+    l.diffuse = toVec3(light->GetDiffuseColor());
+    l.specular = toVec3(light->GetSpecularColor());
+    l.intensity = static_cast<float>(light->GetIntensity());
+    glm::vec3 position = toVec3(light->GetPosition());
+    glm::vec3 focal = toVec3(light->GetFocalPoint());
+    if (light->LightTypeIsHeadlight())
+    {
+      // A headlight sits at the camera and shines at the focal point.
+      l.space = shadelab::LightSpace::Camera;
+      position = glm::vec3(0.0f, 0.0f, 1.0f);
+      focal = glm::vec3(0.0f);
+    }
+    else if (light->LightTypeIsCameraLight())
+    {
+      l.space = shadelab::LightSpace::Camera;
+    }
+    l.direction = focal - position;
+    if (!(glm::length(l.direction) > 0.0f))
+    {
+      l.direction = glm::vec3(0.0f, 0.0f, -1.0f);
+      this->Note("VTK light " + std::to_string(index) + ": position equals focal point; pointing along -z");
+    }
+    if (!light->GetPositional())
+    {
+      l.type = shadelab::LightType::Directional;
+    }
+    else
+    {
+      l.position = position;
+      double a[3];
+      light->GetAttenuationValues(a);
+      l.attenuation = toVec3(a);
+      if (light->GetConeAngle() < 90.0)
+      {
+        l.type = shadelab::LightType::Spot;
+        l.cutoffDegrees = static_cast<float>(light->GetConeAngle());
+        l.exponent = static_cast<float>(light->GetExponent());
+      }
+      else
+      {
+        l.type = shadelab::LightType::Point;
+      }
+    }
+    out.push_back(l);
+  }
+  this->Modified();
+}
+
+void slScene::SetMaterialFromVTK(vtkProperty* property)
+{
+  shadelab::SceneMaterial& m = this->Data->material;
+  m.ambient = static_cast<float>(property->GetAmbient()) * toVec3(property->GetAmbientColor());
+  m.diffuse = static_cast<float>(property->GetDiffuse()) * toVec3(property->GetDiffuseColor());
+  m.specular = static_cast<float>(property->GetSpecular()) * toVec3(property->GetSpecularColor());
+  m.emission = glm::vec3(0.0f);
+  m.shininess = static_cast<float>(property->GetSpecularPower());
+  switch (property->GetInterpolation())
+  {
+    case VTK_FLAT:
+      this->Data->frequency = shadelab::ShadingFrequency::Flat;
+      break;
+    case VTK_GOURAUD:
+      this->Data->frequency = shadelab::ShadingFrequency::Gouraud;
+      break;
+    default:
+      this->Data->frequency = shadelab::ShadingFrequency::Phong;
+      break;
+  }
+  this->Modified();
+}
+
+void slScene::SetCameraFromVTK(vtkCamera* camera)
+{
+  shadelab::SceneCamera& c = this->Data->camera;
+  c.hasPosition = true;
+  c.position = toVec3(camera->GetPosition());
+  c.focalPoint = toVec3(camera->GetFocalPoint());
+  c.viewUp = toVec3(camera->GetViewUp());
+  c.viewAngle = static_cast<float>(camera->GetViewAngle());
+  c.azimuth = c.elevation = 0.0f;
+  this->Modified();
+}

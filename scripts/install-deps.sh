@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs exactly the Debian 12 packages ShadeLab needs. Idempotent: runs
+# apt-get update and install only when something is missing.
+set -euo pipefail
+
+packages=(
+  cmake g++ make                    # build
+  libvtk9-dev python3-vtk9 python3-dev  # VTK 9.1 C++ and Python (wrapping tools come with python3-vtk9)
+  libglm-dev                        # lighting core
+  nlohmann-json3-dev                # scene files
+  libopenimageio-dev                # every image read and written
+  libopenmesh-dev                   # half-edge meshes
+  libgtest-dev libbenchmark-dev     # tests and benchmarks
+  xvfb xauth                        # offscreen rendering: Debian's VTK is X11-only
+  glslang-tools                     # checks that the lighting core is valid GLSL
+  python3-numpy                     # the numpy peer in the lighting benchmark
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+if [ "$(id -u)" -ne 0 ]; then
+  echo "install-deps: missing packages: ${missing[*]} (run as root, or install them)" >&2
+  exit 1
+fi
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+apt-get install -y -qq --no-install-recommends "${missing[@]}" > /dev/null

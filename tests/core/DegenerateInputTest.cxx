@@ -1,0 +1,123 @@
+// Degenerate geometry must shade to finite numbers, never NaN or infinity.
+#include "LightingTestUtilities.h"
+
+#include "shadelab/ShadePoint.h"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+using namespace shadelab;
+using namespace shadelab::test;
+
+namespace
+{
+std::vector<glsl::slLight> everyLightType()
+{
+  glsl::slLight point = whiteLight(glsl::SL_LIGHT_POINT);
+  point.position = glm::vec3(0.0f, 0.0f, 1.0f);
+  point.attenuation = glm::vec3(0.0f, 0.0f, 1.0f);
+  glsl::slLight spot = whiteLight(glsl::SL_LIGHT_SPOT);
+  spot.position = glm::vec3(0.0f, 0.0f, 1.0f);
+  spot.cosCutoff = 0.5f;
+  spot.cosInner = 0.7f;
+  spot.exponent = 3.0f;
+  glsl::slLight ambient = whiteLight(glsl::SL_LIGHT_AMBIENT);
+  ambient.ambient = glm::vec3(0.1f);
+  return { directionalFrom(glm::vec3(0.0f, 0.0f, 1.0f)), point, spot, ambient };
+}
+
+void expectFinite(const glsl::slTerms& t, const std::string& what)
+{
+  const glm::vec3 parts[] = { t.ambient, t.diffuse, t.specular, t.emission };
+  for (const glm::vec3& p : parts)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      EXPECT_TRUE(std::isfinite(p[i])) << what;
+    }
+  }
+}
+
+const int kAllModels[] = { glsl::SL_MODEL_LAMBERT, glsl::SL_MODEL_PHONG, glsl::SL_MODEL_BLINN_PHONG,
+  glsl::SL_MODEL_LAMBERT_NORMALIZED, glsl::SL_MODEL_PHONG_NORMALIZED, glsl::SL_MODEL_BLINN_PHONG_NORMALIZED };
+} // namespace
+
+TEST(Degenerate, ZeroNormalGivesOnlyAmbientAndEmission)
+{
+  glsl::slMaterial m = unitMaterial(32);
+  m.ambient = glm::vec3(1.0f);
+  for (int model : kAllModels)
+  {
+    const auto t = shadePoint(everyLightType(), m, model, glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0, 0, 5));
+    expectFinite(t, "zero normal");
+    EXPECT_EQ(t.diffuse, glm::vec3(0.0f));
+    EXPECT_EQ(t.specular, glm::vec3(0.0f));
+    EXPECT_GT(t.ambient.x, 0.0f);
+  }
+}
+
+TEST(Degenerate, LightAtTheShadedPoint)
+{
+  for (int model : kAllModels)
+  {
+    const auto t =
+      shadePoint(everyLightType(), unitMaterial(8), model, glm::vec3(0, 0, 1), glm::vec3(0, 0, 1), glm::vec3(0, 0, 5));
+    expectFinite(t, "light at point");
+  }
+}
+
+TEST(Degenerate, EyeAtTheShadedPoint)
+{
+  for (int model : kAllModels)
+  {
+    expectFinite(shadePoint(everyLightType(), unitMaterial(8), model, glm::vec3(0.0f), glm::vec3(0, 0, 1),
+                   glm::vec3(0.0f)),
+      "eye at point");
+  }
+}
+
+TEST(Degenerate, GrazingLightNDotLExactlyZero)
+{
+  const glsl::slLight light = directionalFrom(glm::vec3(1.0f, 0.0f, 0.0f));
+  for (int model : kAllModels)
+  {
+    const auto t = shadePoint({ light }, unitMaterial(0), model, glm::vec3(0.0f), glm::vec3(0, 0, 1),
+      glm::vec3(-1.0f, 0.0f, 0.0f));
+    expectFinite(t, "N.L = 0");
+    EXPECT_EQ(t.diffuse.x, 0.0f);
+    EXPECT_EQ(t.specular.x, 0.0f);
+  }
+}
+
+TEST(Degenerate, ExtremeShininess)
+{
+  for (float n : { 0.0f, 1e-6f, 1e4f })
+  {
+    for (int model : kAllModels)
+    {
+      for (double eyeDegrees : { -60.0, -30.0, 0.0, 45.0 })
+      {
+        const auto t = shadePoint(everyLightType(), unitMaterial(n), model, glm::vec3(0.3f, 0.0f, 0.0f),
+          glm::vec3(0, 0, 1), 5.0f * polar(radians(eyeDegrees)));
+        expectFinite(t, "shininess " + std::to_string(n));
+      }
+    }
+  }
+  // Shininess 0: the lobe is flat, 1 wherever the light is in front.
+  const auto flat = shadePoint({ directionalFrom(polar(radians(30))) }, unitMaterial(0), glsl::SL_MODEL_PHONG,
+    glm::vec3(0.0f), glm::vec3(0, 0, 1), 5.0f * polar(radians(10)));
+  EXPECT_NEAR(flat.specular.x, 1.0, 1e-6);
+}
+
+TEST(Degenerate, NonFiniteNormalIsTreatedAsNoNormal)
+{
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  for (const glm::vec3& n : { glm::vec3(nan, 0, 1), glm::vec3(inf, 0, 0) })
+  {
+    const auto t = shadePoint(everyLightType(), unitMaterial(8), glsl::SL_MODEL_BLINN_PHONG, glm::vec3(0.0f), n,
+      glm::vec3(0, 0, 5));
+    expectFinite(t, "non-finite normal");
+  }
+}

@@ -1,0 +1,243 @@
+// Scene files: strict validation with one-line messages naming the file, the
+// key path and the problem; and a lossless round trip.
+#include "shadelab/DefaultScene.h"
+#include "shadelab/SceneFile.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+using namespace shadelab;
+
+namespace
+{
+/// The message parseScene() throws for @p text, or "" if it parses.
+std::string errorFor(const std::string& text)
+{
+  try
+  {
+    parseScene(text, "bad.json");
+  }
+  catch (const SceneError& e)
+  {
+    return e.what();
+  }
+  return "";
+}
+
+std::string withLight(const std::string& lightBody)
+{
+  return R"({"lights": [{"type": "directional"}, )" + lightBody + "]}";
+}
+} // namespace
+
+TEST(SceneFile, EmptyObjectGivesDefaults)
+{
+  const Scene scene = parseScene("{}", "empty.json");
+  EXPECT_TRUE(scene.lights.empty());
+  EXPECT_EQ(scene.model, ShadingModel::BlinnPhong);
+  EXPECT_EQ(scene.frequency, ShadingFrequency::Phong);
+  EXPECT_EQ(scene.sourceFile, "empty.json");
+}
+
+TEST(SceneFile, ReadsEveryField)
+{
+  const Scene s = parseScene(R"({
+    "imageSize": [320, 240], "background": [0.1, 0.2, 0.3],
+    "shading": {"model": "phong-normalized", "frequency": "gouraud"},
+    "material": {"ambient": [0.1, 0.1, 0.1], "diffuse": [0.5, 0.6, 0.7], "specular": [1, 1, 1],
+                 "emission": [0.2, 0, 0], "shininess": 64},
+    "camera": {"position": [0, 0, 5], "focalPoint": [0, 0, 0], "viewUp": [0, 1, 0], "viewAngle": 40},
+    "lights": [
+      {"type": "spot", "position": [1, 2, 3], "direction": [0, 0, -1], "cutoff": 25, "exponent": 4,
+       "edge": 5, "attenuation": [1, 0.1, 0.01], "intensity": 2, "diffuse": [1, 0.5, 0.25], "space": "camera"},
+      {"type": "ambient", "ambient": [0.2, 0.2, 0.2]}
+    ]})",
+    "full.json");
+  EXPECT_EQ(s.width, 320);
+  EXPECT_EQ(s.height, 240);
+  EXPECT_EQ(s.model, ShadingModel::PhongNormalized);
+  EXPECT_EQ(s.frequency, ShadingFrequency::Gouraud);
+  EXPECT_FLOAT_EQ(s.material.shininess, 64.0f);
+  EXPECT_FLOAT_EQ(s.material.diffuse.y, 0.6f);
+  EXPECT_TRUE(s.camera.hasPosition);
+  EXPECT_FLOAT_EQ(s.camera.viewAngle, 40.0f);
+  ASSERT_EQ(s.lights.size(), 2u);
+  EXPECT_EQ(s.lights[0].type, LightType::Spot);
+  EXPECT_EQ(s.lights[0].space, LightSpace::Camera);
+  EXPECT_FLOAT_EQ(s.lights[0].cutoffDegrees, 25.0f);
+  EXPECT_FLOAT_EQ(s.lights[0].edgeDegrees, 5.0f);
+  EXPECT_FLOAT_EQ(s.lights[0].attenuation.z, 0.01f);
+  EXPECT_EQ(s.lights[1].type, LightType::Ambient);
+  EXPECT_EQ(s.lights[1].diffuse, glm::vec3(0.0f));
+}
+
+TEST(SceneFile, MalformedJSONNamesLineAndColumn)
+{
+  const std::string e = errorFor("{\n  \"background\": [0, 0, 0],\n  \"lights\": [ }\n");
+  EXPECT_EQ(e.rfind("bad.json: line 3, column ", 0), 0u) << e;
+  EXPECT_NE(e.find("malformed JSON"), std::string::npos) << e;
+  EXPECT_EQ(e.find('\n'), std::string::npos) << "one line";
+}
+
+TEST(SceneFile, EmptyTextIsMalformed)
+{
+  EXPECT_NE(errorFor("").find("malformed JSON"), std::string::npos);
+}
+
+TEST(SceneFile, UnknownKeys)
+{
+  EXPECT_EQ(errorFor(R"({"lihgts": []})").rfind("bad.json: lihgts: unknown key (allowed here: ", 0), 0u);
+  EXPECT_EQ(errorFor(R"({"material": {"shinyness": 3}})").rfind("bad.json: material.shinyness: unknown key", 0), 0u);
+  // Keys that belong to another light type are unknown for this one.
+  EXPECT_EQ(errorFor(withLight(R"({"type": "point", "cutoff": 20})")).rfind("bad.json: lights[1].cutoff: unknown key", 0),
+    0u);
+  EXPECT_EQ(errorFor(withLight(R"({"type": "ambient", "position": [0, 0, 0]})"))
+              .rfind("bad.json: lights[1].position: unknown key", 0),
+    0u);
+}
+
+TEST(SceneFile, DuplicateKeys)
+{
+  EXPECT_EQ(errorFor(R"({"lights": [{"type": "point", "position": [0,0,0], "position": [1,1,1]}]})"),
+    "bad.json: lights[0].position: duplicate key");
+  EXPECT_EQ(errorFor(R"({"background": [0,0,0], "background": [1,1,1]})"), "bad.json: background: duplicate key");
+}
+
+TEST(SceneFile, WrongTypes)
+{
+  EXPECT_EQ(errorFor(R"({"shading": {"model": 3}})"), "bad.json: shading.model: expected a string, got a number");
+  EXPECT_EQ(errorFor(R"({"material": {"shininess": "high"}})"),
+    "bad.json: material.shininess: expected a number, got a string");
+  EXPECT_EQ(errorFor(R"({"lights": {"type": "point"}})"), "bad.json: lights: expected an array of lights, got an object");
+  EXPECT_EQ(errorFor(R"({"material": {"diffuse": [1, true, 0]}})"),
+    "bad.json: material.diffuse[1]: expected a number, got a boolean");
+  EXPECT_EQ(errorFor(R"({"imageSize": [640.5, 480]})"),
+    "bad.json: imageSize[0]: expected a whole number of pixels, got a number");
+}
+
+TEST(SceneFile, UnknownNames)
+{
+  EXPECT_EQ(errorFor(R"({"shading": {"model": "cook-torrance"}})"),
+    "bad.json: shading.model: \"cook-torrance\" is not one of \"lambert\", \"phong\", \"blinn-phong\", "
+    "\"lambert-normalized\", \"phong-normalized\", \"blinn-phong-normalized\"");
+  EXPECT_EQ(errorFor(withLight(R"({"type": "area"})")).rfind("bad.json: lights[1].type: \"area\" is not one of", 0), 0u);
+  EXPECT_EQ(errorFor(withLight(R"({"position": [0, 0, 0]})")),
+    "bad.json: lights[1]: missing key \"type\" (one of \"directional\", \"point\", \"spot\", \"ambient\")");
+}
+
+TEST(SceneFile, OutOfRangeValues)
+{
+  EXPECT_EQ(errorFor(R"({"material": {"shininess": -1}})"),
+    "bad.json: material.shininess: -1 is out of range [0, 100000]");
+  EXPECT_EQ(errorFor(withLight(R"({"type": "directional", "direction": [0, 0, 0]})")),
+    "bad.json: lights[1].direction: a direction must not have zero length");
+  EXPECT_EQ(errorFor(withLight(R"({"type": "spot", "cutoff": 0})")),
+    "bad.json: lights[1].cutoff: 0 is out of range (0, 90]");
+  EXPECT_EQ(errorFor(withLight(R"({"type": "spot", "cutoff": 90.5})")),
+    "bad.json: lights[1].cutoff: 90.5 is out of range (0, 90]");
+  EXPECT_EQ(errorFor(withLight(R"({"type": "spot", "cutoff": 20, "edge": 25})")),
+    "bad.json: lights[1].edge: 25 is out of range [0, 20]");
+  EXPECT_EQ(errorFor(withLight(R"({"type": "point", "attenuation": [1, -0.5, 0]})")),
+    "bad.json: lights[1].attenuation[1]: -0.5 is out of range [0, inf)");
+  EXPECT_EQ(errorFor(withLight(R"({"type": "point", "intensity": -2})")),
+    "bad.json: lights[1].intensity: -2 is out of range [0, inf)");
+  EXPECT_EQ(errorFor(R"({"material": {"diffuse": [0.5, -0.1, 0]}})"),
+    "bad.json: material.diffuse[1]: -0.1 is out of range [0, inf)");
+  EXPECT_EQ(errorFor(R"({"camera": {"viewAngle": 180}})"), "bad.json: camera.viewAngle: 180 is out of range (0, 180)");
+  EXPECT_EQ(errorFor(R"({"imageSize": [8, 480]})"), "bad.json: imageSize[0]: 8 is out of range [16, 8192]");
+}
+
+TEST(SceneFile, WrongNumberOfComponents)
+{
+  EXPECT_EQ(errorFor(R"({"material": {"diffuse": [1, 0]}})"),
+    "bad.json: material.diffuse: expected an RGB colour of 3 numbers, got 2 components");
+  EXPECT_EQ(errorFor(R"({"background": [1, 0, 0, 1]})"),
+    "bad.json: background: expected an RGB colour of 3 numbers, got 4 components");
+  EXPECT_EQ(errorFor(withLight(R"({"type": "point", "position": 3})")),
+    "bad.json: lights[1].position: expected a point of 3 numbers, got a number");
+}
+
+TEST(SceneFile, CameraNeedsPositionAndFocalPointTogether)
+{
+  EXPECT_EQ(errorFor(R"({"camera": {"position": [0, 0, 1]}})").rfind("bad.json: camera: give both position", 0), 0u);
+  EXPECT_EQ(errorFor(R"({"camera": {"position": [1, 1, 1], "focalPoint": [1, 1, 1]}})"),
+    "bad.json: camera.focalPoint: must differ from position");
+}
+
+TEST(SceneFile, MissingFile)
+{
+  try
+  {
+    readSceneFile("/nonexistent/scene.json");
+    FAIL() << "expected SceneError";
+  }
+  catch (const SceneError& e)
+  {
+    EXPECT_STREQ(e.what(), "/nonexistent/scene.json: cannot open scene file");
+  }
+}
+
+TEST(SceneFile, RoundTripIsLossless)
+{
+  Scene scene = defaultScene();
+  scene.model = ShadingModel::BlinnPhongNormalized;
+  scene.frequency = ShadingFrequency::Flat;
+  scene.material.diffuseTexture = "wood.png";
+  SceneLight spot;
+  spot.type = LightType::Spot;
+  spot.position = glm::vec3(1.5f, -2.0f, 3.25f);
+  spot.cutoffDegrees = 17.5f;
+  spot.edgeDegrees = 2.5f;
+  spot.exponent = 3.0f;
+  spot.attenuation = glm::vec3(1.0f, 0.25f, 0.0625f);
+  scene.lights.push_back(spot);
+
+  const std::string json = sceneToJson(scene);
+  const Scene back = parseScene(json, "roundtrip.json");
+  EXPECT_EQ(sceneToJson(back), json);
+  ASSERT_EQ(back.lights.size(), scene.lights.size());
+  EXPECT_EQ(back.lights.back().position, spot.position);
+  EXPECT_EQ(back.lights.back().attenuation, spot.attenuation);
+  EXPECT_EQ(back.model, scene.model);
+  EXPECT_EQ(back.material.diffuseTexture, "wood.png");
+}
+
+TEST(SceneFile, ShippedScenesAreValid)
+{
+  for (const char* name : { "default.json" })
+  {
+    const Scene s = readSceneFile(std::string(SHADELAB_DATA_DIR) + "/scenes/" + name);
+    EXPECT_FALSE(s.lights.empty()) << name;
+  }
+}
+
+TEST(SceneFile, SchemaListsExactlyTheKeysTheReaderAccepts)
+{
+  // The reader's "allowed here" list for each object, against the JSON Schema.
+  std::ifstream in(std::string(SHADELAB_DATA_DIR) + "/schema/scene.schema.json");
+  ASSERT_TRUE(in.good());
+  const nlohmann::json schema = nlohmann::json::parse(in);
+  auto schemaKeys = [](const nlohmann::json& object) {
+    std::string out;
+    for (const auto& item : object["properties"].items())
+    {
+      out += (out.empty() ? "" : ", ") + ("\"" + item.key() + "\"");
+    }
+    return out; // nlohmann::json orders keys alphabetically, as std::set does
+  };
+  auto allowedIn = [](const std::string& message) {
+    const size_t open = message.find("(allowed here: ");
+    return open == std::string::npos ? message : message.substr(open + 15, message.size() - open - 16);
+  };
+  EXPECT_EQ(allowedIn(errorFor(R"({"zzz": 1})")), schemaKeys(schema));
+  EXPECT_EQ(allowedIn(errorFor(R"({"shading": {"zzz": 1}})")), schemaKeys(schema["$defs"]["shading"]));
+  EXPECT_EQ(allowedIn(errorFor(R"({"material": {"zzz": 1}})")), schemaKeys(schema["$defs"]["material"]));
+  EXPECT_EQ(allowedIn(errorFor(R"({"camera": {"zzz": 1}})")), schemaKeys(schema["$defs"]["camera"]));
+  for (const char* type : { "directional", "point", "spot", "ambient" })
+  {
+    const std::string light = std::string(R"({"lights": [{"type": ")") + type + R"(", "zzz": 1}]})";
+    EXPECT_EQ(allowedIn(errorFor(light)), schemaKeys(schema["$defs"][std::string(type) + "Light"])) << type;
+  }
+}

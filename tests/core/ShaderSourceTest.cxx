@@ -1,0 +1,47 @@
+// The GPU gets exactly the text of slLighting.glsl, and that text is valid
+// GLSL 1.50 (checked with glslangValidator when it is installed).
+#include "shadelab/LightingShaderSource.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+TEST(ShaderSource, EmbedsTheGLSLFileVerbatim)
+{
+  std::ifstream in(SHADELAB_LIGHTING_GLSL);
+  std::stringstream file;
+  file << in.rdbuf();
+  ASSERT_FALSE(file.str().empty());
+  EXPECT_EQ(shadelab::lightingShaderSource(), "#define SL_FUNC\n" + file.str());
+}
+
+TEST(ShaderSource, CompilesAsGLSL150)
+{
+  if (std::system("command -v glslangValidator > /dev/null 2>&1") != 0)
+  {
+    GTEST_SKIP() << "glslangValidator not installed (Debian package glslang-tools)";
+  }
+  char folder[] = "/tmp/shadelab-glsl-XXXXXX";
+  ASSERT_NE(mkdtemp(folder), nullptr);
+  const std::string path = std::string(folder) + "/lighting.frag";
+  {
+    std::ofstream out(path);
+    out << "#version 150\n"
+        << shadelab::lightingShaderSource()
+        << "uniform slLight lights[8];\nuniform slMaterial material;\nuniform int model;\n"
+           "in vec3 P;\nin vec3 N;\nout vec4 color;\n"
+           "void main()\n{\n  slTerms t = slZeroTerms();\n"
+           "  for (int i = 0; i < 8; ++i)\n  {\n"
+           "    t = slAddTerms(t, slShadeLight(lights[i], material, model, P, N, vec3(0.0f)));\n  }\n"
+           "  color = vec4(slTotal(slAddEmission(t, material)), 1.0f);\n}\n";
+  }
+  const std::string command = "glslangValidator " + path + " > " + path + ".log 2>&1";
+  const int status = std::system(command.c_str());
+  std::ifstream log(path + ".log");
+  std::stringstream text;
+  text << log.rdbuf();
+  EXPECT_EQ(status, 0) << text.str();
+}

@@ -1,0 +1,142 @@
+// slImageReader / slImageWriter through OpenImageIO, and their errors.
+#include "TestFolder.h"
+
+#include "slImageReader.h"
+#include "slImageWriter.h"
+
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace
+{
+/// A 5 x 3 image whose pixel (x, y) has channel c = 40 x + 7 y + c.
+vtkSmartPointer<vtkImageData> gradient(bool asFloat)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(5, 3, 1);
+  vtkSmartPointer<vtkDataArray> scalars;
+  if (asFloat)
+  {
+    scalars = vtkSmartPointer<vtkFloatArray>::New();
+  }
+  else
+  {
+    scalars = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  }
+  scalars->SetNumberOfComponents(3);
+  scalars->SetNumberOfTuples(15);
+  for (int y = 0; y < 3; ++y)
+  {
+    for (int x = 0; x < 5; ++x)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        scalars->SetComponent(y * 5 + x, c, 40 * x + 7 * y + c + (asFloat ? 0.25 : 0.0));
+      }
+    }
+  }
+  image->GetPointData()->SetScalars(scalars);
+  return image;
+}
+
+std::string slurp(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+} // namespace
+
+TEST(ImageIO, PNGRoundTripKeepsPixelsAndOrientation)
+{
+  const TestFolder folder;
+  vtkNew<slImageWriter> writer;
+  writer->SetInputData(gradient(false));
+  writer->SetFileName(folder.path("g.png").c_str());
+  ASSERT_TRUE(writer->Write()) << writer->GetErrorMessage();
+
+  vtkNew<slImageReader> reader;
+  reader->SetFileName(folder.path("g.png").c_str());
+  reader->Update();
+  vtkImageData* image = reader->GetOutput();
+  int dims[3];
+  image->GetDimensions(dims);
+  EXPECT_EQ(dims[0], 5);
+  EXPECT_EQ(dims[1], 3);
+  vtkDataArray* scalars = image->GetPointData()->GetScalars();
+  ASSERT_EQ(scalars->GetDataType(), VTK_UNSIGNED_CHAR);
+  EXPECT_EQ(scalars->GetComponent(2 * 5 + 4, 1), 40 * 4 + 7 * 2 + 1); // pixel (4, 2), row 0 at the bottom
+  EXPECT_EQ(scalars->GetComponent(0, 2), 2);
+}
+
+TEST(ImageIO, EXRKeepsFloats)
+{
+  const TestFolder folder;
+  vtkNew<slImageWriter> writer;
+  writer->SetInputData(gradient(true));
+  writer->SetFileName(folder.path("g.exr").c_str());
+  ASSERT_TRUE(writer->Write()) << writer->GetErrorMessage();
+  vtkNew<slImageReader> reader;
+  reader->SetFileName(folder.path("g.exr").c_str());
+  reader->Update();
+  vtkDataArray* scalars = reader->GetOutput()->GetPointData()->GetScalars();
+  ASSERT_EQ(scalars->GetDataType(), VTK_FLOAT);
+  EXPECT_FLOAT_EQ(static_cast<float>(scalars->GetComponent(1 * 5 + 3, 0)), 40 * 3 + 7 + 0.25f);
+}
+
+TEST(ImageIO, ReadsTheSharedHDREnvironmentMap)
+{
+  vtkNew<slImageReader> reader;
+  reader->SetFileName((std::string(SHADELAB_SHARED_DATA_DIR) + "/envmaps/venice_sunset_1k.hdr").c_str());
+  reader->Update();
+  ASSERT_STREQ(reader->GetErrorMessage(), "");
+  int dims[3];
+  reader->GetOutput()->GetDimensions(dims);
+  EXPECT_EQ(dims[0], 1024);
+  EXPECT_EQ(dims[1], 512);
+  double range[2];
+  reader->GetOutput()->GetPointData()->GetScalars()->GetRange(range, 0);
+  EXPECT_GT(range[1], 100.0) << "HDR values above 1 survive";
+}
+
+TEST(ImageIO, UnreadableImageNamesTheFile)
+{
+  const TestFolder folder;
+  folder.write("fake.png", "not a png");
+  vtkNew<slImageReader> reader;
+  reader->SetFileName(folder.path("fake.png").c_str());
+  reader->Update();
+  const std::string error = reader->GetErrorMessage();
+  EXPECT_EQ(error.rfind(folder.path("fake.png") + ": cannot read image", 0), 0u) << error;
+  EXPECT_EQ(error.find('\n'), std::string::npos);
+
+  reader->SetFileName("/nonexistent/texture.png");
+  reader->Update();
+  EXPECT_EQ(std::string(reader->GetErrorMessage()).rfind("/nonexistent/texture.png: cannot read image", 0), 0u);
+}
+
+TEST(ImageIO, FailedWriteLeavesTheExistingFile)
+{
+  const TestFolder folder;
+  folder.write("keep.png", "precious");
+  vtkNew<vtkImageData> empty;
+  vtkNew<slImageWriter> writer;
+  writer->SetInputData(empty);
+  writer->SetFileName(folder.path("keep.png").c_str());
+  EXPECT_FALSE(writer->Write());
+  EXPECT_EQ(slurp(folder.path("keep.png")), "precious");
+
+  writer->SetInputData(gradient(false));
+  writer->SetFileName("/nonexistent-folder/out.png");
+  EXPECT_FALSE(writer->Write());
+  EXPECT_EQ(std::string(writer->GetErrorMessage()).rfind("/nonexistent-folder/out.png: cannot create output file", 0), 0u);
+}

@@ -1,0 +1,190 @@
+// slMeshReader: every format, and every kind of bad input.
+#include "TestFolder.h"
+
+#include "slMeshReader.h"
+
+#include <vtkCellArray.h>
+#include <vtkNew.h>
+#include <vtkPLYWriter.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataWriter.h>
+#include <vtkSTLWriter.h>
+#include <vtkSphereSource.h>
+#include <vtkTriangleFilter.h>
+#include <vtkXMLPolyDataWriter.h>
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+namespace
+{
+vtkSmartPointer<vtkPolyData> sphere()
+{
+  vtkNew<vtkSphereSource> source;
+  source->SetThetaResolution(12);
+  source->SetPhiResolution(8);
+  source->Update();
+  vtkSmartPointer<vtkPolyData> out = source->GetOutput();
+  return out;
+}
+
+struct ReadResult
+{
+  vtkSmartPointer<vtkPolyData> mesh;
+  std::string error;
+};
+
+ReadResult read(const std::string& path)
+{
+  vtkNew<slMeshReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  ReadResult r;
+  r.mesh = reader->GetOutput();
+  r.error = reader->GetErrorMessage();
+  return r;
+}
+} // namespace
+
+TEST(MeshReader, ReadsVTKWrittenFormats)
+{
+  const TestFolder folder;
+  vtkSmartPointer<vtkPolyData> input = sphere();
+  const vtkIdType expectedPoints = input->GetNumberOfPoints();
+  const vtkIdType expectedCells = input->GetNumberOfPolys();
+
+  vtkNew<vtkXMLPolyDataWriter> vtp;
+  vtp->SetInputData(input);
+  vtp->SetFileName(folder.path("s.vtp").c_str());
+  vtp->Write();
+  vtkNew<vtkPolyDataWriter> legacy;
+  legacy->SetInputData(input);
+  legacy->SetFileName(folder.path("s.VTK").c_str()); // extensions are case insensitive
+  legacy->Write();
+  vtkNew<vtkPLYWriter> ply;
+  ply->SetInputData(input);
+  ply->SetFileName(folder.path("s.ply").c_str());
+  ply->Write();
+
+  for (const char* name : { "s.vtp", "s.VTK", "s.ply" })
+  {
+    const ReadResult r = read(folder.path(name));
+    EXPECT_EQ(r.error, "") << name;
+    EXPECT_EQ(r.mesh->GetNumberOfPoints(), expectedPoints) << name;
+    EXPECT_EQ(r.mesh->GetNumberOfPolys(), expectedCells) << name;
+  }
+
+  vtkNew<vtkSTLWriter> stl;
+  stl->SetInputData(input);
+  stl->SetFileName(folder.path("s.stl").c_str());
+  stl->Write();
+  const ReadResult r = read(folder.path("s.stl"));
+  EXPECT_EQ(r.error, "");
+  EXPECT_EQ(r.mesh->GetNumberOfPolys(), expectedCells); // STL merges points itself
+}
+
+TEST(MeshReader, ObjCornersAreMergedButUVSeamsStay)
+{
+  // Two triangles sharing an edge; one shared corner has two different UVs.
+  const TestFolder folder;
+  folder.write("quad.obj",
+    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+    "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvt 0.5 0.5\n"
+    "f 1/1 2/2 3/3\nf 1/5 3/3 4/4\n");
+  const ReadResult r = read(folder.path("quad.obj"));
+  ASSERT_EQ(r.error, "");
+  EXPECT_EQ(r.mesh->GetNumberOfPolys(), 2);
+  // Corners: 6. Vertex 3 (same UV twice) merges; vertex 1 keeps two UVs.
+  EXPECT_EQ(r.mesh->GetNumberOfPoints(), 5);
+  EXPECT_NE(r.mesh->GetPointData()->GetTCoords(), nullptr);
+}
+
+TEST(MeshReader, ReadsOFFWithNgonsAndComments)
+{
+  const TestFolder folder;
+  folder.write("m.off",
+    "OFF\n# a pyramid with a square base\n5 5 0\n"
+    "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 1\n"
+    "4 3 2 1 0\n3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4 255 0 0\n");
+  const ReadResult r = read(folder.path("m.off"));
+  ASSERT_EQ(r.error, "");
+  EXPECT_EQ(r.mesh->GetNumberOfPoints(), 5);
+  EXPECT_EQ(r.mesh->GetNumberOfPolys(), 5);
+  EXPECT_EQ(r.mesh->GetPolys()->GetMaxCellSize(), 4);
+}
+
+TEST(MeshReader, BadOFFNamesTheLine)
+{
+  const TestFolder folder;
+  folder.write("bad.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
+  EXPECT_EQ(read(folder.path("bad.off")).error, folder.path("bad.off") + ": line 6: vertex index 7 is out of range [0, 3)");
+  folder.write("short.off", "OFF\n3 1 0\n0 0 0\n1 0\n");
+  EXPECT_EQ(read(folder.path("short.off")).error, folder.path("short.off") + ": line 4: expected three vertex coordinates");
+  folder.write("noheader.off", "3 1 0\n");
+  EXPECT_EQ(read(folder.path("noheader.off")).error, folder.path("noheader.off") + ": line 1: expected \"OFF\", found \"3\"");
+}
+
+TEST(MeshReader, MissingFile)
+{
+  const ReadResult r = read("/nonexistent/bunny.obj");
+  EXPECT_EQ(r.error, "/nonexistent/bunny.obj: cannot open file");
+  EXPECT_EQ(r.mesh->GetNumberOfPoints(), 0);
+}
+
+TEST(MeshReader, UnsupportedExtension)
+{
+  EXPECT_EQ(read("mesh.xyz").error,
+    "mesh.xyz: unsupported mesh format \".xyz\" (supported: .obj .ply .stl .vtp .vtk .off)");
+}
+
+TEST(MeshReader, GarbageGivesAnErrorAndEmptyOutput)
+{
+  const TestFolder folder;
+  for (const char* name : { "junk.obj", "junk.ply", "junk.vtp", "junk.vtk", "junk.stl" })
+  {
+    folder.write(name, "this is not a mesh at all\n\x01\x02\x03");
+    const ReadResult r = read(folder.path(name));
+    EXPECT_EQ(r.error.rfind(folder.path(name) + ": ", 0), 0u) << name << ": " << r.error;
+    EXPECT_EQ(r.error.find('\n'), std::string::npos) << "one line: " << r.error;
+    EXPECT_EQ(r.mesh->GetNumberOfPoints(), 0) << name;
+  }
+}
+
+TEST(MeshReader, NonFiniteCoordinates)
+{
+  const TestFolder folder;
+  folder.write("nan.off", "OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n");
+  const ReadResult r = read(folder.path("nan.off"));
+  EXPECT_EQ(r.error, folder.path("nan.off") + ": point 1 has a NaN or infinite coordinate");
+  EXPECT_EQ(r.mesh->GetNumberOfPoints(), 0);
+}
+
+TEST(MeshReader, NoPolygons)
+{
+  const TestFolder folder;
+  folder.write("points.obj", "v 0 0 0\nv 1 0 0\n");
+  const ReadResult r = read(folder.path("points.obj"));
+  EXPECT_NE(r.error, "");
+  EXPECT_EQ(r.mesh->GetNumberOfPoints(), 0);
+}
+
+TEST(MeshReader, SharedDataMeshes)
+{
+  struct Expected
+  {
+    const char* name;
+    vtkIdType faces;
+  };
+  for (const Expected& e : { Expected{ "spot.obj", 5856 }, Expected{ "fandisk.obj", 12946 },
+         Expected{ "teapot.obj", 6320 } })
+  {
+    const ReadResult r = read(std::string(SHADELAB_SHARED_DATA_DIR) + "/meshes/" + e.name);
+    EXPECT_EQ(r.error, "") << e.name;
+    EXPECT_EQ(r.mesh->GetNumberOfPolys(), e.faces) << e.name;
+  }
+  // Spot: 2930 positions, 3225 (position, UV) pairs.
+  EXPECT_EQ(read(std::string(SHADELAB_SHARED_DATA_DIR) + "/meshes/spot.obj").mesh->GetNumberOfPoints(), 3225);
+}

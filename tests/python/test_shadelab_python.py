@@ -1,0 +1,75 @@
+"""import shadelab from Debian's python3 and run its filters."""
+import os
+import sys
+import tempfile
+import unittest
+
+import shadelab
+from vtkmodules.vtkRenderingCore import vtkLight, vtkRenderer
+
+SHARED = os.environ["SHADELAB_SHARED_DATA_DIR"]
+DATA = os.environ["SHADELAB_DATA_DIR"]
+
+
+class ImportTest(unittest.TestCase):
+    def test_every_class_is_exported(self):
+        for name in ("slMeshReader", "slImageReader", "slImageWriter", "slScene", "slSceneRenderer"):
+            self.assertTrue(hasattr(shadelab, name), name)
+
+
+class MeshReaderTest(unittest.TestCase):
+    def test_reads_fandisk(self):
+        reader = shadelab.slMeshReader()
+        reader.SetFileName(os.path.join(SHARED, "meshes", "fandisk.obj"))
+        reader.Update()
+        self.assertEqual(reader.GetErrorMessage(), "")
+        self.assertEqual(reader.GetOutput().GetNumberOfPolys(), 12946)
+
+    def test_error_message_for_missing_file(self):
+        reader = shadelab.slMeshReader()
+        reader.SetFileName("/nonexistent/m.ply")
+        reader.GlobalWarningDisplayOff()
+        reader.Update()
+        self.assertEqual(reader.GetErrorMessage(), "/nonexistent/m.ply: cannot open file")
+        reader.GlobalWarningDisplayOn()
+
+
+class SceneTest(unittest.TestCase):
+    def test_default_scene_to_vtk_lights(self):
+        scene = shadelab.slScene()
+        self.assertTrue(scene.ReadFile(os.path.join(DATA, "scenes", "default.json")), scene.GetErrorMessage())
+        self.assertEqual(scene.GetModelName(), "blinn-phong")
+        renderer = vtkRenderer()
+        scene.ApplyLights(renderer)
+        # Four scene lights; the ambient one is folded into the property.
+        self.assertEqual(renderer.GetLights().GetNumberOfItems(), scene.GetNumberOfLights() - 1)
+
+    def test_bad_scene_message(self):
+        scene = shadelab.slScene()
+        self.assertFalse(scene.ReadString('{"material": {"shininess": -3}}', "mine.json"))
+        self.assertEqual(scene.GetErrorMessage(), "mine.json: material.shininess: -3 is out of range [0, 100000]")
+
+    def test_vtk_lights_in(self):
+        light = vtkLight()
+        light.SetPositional(True)
+        light.SetPosition(0, 0, 4)
+        light.SetConeAngle(180)  # VTK's positional lights are 30-degree spots by default
+        renderer = vtkRenderer()
+        renderer.AddLight(light)
+        scene = shadelab.slScene()
+        scene.SetLightsFromVTK(renderer.GetLights())
+        self.assertIn('"type": "point"', scene.ToJSON())
+
+    def test_write_and_read_back(self):
+        scene = shadelab.slScene()
+        self.assertTrue(scene.SetModelName("phong-normalized"))
+        with tempfile.TemporaryDirectory() as folder:
+            path = os.path.join(folder, "s.json")
+            self.assertTrue(scene.WriteFile(path))
+            again = shadelab.slScene()
+            self.assertTrue(again.ReadFile(path), again.GetErrorMessage())
+            self.assertEqual(again.GetModelName(), "phong-normalized")
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)
