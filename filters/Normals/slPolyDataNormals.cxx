@@ -1,0 +1,525 @@
+#include "slPolyDataNormals.h"
+
+#include "slFaceNormalsCore.h"
+#include "slFeatureSplitCore.h"
+#include "slNormalsVTKBridge.h"
+#include "slOrientationCore.h"
+#include "slPointWeldCore.h"
+#include "slVertexCorners.h"
+#include "slVertexNormalsCore.h"
+
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
+#include <vtkIdList.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkMath.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSMPTools.h>
+
+#include <cstring>
+#include <limits>
+#include <numeric>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(slPolyDataNormals);
+
+namespace
+{
+struct Settings
+{
+  slnormals::Weighting weighting;
+  double featureAngle;
+  bool split, orient, outward, weld, pointNormals, cellNormals;
+};
+
+/// Owned polygon storage as VTK arrays of ids of type Id.
+template <typename Id>
+struct OwnedPolygons
+{
+  vtkSmartPointer<slIdArray<Id>> offsets, connectivity;
+  slnormals::Polygons<Id> view() const
+  {
+    slnormals::Polygons<Id> p;
+    p.offsets = reinterpret_cast<const Id*>(this->offsets->GetPointer(0));
+    p.connectivity = reinterpret_cast<Id*>(this->connectivity->GetPointer(0));
+    p.numPolygons = this->offsets->GetNumberOfValues() - 1;
+    return p;
+  }
+  vtkSmartPointer<vtkCellArray> cells() const
+  {
+    auto c = vtkSmartPointer<vtkCellArray>::New();
+    c->SetData(this->offsets, this->connectivity);
+    return c;
+  }
+};
+
+/// Copies @p polys and appends every strip of @p strips as triangles.
+template <typename Id>
+OwnedPolygons<Id> copyPolygons(vtkCellArray* polys, vtkCellArray* strips)
+{
+  std::vector<Id> offsets{ 0 }, conn;
+  vtkIdType n;
+  const vtkIdType* ids;
+  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
+  {
+    conn.insert(conn.end(), ids, ids + n);
+    offsets.push_back(static_cast<Id>(conn.size()));
+  }
+  for (strips->InitTraversal(); strips->GetNextCell(n, ids);)
+  {
+    for (vtkIdType i = 0; i + 2 < n; ++i)
+    {
+      // Strips alternate orientation: even triangles (i, i+1, i+2), odd (i+1, i, i+2).
+      conn.push_back(static_cast<Id>(ids[i % 2 ? i + 1 : i]));
+      conn.push_back(static_cast<Id>(ids[i % 2 ? i : i + 1]));
+      conn.push_back(static_cast<Id>(ids[i + 2]));
+      offsets.push_back(static_cast<Id>(conn.size()));
+    }
+  }
+  OwnedPolygons<Id> o;
+  o.offsets = vtkSmartPointer<slIdArray<Id>>::New();
+  o.offsets->SetNumberOfValues(static_cast<vtkIdType>(offsets.size()));
+  std::memcpy(o.offsets->GetPointer(0), offsets.data(), offsets.size() * sizeof(Id));
+  o.connectivity = vtkSmartPointer<slIdArray<Id>>::New();
+  o.connectivity->SetNumberOfValues(static_cast<vtkIdType>(conn.size()));
+  if (!conn.empty())
+  {
+    std::memcpy(o.connectivity->GetPointer(0), conn.data(), conn.size() * sizeof(Id));
+  }
+  return o;
+}
+
+/// Replaces every id of @p cells by map[id].
+vtkSmartPointer<vtkCellArray> remapCells(vtkCellArray* cells, const std::vector<vtkIdType>& map)
+{
+  auto out = vtkSmartPointer<vtkCellArray>::New();
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c)
+  {
+    cells->GetCellAtId(c, ids);
+    for (vtkIdType i = 0; i < ids->GetNumberOfIds(); ++i)
+    {
+      ids->SetId(i, map[static_cast<size_t>(ids->GetId(i))]);
+    }
+    out->InsertNextCell(ids);
+  }
+  return out;
+}
+
+vtkSmartPointer<vtkFloatArray> makeNormals(vtkIdType tuples)
+{
+  auto a = vtkSmartPointer<vtkFloatArray>::New();
+  a->SetName("Normals");
+  a->SetNumberOfComponents(3);
+  a->SetNumberOfTuples(tuples);
+  return a;
+}
+
+/// The job on points of type T and polygon ids of type Id.
+template <typename T, typename Id>
+class NormalsJob
+{
+public:
+  NormalsJob(const Settings& s, vtkPolyData* input, vtkPolyData* output, const T* xyz)
+    : S(s)
+    , Input(input)
+    , Output(output)
+    , XYZ(xyz)
+    , Par(slSMPParallel())
+  {
+  }
+
+  /// Returns "" or the problem.
+  std::string Run(vtkIdType& flipped)
+  {
+    vtkCellArray* strips = this->Input->GetStrips();
+    const int64_t numPoints = this->Input->GetNumberOfPoints();
+    slnormals::Polygons<Id> polys;
+    if (strips->GetNumberOfCells() > 0)
+    {
+      this->Owned = copyPolygons<Id>(this->Input->GetPolys(), strips);
+      this->HasOwned = true;
+      polys = this->Owned.view();
+    }
+    else
+    {
+      polys = slPolygonsOf<Id>(this->Input->GetPolys());
+    }
+    const int64_t numCorners = polys.numPolygons ? polys.end(polys.numPolygons - 1) : 0;
+    const bool needCorners = this->S.orient || this->S.outward || (this->S.split && this->S.pointNormals);
+    if ((needCorners || this->S.weld) && numCorners >= std::numeric_limits<int32_t>::max())
+    {
+      return "the mesh has " + std::to_string(numCorners) +
+        " polygon corners; splitting, orientation and welding handle fewer than 2^31";
+    }
+
+    // Welding: polygons on canonical ids for everything topological.
+    std::vector<int64_t> canonical;
+    vtkSmartPointer<slIdArray<Id>> topologyIds;
+    slnormals::Polygons<Id> topology = polys;
+    if (this->S.weld)
+    {
+      slnormals::weldCoincidentPoints(this->XYZ, numPoints, canonical);
+      topologyIds = vtkSmartPointer<slIdArray<Id>>::New();
+      topologyIds->SetNumberOfValues(numCorners);
+      Id* t = reinterpret_cast<Id*>(topologyIds->GetPointer(0));
+      this->Par.forRange(0, numCorners, 65536, [&](int64_t b, int64_t e) {
+        for (int64_t c = b; c < e; ++c)
+        {
+          t[c] = static_cast<Id>(canonical[static_cast<size_t>(polys.connectivity[c])]);
+        }
+      });
+      topology.connectivity = t;
+    }
+
+    // Orientation: reverse polygons in an owned copy, only if needed.
+    slnormals::VertexCorners<Id> corners;
+    bool cornersValid = false;
+    flipped = 0;
+    if (this->S.orient || this->S.outward)
+    {
+      corners.build(topology, numPoints, this->Par);
+      cornersValid = true;
+      if (this->S.outward || slnormals::hasInconsistentEdge(topology, corners, this->Par))
+      {
+        if (!this->HasOwned)
+        {
+          this->Owned = copyPolygons<Id>(this->Input->GetPolys(), strips);
+          this->HasOwned = true;
+          const bool welded = topology.connectivity != polys.connectivity;
+          polys = this->Owned.view();
+          if (!welded)
+          {
+            topology = polys;
+          }
+        }
+        std::vector<char> flips;
+        flipped = slnormals::orientPolygons(topology, this->XYZ, corners, true, this->S.outward, this->Par, &flips);
+        if (topology.connectivity != polys.connectivity)
+        {
+          for (int64_t f = 0; f < polys.numPolygons; ++f)
+          {
+            if (flips[static_cast<size_t>(f)])
+            {
+              std::reverse(polys.connectivity + polys.begin(f), polys.connectivity + polys.end(f));
+            }
+          }
+        }
+        cornersValid = flipped == 0;
+      }
+    }
+
+    vtkCellData* inCD = this->Input->GetCellData();
+    vtkCellData* outCD = this->Output->GetCellData();
+    const vtkIdType numVerts = this->Input->GetNumberOfVerts();
+    const vtkIdType numLines = this->Input->GetNumberOfLines();
+
+    // Points, point data and polygons.
+    std::vector<vtkIdType> pointMap; // input point -> output point, when split
+    if (this->S.pointNormals && this->S.split)
+    {
+      if (!cornersValid)
+      {
+        corners.build(topology, numPoints, this->Par);
+      }
+      this->Split(polys, topology, numPoints, corners, pointMap);
+    }
+    else
+    {
+      this->Output->SetPoints(this->Input->GetPoints());
+      this->Output->GetPointData()->PassData(this->Input->GetPointData());
+      this->Output->SetPolys(this->HasOwned ? this->Owned.cells().GetPointer() : this->Input->GetPolys());
+      if (this->S.pointNormals)
+      {
+        auto normals = makeNormals(numPoints);
+        float* n = normals->GetPointer(0);
+        slnormals::computeVertexNormals(topology, this->XYZ, numPoints, this->S.weighting, n, this->Par);
+        if (this->S.weld)
+        {
+          this->Par.forRange(0, numPoints, 65536, [&](int64_t b, int64_t e) {
+            for (int64_t v = b; v < e; ++v)
+            {
+              const int64_t c = canonical[static_cast<size_t>(v)];
+              if (c != v)
+              {
+                std::memcpy(n + 3 * v, n + 3 * c, 3 * sizeof(float));
+              }
+            }
+          });
+        }
+        this->Output->GetPointData()->RemoveArray("Normals");
+        this->Output->GetPointData()->SetNormals(normals);
+      }
+    }
+    if (pointMap.empty())
+    {
+      this->Output->SetVerts(this->Input->GetVerts());
+      this->Output->SetLines(this->Input->GetLines());
+    }
+    else
+    {
+      this->Output->SetVerts(remapCells(this->Input->GetVerts(), pointMap));
+      this->Output->SetLines(remapCells(this->Input->GetLines(), pointMap));
+    }
+
+    // Cell data: strips became triangles after the polygons, in order.
+    if (strips->GetNumberOfCells() == 0)
+    {
+      outCD->PassData(inCD);
+    }
+    else
+    {
+      const vtkIdType numOut = numVerts + numLines + polys.numPolygons;
+      vtkNew<vtkIdList> from;
+      from->SetNumberOfIds(numOut);
+      vtkIdType o = 0;
+      for (vtkIdType c = 0; c < numVerts + numLines + this->Input->GetNumberOfPolys(); ++c)
+      {
+        from->SetId(o++, c);
+      }
+      vtkIdType n;
+      const vtkIdType* ids;
+      vtkIdType s = numVerts + numLines + this->Input->GetNumberOfPolys();
+      for (strips->InitTraversal(); strips->GetNextCell(n, ids); ++s)
+      {
+        for (vtkIdType i = 0; i + 2 < n; ++i)
+        {
+          from->SetId(o++, s);
+        }
+      }
+      vtkNew<vtkIdList> to;
+      to->SetNumberOfIds(numOut);
+      std::iota(to->GetPointer(0), to->GetPointer(0) + numOut, vtkIdType(0));
+      outCD->CopyAllocate(inCD, numOut);
+      outCD->CopyData(inCD, from, to);
+    }
+    if (this->S.cellNormals)
+    {
+      const vtkIdType first = numVerts + numLines;
+      auto normals = makeNormals(first + polys.numPolygons);
+      float* n = normals->GetPointer(0);
+      std::fill(n, n + 3 * first, 0.0f);
+      slnormals::computeUnitFaceNormals(topology, this->XYZ, n + 3 * first, this->Par);
+      outCD->RemoveArray("Normals");
+      outCD->SetNormals(normals);
+    }
+    return std::string();
+  }
+
+private:
+  void Split(const slnormals::Polygons<Id>& polys, const slnormals::Polygons<Id>& topology, int64_t numPoints,
+    const slnormals::VertexCorners<Id>& corners, std::vector<vtkIdType>& pointMap)
+  {
+    const int64_t numCorners = polys.numPolygons ? polys.end(polys.numPolygons - 1) : 0;
+    vtkNew<vtkTypeInt32Array> conn;
+    conn->SetNumberOfValues(numCorners);
+    // Points used by no polygon are kept after the split ones, with (0,0,0).
+    int64_t unused = 0;
+    for (int64_t v = 0; v < numPoints; ++v)
+    {
+      unused += corners.offsets[static_cast<size_t>(v) + 1] == corners.offsets[static_cast<size_t>(v)];
+    }
+    vtkSmartPointer<vtkFloatArray> normals;
+    std::vector<int64_t> source;
+    auto allocate = [&](int64_t splitPoints) {
+      normals = makeNormals(splitPoints + unused);
+      source.resize(static_cast<size_t>(splitPoints + unused));
+      slnormals::SplitOutput out;
+      out.normals = normals->GetPointer(0);
+      out.source = source.data();
+      return out;
+    };
+    const bool welded = topology.connectivity != polys.connectivity;
+    const T cosFeature = static_cast<T>(std::cos(vtkMath::RadiansFromDegrees(this->S.featureAngle)));
+    const int64_t split = slnormals::splitVertexNormals(topology, welded ? polys.connectivity : nullptr, this->XYZ,
+      numPoints, corners, this->S.weighting, cosFeature, true, conn->GetPointer(0), allocate, this->Par);
+
+    pointMap.assign(static_cast<size_t>(numPoints), -1);
+    for (int64_t i = split - 1; i >= 0; --i)
+    {
+      pointMap[static_cast<size_t>(source[static_cast<size_t>(i)])] = static_cast<vtkIdType>(i);
+    }
+    const int64_t total = split + unused;
+    float* n = normals->GetPointer(0);
+    for (int64_t v = 0, next = split; v < numPoints; ++v)
+    {
+      if (pointMap[static_cast<size_t>(v)] < 0)
+      {
+        source[static_cast<size_t>(next)] = v;
+        std::fill(n + 3 * next, n + 3 * next + 3, 0.0f);
+        pointMap[static_cast<size_t>(v)] = next++;
+      }
+    }
+
+    vtkPoints* inPoints = this->Input->GetPoints();
+    vtkNew<vtkPoints> points;
+    points->SetDataType(inPoints->GetDataType());
+    points->SetNumberOfPoints(total);
+    T* out = static_cast<T*>(points->GetData()->GetVoidPointer(0));
+    this->Par.forRange(0, total, 65536, [&](int64_t b, int64_t e) {
+      for (int64_t i = b; i < e; ++i)
+      {
+        std::memcpy(out + 3 * i, this->XYZ + 3 * source[static_cast<size_t>(i)], 3 * sizeof(T));
+      }
+    });
+    this->Output->SetPoints(points);
+
+    vtkPointData* inPD = this->Input->GetPointData();
+    vtkPointData* outPD = this->Output->GetPointData();
+    if (inPD->GetNumberOfArrays() > 0)
+    {
+      vtkNew<vtkIdList> from, to;
+      from->SetNumberOfIds(total);
+      to->SetNumberOfIds(total);
+      for (int64_t i = 0; i < total; ++i)
+      {
+        from->SetId(i, source[static_cast<size_t>(i)]);
+        to->SetId(i, i);
+      }
+      outPD->CopyNormalsOff();
+      outPD->CopyAllocate(inPD, total);
+      outPD->CopyData(inPD, from, to);
+      outPD->RemoveArray("Normals");
+    }
+    outPD->SetNormals(normals);
+
+    vtkNew<vtkCellArray> cells;
+    if (sizeof(Id) == 4)
+    {
+      vtkDataArray* offsets = this->HasOwned ? static_cast<vtkDataArray*>(this->Owned.offsets.GetPointer())
+                                             : this->Input->GetPolys()->GetOffsetsArray();
+      cells->SetData(vtkTypeInt32Array::SafeDownCast(offsets), conn);
+    }
+    else
+    {
+      vtkNew<vtkTypeInt32Array> offsets;
+      offsets->SetNumberOfValues(polys.numPolygons + 1);
+      int32_t* o = offsets->GetPointer(0);
+      this->Par.forRange(0, polys.numPolygons + 1, 65536, [&](int64_t b, int64_t e) {
+        for (int64_t f = b; f < e; ++f)
+        {
+          o[f] = static_cast<int32_t>(polys.offsets[f]);
+        }
+      });
+      cells->SetData(offsets, conn);
+    }
+    this->Output->SetPolys(cells);
+  }
+
+  const Settings S;
+  vtkPolyData* Input;
+  vtkPolyData* Output;
+  const T* XYZ;
+  slnormals::Parallel Par;
+  OwnedPolygons<Id> Owned;
+  bool HasOwned = false;
+};
+} // namespace
+
+slPolyDataNormals::slPolyDataNormals() = default;
+slPolyDataNormals::~slPolyDataNormals() = default;
+
+const char* slPolyDataNormals::GetWeightingName(int weighting)
+{
+  switch (weighting)
+  {
+    case UNIFORM:
+      return "uniform";
+    case AREA:
+      return "area";
+    case ANGLE:
+      return "angle";
+    case MAX:
+      return "max";
+    default:
+      return "unknown";
+  }
+}
+
+int slPolyDataNormals::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  output->Initialize();
+  this->NumberOfFlippedPolygons = 0;
+  if (!input || input->GetNumberOfPoints() == 0)
+  {
+    return 1;
+  }
+  const vtkIdType bad = slFirstNonFinitePoint(input->GetPoints());
+  if (bad >= 0)
+  {
+    vtkErrorMacro(<< "point " << bad << " has a NaN or infinite coordinate");
+    return 0;
+  }
+  const vtkIdType others = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  if (others > 0)
+  {
+    vtkWarningMacro(<< others << " vertex and line cells are not polygons: passed through without normals");
+  }
+
+  Settings s;
+  s.weighting = static_cast<slnormals::Weighting>(this->Weighting);
+  s.featureAngle = this->FeatureAngle;
+  s.split = this->Splitting;
+  s.orient = this->Consistency;
+  s.outward = this->AutoOrientNormals;
+  s.weld = this->WeldCoincidentPoints;
+  s.pointNormals = this->ComputePointNormals;
+  s.cellNormals = this->ComputeCellNormals;
+
+  // Points as float or double; anything else is converted to double.
+  vtkSmartPointer<vtkDataArray> data = input->GetPoints()->GetData();
+  if (!vtkFloatArray::SafeDownCast(data) && !vtkDoubleArray::SafeDownCast(data))
+  {
+    auto converted = vtkSmartPointer<vtkDoubleArray>::New();
+    converted->DeepCopy(data);
+    data = converted;
+  }
+  std::string problem;
+  vtkIdType flipped = 0;
+  slDispatchStorage(input->GetPolys(), [&](auto id) {
+    using Id = decltype(id);
+    if (auto* f = vtkFloatArray::SafeDownCast(data))
+    {
+      NormalsJob<float, Id> job(s, input, output, f->GetPointer(0));
+      problem = job.Run(flipped);
+    }
+    else
+    {
+      NormalsJob<double, Id> job(s, input, output, vtkDoubleArray::SafeDownCast(data)->GetPointer(0));
+      problem = job.Run(flipped);
+    }
+    return 0;
+  });
+  if (!problem.empty())
+  {
+    output->Initialize();
+    vtkErrorMacro(<< problem);
+    return 0;
+  }
+  this->NumberOfFlippedPolygons = flipped;
+  output->GetFieldData()->PassData(input->GetFieldData());
+  return 1;
+}
+
+void slPolyDataNormals::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Weighting: " << GetWeightingName(this->Weighting) << "\n";
+  os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
+  os << indent << "Splitting: " << this->Splitting << "\n";
+  os << indent << "Consistency: " << this->Consistency << "\n";
+  os << indent << "AutoOrientNormals: " << this->AutoOrientNormals << "\n";
+  os << indent << "WeldCoincidentPoints: " << this->WeldCoincidentPoints << "\n";
+  os << indent << "ComputePointNormals: " << this->ComputePointNormals << "\n";
+  os << indent << "ComputeCellNormals: " << this->ComputeCellNormals << "\n";
+  os << indent << "NumberOfFlippedPolygons: " << this->NumberOfFlippedPolygons << "\n";
+}

@@ -1,0 +1,154 @@
+#ifndef slPolyDataNormals_h
+#define slPolyDataNormals_h
+/**
+ * @class   slPolyDataNormals
+ * @brief   Face and vertex normals with a choice of weighting, feature-angle
+ *          splitting and consistent orientation, in parallel.
+ *
+ * slPolyDataNormals computes a point array "Normals" (unit vertex normals)
+ * and, on request, a cell array "Normals" (unit face normals by Newell's
+ * method: exact for planar polygons of any vertex count).
+ *
+ * A vertex normal is the normalised sum of the unit normals of the polygons
+ * at the vertex, each times a weight chosen by SetWeighting():
+ * - Uniform: 1, as vtkPolyDataNormals;
+ * - Area: the polygon's area, as vtkTriangleMeshPointNormals;
+ * - Angle (the default; Thürmer & Wüthrich 1998): the polygon's angle at the
+ *   vertex. The result depends on the shape of the surface, not on how it
+ *   is cut into triangles: splitting a polygon in two leaves it unchanged,
+ *   while uniform and area weights change. docs/normals.md shows it beats
+ *   uniform and area weighting on irregular triangulations;
+ * - Max (Nelson Max 1999): sin θ / (|e1| |e2|); exact at the vertices of any
+ *   triangulated sphere, best on smooth, finely and evenly sampled surfaces,
+ *   but sensitive to long thin triangles.
+ *
+ * With Splitting on, points on edges whose dihedral angle exceeds
+ * FeatureAngle, and points on non-manifold edges, are duplicated (one copy
+ * per smooth group of polygons) so that sharp edges stay sharp; the copies
+ * carry the input point data. With Consistency on, polygons are reversed so
+ * that neighbours traverse shared edges in opposite directions;
+ * AutoOrientNormals further reverses closed surfaces whose signed volume is
+ * negative, so their normals point outward. WeldCoincidentPoints computes
+ * normals as if points with identical coordinates were one (unwelded patch
+ * seams then do not show as creases) while keeping the points, and so their
+ * texture coordinates, apart.
+ *
+ * Triangles, quads, n-gons and triangle strips are handled; strips are output
+ * as triangles. Vertex and line cells are passed through with a warning.
+ * Zero-area polygons contribute nothing and get a (0, 0, 0) face normal;
+ * points used by no polygon of non-zero area get a (0, 0, 0) normal. Input
+ * point and cell arrays are passed through (an input "Normals" is replaced).
+ *
+ * A point with a NaN or infinite coordinate gives an error and an empty
+ * output.
+ *
+ * @warning Meshes with 2^31 or more polygon corners are refused when
+ * Splitting, Consistency, AutoOrientNormals or WeldCoincidentPoints is on.
+ * Angles of non-convex polygon corners are taken as the convex angle.
+ *
+ * @sa vtkPolyDataNormals vtkTriangleMeshPointNormals slPolyDataTangents
+ */
+
+#include "ShadeLabNormalsModule.h"
+
+#include <vtkPolyDataAlgorithm.h>
+
+class SHADELABNORMALS_EXPORT slPolyDataNormals : public vtkPolyDataAlgorithm
+{
+public:
+  static slPolyDataNormals* New();
+  vtkTypeMacro(slPolyDataNormals, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum WeightingType
+  {
+    UNIFORM = 0,
+    AREA = 1,
+    ANGLE = 2,
+    MAX = 3
+  };
+
+  ///@{
+  /// How polygons' normals are weighted at a vertex. ANGLE by default.
+  vtkSetClampMacro(Weighting, int, UNIFORM, MAX);
+  vtkGetMacro(Weighting, int);
+  void SetWeightingToUniform() { this->SetWeighting(UNIFORM); }
+  void SetWeightingToArea() { this->SetWeighting(AREA); }
+  void SetWeightingToAngle() { this->SetWeighting(ANGLE); }
+  void SetWeightingToMax() { this->SetWeighting(MAX); }
+  static const char* GetWeightingName(int weighting);
+  ///@}
+
+  ///@{
+  /// Angle in degrees above which an edge is sharp. 30 by default.
+  vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
+  vtkGetMacro(FeatureAngle, double);
+  ///@}
+
+  ///@{
+  /// Duplicate points along sharp edges. On by default.
+  vtkSetMacro(Splitting, bool);
+  vtkGetMacro(Splitting, bool);
+  vtkBooleanMacro(Splitting, bool);
+  ///@}
+
+  ///@{
+  /// Orient polygons consistently across shared edges. On by default.
+  vtkSetMacro(Consistency, bool);
+  vtkGetMacro(Consistency, bool);
+  vtkBooleanMacro(Consistency, bool);
+  ///@}
+
+  ///@{
+  /// Make closed surfaces face outward (implies Consistency). Off by default.
+  vtkSetMacro(AutoOrientNormals, bool);
+  vtkGetMacro(AutoOrientNormals, bool);
+  vtkBooleanMacro(AutoOrientNormals, bool);
+  ///@}
+
+  ///@{
+  /// Treat points with identical coordinates as one. Off by default.
+  vtkSetMacro(WeldCoincidentPoints, bool);
+  vtkGetMacro(WeldCoincidentPoints, bool);
+  vtkBooleanMacro(WeldCoincidentPoints, bool);
+  ///@}
+
+  ///@{
+  /// Output the point array "Normals". On by default.
+  vtkSetMacro(ComputePointNormals, bool);
+  vtkGetMacro(ComputePointNormals, bool);
+  vtkBooleanMacro(ComputePointNormals, bool);
+  ///@}
+
+  ///@{
+  /// Output the cell array "Normals". Off by default.
+  vtkSetMacro(ComputeCellNormals, bool);
+  vtkGetMacro(ComputeCellNormals, bool);
+  vtkBooleanMacro(ComputeCellNormals, bool);
+  ///@}
+
+  /// Polygons reversed by the last update.
+  vtkGetMacro(NumberOfFlippedPolygons, vtkIdType);
+
+protected:
+  slPolyDataNormals();
+  ~slPolyDataNormals() override;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+private:
+  slPolyDataNormals(const slPolyDataNormals&) = delete;
+  void operator=(const slPolyDataNormals&) = delete;
+
+  int Weighting = ANGLE;
+  double FeatureAngle = 30.0;
+  bool Splitting = true;
+  bool Consistency = true;
+  bool AutoOrientNormals = false;
+  bool WeldCoincidentPoints = false;
+  bool ComputePointNormals = true;
+  bool ComputeCellNormals = false;
+  vtkIdType NumberOfFlippedPolygons = 0;
+};
+
+#endif

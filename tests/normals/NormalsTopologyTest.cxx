@@ -1,0 +1,381 @@
+// slPolyDataNormals: face normals, splitting, orientation, cell types,
+// degenerate and bad input, welding. Expected values are analytic.
+#include "NormalsTestMeshes.h"
+
+#include "slMeshReader.h"
+#include "slPolyDataNormals.h"
+
+#include <vtkCallbackCommand.h>
+#include <vtkCleanPolyData.h>
+#include <vtkCellData.h>
+#include <vtkCommand.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <algorithm>
+#include <functional>
+#include <map>
+
+namespace
+{
+using normalstest::Vec;
+
+vtkSmartPointer<vtkPolyData> mesh(const std::vector<Vec>& pts, const std::vector<std::vector<vtkIdType>>& polys)
+{
+  auto m = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  for (const Vec& p : pts)
+  {
+    points->InsertNextPoint(p.data());
+  }
+  vtkNew<vtkCellArray> cells;
+  for (const auto& c : polys)
+  {
+    cells->InsertNextCell(static_cast<vtkIdType>(c.size()), c.data());
+  }
+  m->SetPoints(points);
+  m->SetPolys(cells);
+  return m;
+}
+
+/// A unit cube [0,1]^3 of six outward quads.
+vtkSmartPointer<vtkPolyData> cube()
+{
+  return mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 0, 1 }, { 1, 1, 1 }, { 0, 1, 1 } },
+    { { 0, 3, 2, 1 }, { 4, 5, 6, 7 }, { 0, 1, 5, 4 }, { 2, 3, 7, 6 }, { 0, 4, 7, 3 }, { 1, 2, 6, 5 } });
+}
+
+vtkSmartPointer<vtkPolyData> icosphere(int levels)
+{
+  std::vector<Vec> pts;
+  std::vector<std::array<vtkIdType, 3>> tris;
+  normalstest::icosphere(levels, pts, tris);
+  return normalstest::makePolyData(pts, tris, pts);
+}
+
+struct Result
+{
+  vtkSmartPointer<vtkPolyData> out;
+  int errors = 0, warnings = 0;
+  vtkIdType flipped = 0;
+};
+
+Result run(vtkPolyData* input, const std::function<void(slPolyDataNormals*)>& configure = {})
+{
+  vtkNew<slPolyDataNormals> f;
+  f->SetInputData(input);
+  if (configure)
+  {
+    configure(f);
+  }
+  Result r;
+  vtkNew<vtkCallbackCommand> count;
+  count->SetClientData(&r);
+  count->SetCallback([](vtkObject*, unsigned long event, void* data, void*) {
+    auto* run = static_cast<Result*>(data);
+    (event == vtkCommand::ErrorEvent ? run->errors : run->warnings)++;
+  });
+  f->AddObserver(vtkCommand::ErrorEvent, count);
+  f->AddObserver(vtkCommand::WarningEvent, count);
+  f->Update();
+  r.out = f->GetOutput();
+  r.flipped = f->GetNumberOfFlippedPolygons();
+  return r;
+}
+
+Vec tuple(vtkDataArray* a, vtkIdType i)
+{
+  Vec v;
+  a->GetTuple(i, v.data());
+  return v;
+}
+
+void expectNear(const Vec& a, const Vec& b, double tol = 1e-6)
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    EXPECT_NEAR(a[k], b[k], tol) << "component " << k;
+  }
+}
+} // namespace
+
+TEST(Normals, NewellFaceNormalsForTrianglesAndNonConvexPolygons)
+{
+  // A non-convex hexagon ("L" shape) and a triangle in the plane x + 2y + 2z = 3.
+  const Vec n = { 1.0 / 3, 2.0 / 3, 2.0 / 3 };
+  const Vec u = normalstest::normalized({ 2, -1, 0 });
+  const Vec v = { n[1] * u[2] - n[2] * u[1], n[2] * u[0] - n[0] * u[2], n[0] * u[1] - n[1] * u[0] }; // n x u
+  std::vector<Vec> pts;
+  for (const auto& st : std::vector<std::array<double, 2>>{ { 0, 0 }, { 2, 0 }, { 2, 1 }, { 1, 1 }, { 1, 2 }, { 0, 2 } })
+  {
+    pts.push_back({ n[0] + st[0] * u[0] + st[1] * v[0], n[1] + st[0] * u[1] + st[1] * v[1],
+      n[2] + st[0] * u[2] + st[1] * v[2] });
+  }
+  Result r = run(mesh(pts, { { 0, 1, 2, 3, 4, 5 }, { 0, 1, 5 } }), [](slPolyDataNormals* f) {
+    f->ComputeCellNormalsOn();
+    f->ConsistencyOff(); // the two overlap, both anticlockwise about n
+  });
+  vtkDataArray* cn = r.out->GetCellData()->GetNormals();
+  ASSERT_NE(cn, nullptr);
+  EXPECT_STREQ(cn->GetName(), "Normals");
+  expectNear(tuple(cn, 0), n);
+  expectNear(tuple(cn, 1), n);
+}
+
+TEST(Normals, CubeSplitsAlongItsEdgesIntoTwentyFourPoints)
+{
+  Result r = run(cube());
+  ASSERT_EQ(r.out->GetNumberOfPoints(), 24);
+  vtkDataArray* normals = r.out->GetPointData()->GetNormals();
+  ASSERT_NE(normals, nullptr);
+  // Every corner's normal is the axis of its face: the outward direction
+  // from the cube's centre along the coordinate where the point is 0 or 1.
+  for (vtkIdType c = 0; c < r.out->GetNumberOfPolys(); ++c)
+  {
+    vtkNew<vtkIdList> ids;
+    r.out->GetPolys()->GetCellAtId(c, ids);
+    for (vtkIdType i = 0; i < ids->GetNumberOfIds(); ++i)
+    {
+      const Vec nv = tuple(normals, ids->GetId(i));
+      double p[3];
+      r.out->GetPoint(ids->GetId(i), p);
+      int axis = std::fabs(nv[0]) > 0.5 ? 0 : (std::fabs(nv[1]) > 0.5 ? 1 : 2);
+      Vec expected = { 0, 0, 0 };
+      expected[axis] = p[axis] > 0.5 ? 1 : -1;
+      expectNear(nv, expected);
+    }
+  }
+}
+
+TEST(Normals, CubeCornersAreDiagonalWhenEdgesAreSmoothAndAngleWeightingIgnoresTessellation)
+{
+  // Split the bottom quad (0,3,2,1) in two triangles: at corner 0 that face
+  // now has two 45 degree corners instead of one 90 degree corner.
+  vtkSmartPointer<vtkPolyData> m =
+    mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 0, 1 }, { 1, 1, 1 }, { 0, 1, 1 } },
+      { { 0, 3, 2 }, { 0, 2, 1 }, { 4, 5, 6, 7 }, { 0, 1, 5, 4 }, { 2, 3, 7, 6 }, { 0, 4, 7, 3 }, { 1, 2, 6, 5 } });
+  const double s = 1 / std::sqrt(3.0);
+  Result angle = run(m, [](slPolyDataNormals* f) { f->SetFeatureAngle(100); });
+  ASSERT_EQ(angle.out->GetNumberOfPoints(), 8);
+  expectNear(tuple(angle.out->GetPointData()->GetNormals(), 0), { -s, -s, -s });
+  // Uniform weighting counts the split face twice: (-1,-1,-2)/sqrt(6).
+  Result uniform = run(m, [](slPolyDataNormals* f) {
+    f->SetFeatureAngle(100);
+    f->SetWeightingToUniform();
+  });
+  const double t = 1 / std::sqrt(6.0);
+  expectNear(tuple(uniform.out->GetPointData()->GetNormals(), 0), { -t, -t, -2 * t });
+}
+
+TEST(Normals, SmoothEdgesStaySharedAndPointDataFollowsSplitPoints)
+{
+  Result sphere = run(icosphere(2));
+  EXPECT_EQ(sphere.out->GetNumberOfPoints(), icosphere(2)->GetNumberOfPoints());
+
+  vtkSmartPointer<vtkPolyData> c = cube();
+  vtkNew<vtkIntArray> label;
+  label->SetName("Label");
+  for (int i = 0; i < 8; ++i)
+  {
+    label->InsertNextValue(100 + i);
+  }
+  c->GetPointData()->AddArray(label);
+  Result r = run(c);
+  vtkDataArray* out = r.out->GetPointData()->GetArray("Label");
+  ASSERT_NE(out, nullptr);
+  for (vtkIdType i = 0; i < r.out->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    r.out->GetPoint(i, p);
+    const int expected = 100 + static_cast<int>(c->FindPoint(p));
+    EXPECT_EQ(out->GetTuple1(i), expected) << "point " << i;
+  }
+}
+
+TEST(Normals, ConsistencyReversesWronglyOrientedTrianglesAndAutoOrientTurnsOutward)
+{
+  vtkSmartPointer<vtkPolyData> s = icosphere(2);
+  auto reversed = [](vtkPolyData* m, const std::vector<vtkIdType>& which) {
+    vtkNew<vtkCellArray> cells;
+    vtkNew<vtkIdList> ids;
+    for (vtkIdType c = 0; c < m->GetNumberOfPolys(); ++c)
+    {
+      m->GetPolys()->GetCellAtId(c, ids);
+      if (which.empty() || std::find(which.begin(), which.end(), c) != which.end())
+      {
+        std::swap(ids->GetPointer(0)[1], ids->GetPointer(0)[2]);
+      }
+      cells->InsertNextCell(ids);
+    }
+    auto out = vtkSmartPointer<vtkPolyData>::New();
+    out->SetPoints(m->GetPoints());
+    out->SetPolys(cells);
+    return out;
+  };
+  auto outward = [](const Result& r) {
+    int inward = 0;
+    vtkDataArray* n = r.out->GetPointData()->GetNormals();
+    for (vtkIdType i = 0; i < r.out->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      r.out->GetPoint(i, p);
+      const Vec nv = tuple(n, i);
+      inward += p[0] * nv[0] + p[1] * nv[1] + p[2] * nv[2] < 0.9;
+    }
+    return inward == 0;
+  };
+  Result fixed = run(reversed(s, { 3, 17, 40, 41, 100 }));
+  EXPECT_EQ(fixed.flipped, 5);
+  EXPECT_TRUE(outward(fixed));
+
+  Result off = run(reversed(s, { 3, 17, 40, 41, 100 }), [](slPolyDataNormals* f) { f->ConsistencyOff(); });
+  EXPECT_EQ(off.flipped, 0);
+  EXPECT_FALSE(outward(off));
+
+  Result inverted = run(reversed(s, {}), [](slPolyDataNormals* f) { f->AutoOrientNormalsOn(); });
+  EXPECT_EQ(inverted.flipped, s->GetNumberOfPolys());
+  EXPECT_TRUE(outward(inverted));
+}
+
+TEST(Normals, StripsBecomeTrianglesWithTheStripsOrientation)
+{
+  auto m = mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 1, 1, 0 }, { 0, 2, 0 } }, {});
+  vtkNew<vtkCellArray> strips;
+  const vtkIdType ids[] = { 0, 1, 2, 3, 4 };
+  strips->InsertNextCell(5, ids);
+  m->SetStrips(strips);
+  vtkNew<vtkIntArray> tag;
+  tag->SetName("Tag");
+  tag->InsertNextValue(7);
+  m->GetCellData()->AddArray(tag);
+  Result r = run(m, [](slPolyDataNormals* f) { f->ComputeCellNormalsOn(); });
+  ASSERT_EQ(r.out->GetNumberOfPolys(), 3);
+  EXPECT_EQ(r.out->GetNumberOfStrips(), 0);
+  // (P1-P0) x (P2-P0) = +z for the strip's first triangle; all follow it.
+  for (vtkIdType c = 0; c < 3; ++c)
+  {
+    expectNear(tuple(r.out->GetCellData()->GetNormals(), c), { 0, 0, 1 });
+    EXPECT_EQ(r.out->GetCellData()->GetArray("Tag")->GetTuple1(c), 7);
+  }
+  for (vtkIdType p = 0; p < 5; ++p)
+  {
+    expectNear(tuple(r.out->GetPointData()->GetNormals(), p), { 0, 0, 1 });
+  }
+}
+
+TEST(Normals, ZeroAreaFacesAndIsolatedPointsGiveNoNaN)
+{
+  // Point 3 repeats point 1: triangle (1,2,3) has zero area. Point 4 is unused.
+  auto m = mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 1, 0, 0 }, { 5, 5, 5 } }, { { 0, 1, 2 }, { 1, 3, 2 } });
+  for (int w = 0; w < 4; ++w)
+  {
+    Result r = run(m, [w](slPolyDataNormals* f) {
+      f->SetWeighting(w);
+      f->ComputeCellNormalsOn();
+    });
+    EXPECT_EQ(r.errors, 0);
+    vtkDataArray* n = r.out->GetPointData()->GetNormals();
+    ASSERT_EQ(r.out->GetNumberOfPoints(), 5); // no sharp edge: points keep their ids
+    // Points 0-2 see the good triangle; point 3 only the degenerate one and
+    // point 4 nothing: both get (0,0,0).
+    const std::vector<Vec> expected = { { 0, 0, 1 }, { 0, 0, 1 }, { 0, 0, 1 }, { 0, 0, 0 }, { 0, 0, 0 } };
+    for (vtkIdType i = 0; i < 5; ++i)
+    {
+      expectNear(tuple(n, i), expected[static_cast<size_t>(i)]);
+    }
+    expectNear(tuple(r.out->GetCellData()->GetNormals(), 1), { 0, 0, 0 });
+  }
+}
+
+TEST(Normals, NonManifoldEdgesAreSplit)
+{
+  // Three triangles share the edge (0,1); each is its own smooth group there.
+  auto m = mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0.5, 1, 0 }, { 0.5, -1, 0.01 }, { 0.5, 0, 1 } },
+    { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 } });
+  Result r = run(m, [](slPolyDataNormals* f) {
+    f->ConsistencyOff();
+    f->SetFeatureAngle(180);
+  });
+  EXPECT_EQ(r.out->GetNumberOfPoints(), 3 + 3 + 3);
+}
+
+TEST(Normals, VerticesAndLinesPassThroughWithAWarning)
+{
+  auto m = cube();
+  vtkNew<vtkCellArray> verts, lines;
+  const vtkIdType v[] = { 6 }, l[] = { 0, 6 };
+  verts->InsertNextCell(1, v);
+  lines->InsertNextCell(2, l);
+  m->SetVerts(verts);
+  m->SetLines(lines);
+  Result r = run(m);
+  EXPECT_EQ(r.warnings, 1);
+  EXPECT_EQ(r.out->GetNumberOfVerts(), 1);
+  EXPECT_EQ(r.out->GetNumberOfLines(), 1);
+  EXPECT_EQ(r.out->GetNumberOfPolys(), 6);
+  vtkNew<vtkIdList> ids;
+  r.out->GetLines()->GetCellAtId(0, ids);
+  double p[3];
+  r.out->GetPoint(ids->GetId(1), p);
+  EXPECT_EQ(Vec({ p[0], p[1], p[2] }), Vec({ 1, 1, 1 }));
+}
+
+TEST(Normals, NaNCoordinatesGiveAnErrorAndAnEmptyOutput)
+{
+  for (double bad : { std::nan(""), HUGE_VAL })
+  {
+    auto m = mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, bad, 0 } }, { { 0, 1, 2 } });
+    Result r = run(m);
+    EXPECT_EQ(r.errors, 1);
+    EXPECT_EQ(r.out->GetNumberOfPoints(), 0);
+    EXPECT_EQ(r.out->GetNumberOfCells(), 0);
+  }
+}
+
+TEST(Normals, WeldingHidesTheTeapotsUnweldedSeams)
+{
+  // The teapot's patches repeat their seam points. Welding must give the
+  // normals of the mesh merged by VTK's own vtkCleanPolyData, while keeping
+  // every input point; without welding the seams show as creases.
+  vtkNew<slMeshReader> reader;
+  reader->SetFileName(SHADELAB_SHARED_DATA_DIR "/meshes/teapot.obj");
+  reader->MergeDuplicatePointsOff();
+  reader->Update();
+  vtkNew<vtkCleanPolyData> clean;
+  clean->SetInputData(reader->GetOutput());
+  clean->SetTolerance(0.0);
+  clean->Update();
+  ASSERT_GT(reader->GetOutput()->GetNumberOfPoints(), clean->GetOutput()->GetNumberOfPoints());
+  auto configure = [](bool weld) {
+    return [weld](slPolyDataNormals* f) {
+      f->SplittingOff();
+      f->ConsistencyOff();
+      f->SetWeldCoincidentPoints(weld);
+    };
+  };
+  Result welded = run(reader->GetOutput(), configure(true));
+  Result plain = run(reader->GetOutput(), configure(false));
+  Result reference = run(clean->GetOutput(), configure(false));
+  ASSERT_EQ(welded.out->GetNumberOfPoints(), reader->GetOutput()->GetNumberOfPoints());
+  double worstWelded = 0, worstPlain = 0;
+  for (vtkIdType i = 0; i < welded.out->GetNumberOfPoints(); ++i)
+  {
+    double p[3], q[3];
+    welded.out->GetPoint(i, p);
+    const vtkIdType j = reference.out->FindPoint(p);
+    reference.out->GetPoint(j, q);
+    ASSERT_EQ(Vec({ p[0], p[1], p[2] }), Vec({ q[0], q[1], q[2] }));
+    double a[3], b[3], c[3];
+    welded.out->GetPointData()->GetNormals()->GetTuple(i, a);
+    plain.out->GetPointData()->GetNormals()->GetTuple(i, b);
+    reference.out->GetPointData()->GetNormals()->GetTuple(j, c);
+    worstWelded = std::max(worstWelded, normalstest::angleDegrees(a, c));
+    worstPlain = std::max(worstPlain, normalstest::angleDegrees(b, c));
+  }
+  EXPECT_LT(worstWelded, 1e-3);
+  EXPECT_GT(worstPlain, 20.0);
+}
