@@ -257,3 +257,35 @@ SL_FUNC vec3 slTotal(slTerms t)
 {
   return t.ambient + t.diffuse + t.specular + t.emission;
 }
+
+// ---------------------------------------------------------------------------
+// Derived quantities for the CPU lighting filters (issue 4). Each is built on
+// the functions above, never a second copy of their formulas.
+
+// Below this cosine an incident direction counts as grazing: slBRDF returns 0
+// there rather than dividing by (almost) zero.
+const float SL_MIN_COS_THETA = 1.0e-6f;
+
+// The raw cosine N.L between the unit normal and the unit direction toward the
+// light, unclamped: negative where the surface faces away from the light (it
+// shadows itself). 0 for ambient lights, zero-length normals and a light at P.
+SL_FUNC float slCosTheta(slLight light, vec3 P, vec3 N)
+{
+  return dot(slSafeNormalize(N), slDirectionToLight(light, P));
+}
+
+// The BRDF value f_r(L, V) for unit N, L (toward the light) and V (toward the
+// eye): the reflection factors above are f_r cos(theta_i), so f_r is their
+// k_d / k_s weighted sum divided by N.L. For the lecture models this is the
+// "BRDF" they imply when read literally (k_d + k_s S / cos(theta_i)). Zero
+// where N.L <= SL_MIN_COS_THETA (light behind or grazing) and for zero vectors.
+SL_FUNC vec3 slBRDF(int model, slMaterial m, vec3 N, vec3 L, vec3 V)
+{
+  float cosTheta = dot(N, L);
+  if (cosTheta <= SL_MIN_COS_THETA)
+  {
+    return vec3(0.0f);
+  }
+  vec3 reflected = slDiffuseFactor(model, N, L) * m.diffuse + slSpecularFactor(model, N, L, V, m.shininess) * m.specular;
+  return reflected / cosTheta;
+}

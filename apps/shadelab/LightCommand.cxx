@@ -1,0 +1,70 @@
+// shadelab light MESH [--scene S.json] -o OUT.vtp
+#include "CommandLine.h"
+#include "Commands.h"
+#include "Inputs.h"
+#include "LightingOptions.h"
+
+#include "slImageReader.h"
+#include "slRadianceFilter.h"
+
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+
+#include <iostream>
+
+namespace shadelab
+{
+namespace app
+{
+
+namespace
+{
+int runLight(const std::vector<std::string>& args)
+{
+  std::vector<OptionSpec> specs = litOptions();
+  specs.push_back({ "per-light", "", "", "also write Radiance_<i> for every light i" });
+  specs.push_back({ "diffuse-array", "", "NAME", "an RGB(A) point array of MESH that stands in for k_d" });
+  specs.push_back({ "diffuse-texture", "", "FILE", "an image that stands in for k_d at the texture coordinates" });
+  const CommandLine cl(args, specs);
+  if (cl.has("help"))
+  {
+    std::cout << "usage: shadelab light MESH [--scene S.json] -o OUT.vtp\n\n"
+                 "Evaluates the lighting equation per point and writes the point arrays Ambient,\n"
+                 "Diffuse, Specular, Emission and Radiance (RGB, linear).\n"
+                 "MESH: " << meshFormatsText() << "; point normals are computed if missing.\n\noptions:\n"
+              << CommandLine::describe(specs);
+    return 0;
+  }
+  requireMeshAndOutput(cl);
+  vtkNew<slRadianceFilter> filter;
+  vtkSmartPointer<slScene> scene = configureLitFilter(cl, filter);
+  filter->SetPerLightArrays(cl.has("per-light"));
+  if (cl.has("diffuse-array"))
+  {
+    filter->SetDiffuseColorArrayName(cl.get("diffuse-array").c_str());
+  }
+  vtkNew<slImageReader> texture;
+  if (cl.has("diffuse-texture"))
+  {
+    texture->SetFileName(cl.get("diffuse-texture").c_str());
+    texture->Update();
+    if (*texture->GetErrorMessage())
+    {
+      throw JobError(texture->GetErrorMessage());
+    }
+    filter->SetDiffuseTexture(texture->GetOutput());
+  }
+  filter->SetInputData(loadMeshWithNormals(cl.positional()[0]));
+  runLitFilter(filter);
+  writeMesh(filter->GetOutput(), cl.get("output"));
+  std::cout << "wrote " << cl.get("output") << "\n";
+  return 0;
+}
+
+const CommandRegistration registration{ { 31, "light",
+  "write the lighting equation's terms (Ambient ... Radiance) as point arrays", &runLight } };
+} // namespace
+
+} // namespace app
+} // namespace shadelab

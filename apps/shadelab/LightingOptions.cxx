@@ -1,0 +1,79 @@
+#include "LightingOptions.h"
+
+#include "Inputs.h"
+#include "slLitFilter.h"
+#include "slScene.h"
+
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataNormals.h>
+
+namespace shadelab
+{
+namespace app
+{
+
+std::vector<OptionSpec> litOptions()
+{
+  return {
+    { "scene", "s", "FILE", "JSON scene (default: ShadeLab's built-in two-light scene)" },
+    { "model", "", "NAME", "override the scene's lighting model" },
+    { "output", "o", "FILE", "mesh to write (.vtp, .vtk, .ply, ...); arrays are kept in .vtp and .vtk" },
+    { "allow-zero-normals", "", "", "light zero-length normals as 'no direction' instead of failing" },
+    { "help", "h", "", "show this help" },
+  };
+}
+
+vtkSmartPointer<vtkPolyData> loadMeshWithNormals(const std::string& path)
+{
+  vtkSmartPointer<vtkPolyData> mesh = loadMesh(path);
+  if (mesh->GetNumberOfPoints() == 0)
+  {
+    throw JobError(path + ": the mesh is empty (no points)");
+  }
+  if (mesh->GetPointData()->GetNormals())
+  {
+    return mesh;
+  }
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputData(mesh);
+  normals->SplittingOff();
+  normals->ConsistencyOn();
+  normals->Update();
+  vtkSmartPointer<vtkPolyData> out = normals->GetOutput();
+  return out;
+}
+
+vtkSmartPointer<slScene> configureLitFilter(const CommandLine& cl, slLitFilter* filter)
+{
+  vtkSmartPointer<slScene> scene = loadScene(cl.get("scene"));
+  applySceneOverrides(cl, scene);
+  filter->SetScene(scene);
+  filter->SetZeroNormalsAreErrors(!cl.has("allow-zero-normals"));
+  return scene;
+}
+
+void runLitFilter(slLitFilter* filter)
+{
+  filter->Update();
+  if (*filter->GetErrorMessage())
+  {
+    throw JobError(filter->GetErrorMessage());
+  }
+}
+
+void requireMeshAndOutput(const CommandLine& cl)
+{
+  if (cl.positional().size() != 1)
+  {
+    throw UsageError("expected one MESH argument, got " + std::to_string(cl.positional().size()));
+  }
+  if (!cl.has("output"))
+  {
+    throw UsageError("missing -o/--output FILE");
+  }
+}
+
+} // namespace app
+} // namespace shadelab

@@ -1,0 +1,47 @@
+#ifndef shadelab_app_LightingOptions_h
+#define shadelab_app_LightingOptions_h
+/**
+ * @file LightingOptions.h
+ * @brief What the lighting subcommands (cosine, light, lobe, reference)
+ * share: their common options, loading a mesh with point normals, setting up
+ * an slLitFilter from a scene, and running a filter into a one-line error.
+ */
+
+#include "CommandLine.h"
+
+#include <vtkSmartPointer.h>
+
+#include <string>
+#include <vector>
+
+class slLitFilter;
+class slScene;
+class vtkAlgorithm;
+class vtkPolyData;
+
+namespace shadelab
+{
+namespace app
+{
+
+/// --scene, --model, --allow-zero-normals, -o, --help.
+std::vector<OptionSpec> litOptions();
+
+/// Reads MESH and gives it point normals if it has none.
+/// For now: vtkPolyDataNormals with splitting off (ShadeLab's own normals
+/// filter will take its place).
+vtkSmartPointer<vtkPolyData> loadMeshWithNormals(const std::string& path);
+
+/// Scene (with --model) and --allow-zero-normals onto @p filter; returns the scene.
+vtkSmartPointer<slScene> configureLitFilter(const CommandLine& cl, slLitFilter* filter);
+
+/// Updates @p filter; throws JobError with its one-line message on failure.
+void runLitFilter(slLitFilter* filter);
+
+/// The single MESH argument and -o; throws UsageError when either is missing.
+void requireMeshAndOutput(const CommandLine& cl);
+
+} // namespace app
+} // namespace shadelab
+
+#endif

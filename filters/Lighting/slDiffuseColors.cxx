@@ -1,0 +1,110 @@
+#include "slDiffuseColors.h"
+
+#include <vtkDataArray.h>
+#include <vtkImageData.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <cmath>
+
+namespace shadelab
+{
+
+namespace
+{
+/// The sRGB transfer function, inverted: encoded [0,1] -> linear.
+float srgbToLinear(float c)
+{
+  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
+/// Component @p c of tuple @p i as a linear colour value.
+float linearComponent(vtkDataArray* a, vtkIdType i, int c)
+{
+  const double v = a->GetComponent(i, c);
+  if (vtkUnsignedCharArray::SafeDownCast(a))
+  {
+    return srgbToLinear(static_cast<float>(v / 255.0));
+  }
+  return std::isfinite(v) ? static_cast<float>(v) : 0.0f;
+}
+
+glm::vec3 colourOf(vtkDataArray* a, vtkIdType i)
+{
+  const int n = a->GetNumberOfComponents();
+  if (n < 3)
+  {
+    return glm::vec3(linearComponent(a, i, 0)); // grey
+  }
+  return glm::vec3(linearComponent(a, i, 0), linearComponent(a, i, 1), linearComponent(a, i, 2));
+}
+
+float wrap(double t)
+{
+  return static_cast<float>(t - std::floor(t));
+}
+} // namespace
+
+std::string diffuseFromArray(vtkPolyData* mesh, const std::string& arrayName, std::vector<glm::vec3>& out)
+{
+  vtkDataArray* a = mesh->GetPointData()->GetArray(arrayName.c_str());
+  if (!a)
+  {
+    return "input mesh: no point array \"" + arrayName + "\" for the diffuse colour";
+  }
+  if (a->GetNumberOfComponents() != 3 && a->GetNumberOfComponents() != 4)
+  {
+    return "input mesh: point array \"" + arrayName + "\" has " + std::to_string(a->GetNumberOfComponents()) +
+      " components; a diffuse colour needs 3 (RGB) or 4 (RGBA)";
+  }
+  out.resize(static_cast<size_t>(mesh->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    out[static_cast<size_t>(i)] = colourOf(a, i);
+  }
+  return "";
+}
+
+std::string diffuseFromTexture(vtkPolyData* mesh, vtkImageData* texture, std::vector<glm::vec3>& out)
+{
+  vtkDataArray* uv = mesh->GetPointData()->GetTCoords();
+  if (!uv || uv->GetNumberOfComponents() < 2)
+  {
+    return "input mesh: a diffuse texture needs point texture coordinates, and the mesh has none";
+  }
+  vtkDataArray* pixels = texture ? texture->GetPointData()->GetScalars() : nullptr;
+  int dims[3] = { 0, 0, 0 };
+  if (texture)
+  {
+    texture->GetDimensions(dims);
+  }
+  if (!pixels || dims[0] < 1 || dims[1] < 1)
+  {
+    return "diffuse texture: the image is empty";
+  }
+  out.resize(static_cast<size_t>(mesh->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    // Bilinear lookup with repeat wrapping, texel centres at (k + 0.5) / size.
+    const float x = wrap(uv->GetComponent(i, 0)) * dims[0] - 0.5f;
+    const float y = wrap(uv->GetComponent(i, 1)) * dims[1] - 0.5f;
+    const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
+    const float fx = x - x0, fy = y - y0;
+    glm::vec3 sum(0.0f);
+    for (int dy = 0; dy < 2; ++dy)
+    {
+      for (int dx = 0; dx < 2; ++dx)
+      {
+        const int px = ((x0 + dx) % dims[0] + dims[0]) % dims[0];
+        const int py = ((y0 + dy) % dims[1] + dims[1]) % dims[1];
+        const float w = (dx ? fx : 1.0f - fx) * (dy ? fy : 1.0f - fy);
+        sum += w * colourOf(pixels, static_cast<vtkIdType>(py) * dims[0] + px);
+      }
+    }
+    out[static_cast<size_t>(i)] = sum;
+  }
+  return "";
+}
+
+} // namespace shadelab

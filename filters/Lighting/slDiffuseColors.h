@@ -1,0 +1,34 @@
+#ifndef slDiffuseColors_h
+#define slDiffuseColors_h
+/**
+ * @file slDiffuseColors.h
+ * @brief Internal: per-point k_d from an RGB(A) point array or from a texture
+ * looked up at the points' texture coordinates. Not wrapped.
+ *
+ * 8-bit colours are taken as sRGB-encoded and decoded to linear values;
+ * float colours are taken as linear. Textures are sampled bilinearly with
+ * repeat wrapping; texture row 0 is the bottom (as slImageReader gives it).
+ */
+
+#include <glm/glm.hpp>
+
+#include <string>
+#include <vector>
+
+class vtkImageData;
+class vtkPolyData;
+
+namespace shadelab
+{
+
+/// Fills @p out with one k_d per point of @p mesh from the point array
+/// @p arrayName. Returns "" or a one-line reason.
+std::string diffuseFromArray(vtkPolyData* mesh, const std::string& arrayName, std::vector<glm::vec3>& out);
+
+/// Fills @p out from @p texture at the mesh's point texture coordinates.
+/// Returns "" or a one-line reason.
+std::string diffuseFromTexture(vtkPolyData* mesh, vtkImageData* texture, std::vector<glm::vec3>& out);
+
+} // namespace shadelab
+
+#endif

@@ -1,0 +1,116 @@
+#include "slLitFilter.h"
+
+#include "slFloat3View.h"
+#include "slLightingSetup.h"
+#include "slScene.h"
+
+#include <vtkCamera.h>
+#include <vtkDataArray.h>
+#include <vtkLightCollection.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkProperty.h>
+#include <vtkSMPTools.h>
+
+#include <atomic>
+
+
+vtkCxxSetObjectMacro(slLitFilter, Scene, slScene);
+vtkCxxSetObjectMacro(slLitFilter, Lights, vtkLightCollection);
+vtkCxxSetObjectMacro(slLitFilter, Property, vtkProperty);
+vtkCxxSetObjectMacro(slLitFilter, Camera, vtkCamera);
+
+slLitFilter::slLitFilter() = default;
+
+slLitFilter::~slLitFilter()
+{
+  this->SetScene(nullptr);
+  this->SetLights(nullptr);
+  this->SetProperty(nullptr);
+  this->SetCamera(nullptr);
+}
+
+vtkMTimeType slLitFilter::GetMTime()
+{
+  vtkMTimeType t = this->Superclass::GetMTime();
+  for (vtkObject* o : { static_cast<vtkObject*>(this->Scene), static_cast<vtkObject*>(this->Lights),
+         static_cast<vtkObject*>(this->Property), static_cast<vtkObject*>(this->Camera) })
+  {
+    if (o && o->GetMTime() > t)
+    {
+      t = o->GetMTime();
+    }
+  }
+  return t;
+}
+
+int slLitFilter::Fail(vtkPolyData* output, const std::string& message)
+{
+  this->ErrorMessage = message;
+  if (output)
+  {
+    output->Initialize();
+  }
+  vtkErrorMacro(<< message);
+  return 0;
+}
+
+bool slLitFilter::PrepareLighting(
+  vtkPolyData* input, vtkPolyData* output, bool needLight, shadelab::LightingSetup& setup)
+{
+  if (!input || input->GetNumberOfPoints() == 0)
+  {
+    this->Fail(output, "input mesh: it is empty (no points)");
+    return false;
+  }
+  vtkDataArray* normals = input->GetPointData()->GetNormals();
+  if (!normals || normals->GetNumberOfComponents() != 3)
+  {
+    this->Fail(output, "input mesh: it has no point normals (3-component Normals array); compute them first");
+    return false;
+  }
+  if (this->ZeroNormalsAreErrors)
+  {
+    // The first point whose normal has no direction, found in parallel.
+    const shadelab::Float3View view(normals);
+    const vtkIdType n = normals->GetNumberOfTuples();
+    std::atomic<vtkIdType> firstBad(n);
+    vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end && i < firstBad.load(); ++i)
+      {
+        const float length = glm::length(view[i]);
+        if (!(length > 1e-20f && length < 3.0e38f))
+        {
+          vtkIdType current = firstBad.load();
+          while (i < current && !firstBad.compare_exchange_weak(current, i))
+          {
+          }
+          return;
+        }
+      }
+    });
+    if (firstBad.load() < n)
+    {
+      this->Fail(output, "input mesh: point " + std::to_string(firstBad.load()) + " of " + std::to_string(n) +
+          " has a zero-length or non-finite normal (ZeroNormalsAreErrors is on)");
+      return false;
+    }
+  }
+  setup = shadelab::makeLightingSetup(this->Scene, this->Lights, this->Property, this->Camera, input->GetBounds());
+  if (needLight && setup.lights.empty())
+  {
+    this->Fail(output, "scene: it has no lights");
+    return false;
+  }
+  return true;
+}
+
+void slLitFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Scene: " << this->Scene << "\n";
+  os << indent << "Lights: " << this->Lights << "\n";
+  os << indent << "Property: " << this->Property << "\n";
+  os << indent << "Camera: " << this->Camera << "\n";
+  os << indent << "ZeroNormalsAreErrors: " << this->ZeroNormalsAreErrors << "\n";
+}

@@ -1,0 +1,122 @@
+#ifndef slLitFilter_h
+#define slLitFilter_h
+/**
+ * @class   slLitFilter
+ * @brief   Base of the ShadeLab filters that light a mesh: where the lights,
+ *          material, lighting model and eye come from, and the input checks
+ *          they share.
+ *
+ * The lighting comes from an slScene (SetScene(); ShadeLab's default scene
+ * when none is set) and/or VTK's own objects: SetLights() takes a renderer's
+ * vtkLightCollection, SetProperty() a vtkProperty for the material and
+ * SetCamera() a vtkCamera for the eye. Each VTK object that is set replaces
+ * the corresponding part of the scene, converted by slScene (so a VTK user's
+ * existing lights just work, camera and headlights included). A scene camera
+ * without a position is fitted to the input's bounds as slScene::ApplyCamera()
+ * does.
+ *
+ * Input checks, each giving vtkErrorMacro, an empty output and a one-line
+ * reason in GetErrorMessage(): an input without points, without point
+ * normals, with a zero-length or non-finite point normal (unless
+ * ZeroNormalsAreErrors is off: such points then get no direction-dependent
+ * light), and a scene without lights where the subclass needs one.
+ *
+ * @warning Subclasses never restate a lighting formula: they evaluate
+ * slLighting.glsl through shadelab/LightingGLSL.h.
+ *
+ * @sa slScene slRadianceFilter slCosineField slLobesOnMesh slRadianceReference
+ */
+
+#include "ShadeLabLightingModule.h"
+
+#include <vtkPolyDataAlgorithm.h>
+
+#include <string>
+
+class slScene;
+class vtkCamera;
+class vtkLightCollection;
+class vtkProperty;
+
+#ifndef __VTK_WRAP__
+namespace shadelab
+{
+struct LightingSetup;
+}
+#endif
+
+class SHADELABLIGHTING_EXPORT slLitFilter : public vtkPolyDataAlgorithm
+{
+public:
+  vtkTypeMacro(slLitFilter, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// The scene: lights, material, model and camera. Null: the default scene.
+  virtual void SetScene(slScene* scene);
+  vtkGetObjectMacro(Scene, slScene);
+  ///@}
+
+  ///@{
+  /// VTK's own lights (e.g. renderer->GetLights()); replace the scene's lights.
+  virtual void SetLights(vtkLightCollection* lights);
+  vtkGetObjectMacro(Lights, vtkLightCollection);
+  ///@}
+
+  ///@{
+  /// A vtkProperty that replaces the scene's material.
+  virtual void SetProperty(vtkProperty* property);
+  vtkGetObjectMacro(Property, vtkProperty);
+  ///@}
+
+  ///@{
+  /// A vtkCamera whose position is the eye (and which places camera lights).
+  virtual void SetCamera(vtkCamera* camera);
+  vtkGetObjectMacro(Camera, vtkCamera);
+  ///@}
+
+  ///@{
+  /// Whether a zero-length or non-finite point normal is an error (default)
+  /// or lit as "no direction" (ambient and emission only, CosTheta 0).
+  vtkSetMacro(ZeroNormalsAreErrors, bool);
+  vtkGetMacro(ZeroNormalsAreErrors, bool);
+  vtkBooleanMacro(ZeroNormalsAreErrors, bool);
+  ///@}
+
+  /// The reason the last update failed, or "" after success.
+  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
+
+  vtkMTimeType GetMTime() override;
+
+protected:
+  slLitFilter();
+  ~slLitFilter() override;
+
+#ifndef __VTK_WRAP__
+  /// Checks @p input and gathers the lighting; on failure reports through
+  /// Fail() (emptying @p output) and returns false. @p needLight: a scene without lights fails.
+  bool PrepareLighting(
+    vtkPolyData* input, vtkPolyData* output, bool needLight, shadelab::LightingSetup& setup);
+#endif
+
+  /// Records @p message (one line), reports it with vtkErrorMacro and empties
+  /// @p output. Returns 0 for RequestData to return.
+  int Fail(vtkPolyData* output, const std::string& message);
+
+  /// Clears the error message; call first in RequestData.
+  void ClearError() { this->ErrorMessage.clear(); }
+
+  slScene* Scene = nullptr;
+  vtkLightCollection* Lights = nullptr;
+  vtkProperty* Property = nullptr;
+  vtkCamera* Camera = nullptr;
+  bool ZeroNormalsAreErrors = true;
+
+private:
+  slLitFilter(const slLitFilter&) = delete;
+  void operator=(const slLitFilter&) = delete;
+
+  std::string ErrorMessage;
+};
+
+#endif

@@ -1,0 +1,129 @@
+#include "slRadianceFilter.h"
+
+#include "slDiffuseColors.h"
+#include "slFloat3View.h"
+#include "slLightingSetup.h"
+#include "slRadianceKernel.h"
+
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkSMPTools.h>
+#include <vtkSmartPointer.h>
+
+#include <vector>
+
+vtkStandardNewMacro(slRadianceFilter);
+vtkCxxSetObjectMacro(slRadianceFilter, DiffuseTexture, vtkImageData);
+
+namespace
+{
+vtkSmartPointer<vtkFloatArray> rgbArray(const std::string& name, vtkIdType n)
+{
+  auto a = vtkSmartPointer<vtkFloatArray>::New();
+  a->SetName(name.c_str());
+  a->SetNumberOfComponents(3);
+  a->SetNumberOfTuples(n);
+  return a;
+}
+} // namespace
+
+slRadianceFilter::slRadianceFilter() = default;
+
+slRadianceFilter::~slRadianceFilter()
+{
+  this->SetDiffuseColorArrayName(nullptr);
+  this->SetDiffuseTexture(nullptr);
+}
+
+vtkMTimeType slRadianceFilter::GetMTime()
+{
+  vtkMTimeType t = this->Superclass::GetMTime();
+  if (this->DiffuseTexture && this->DiffuseTexture->GetMTime() > t)
+  {
+    t = this->DiffuseTexture->GetMTime();
+  }
+  return t;
+}
+
+int slRadianceFilter::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  using namespace shadelab;
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  this->ClearError();
+  LightingSetup setup;
+  if (!this->PrepareLighting(input, output, true, setup))
+  {
+    return 0;
+  }
+  std::vector<glm::vec3> diffuse;
+  std::string problem;
+  if (this->DiffuseColorArrayName && *this->DiffuseColorArrayName)
+  {
+    problem = diffuseFromArray(input, this->DiffuseColorArrayName, diffuse);
+  }
+  else if (this->DiffuseTexture)
+  {
+    problem = diffuseFromTexture(input, this->DiffuseTexture, diffuse);
+  }
+  if (!problem.empty())
+  {
+    return this->Fail(output, problem);
+  }
+
+  output->ShallowCopy(input);
+  const vtkIdType n = input->GetNumberOfPoints();
+  const Float3View points(input->GetPoints()->GetData());
+  const Float3View normals(input->GetPointData()->GetNormals());
+  auto ambient = rgbArray("Ambient", n), diffuseOut = rgbArray("Diffuse", n), specular = rgbArray("Specular", n),
+       emission = rgbArray("Emission", n), radiance = rgbArray("Radiance", n);
+  std::vector<vtkSmartPointer<vtkFloatArray>> perLight;
+  RadianceKernelOutput out;
+  if (this->PerLightArrays)
+  {
+    for (size_t l = 0; l < setup.lights.size(); ++l)
+    {
+      perLight.push_back(rgbArray("Radiance_" + std::to_string(l), n));
+      out.perLight.push_back(perLight.back()->GetPointer(0));
+    }
+  }
+  out.ambient = ambient->GetPointer(0);
+  out.diffuse = diffuseOut->GetPointer(0);
+  out.specular = specular->GetPointer(0);
+  out.emission = emission->GetPointer(0);
+  out.radiance = radiance->GetPointer(0);
+  RadianceKernelInput in;
+  in.points = points.data();
+  in.normals = normals.data();
+  in.diffuse = diffuse.empty() ? nullptr : &diffuse[0].x;
+  in.lights = setup.lights;
+  in.material = setup.material;
+  in.model = setup.model;
+  in.eye = setup.eye;
+  vtkSMPTools::For(0, n, 1024, [&](vtkIdType begin, vtkIdType end) { shadeRange(in, out, begin, end); });
+
+  vtkPointData* pd = output->GetPointData();
+  for (vtkFloatArray* a : { ambient.Get(), diffuseOut.Get(), specular.Get(), emission.Get(), radiance.Get() })
+  {
+    pd->AddArray(a);
+  }
+  for (const auto& a : perLight)
+  {
+    pd->AddArray(a);
+  }
+  return 1;
+}
+
+void slRadianceFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "PerLightArrays: " << this->PerLightArrays << "\n";
+  os << indent << "DiffuseColorArrayName: " << (this->DiffuseColorArrayName ? this->DiffuseColorArrayName : "(none)")
+     << "\n";
+  os << indent << "DiffuseTexture: " << this->DiffuseTexture << "\n";
+}

@@ -1,0 +1,81 @@
+#ifndef slRadianceFilter_h
+#define slRadianceFilter_h
+/**
+ * @class   slRadianceFilter
+ * @brief   The whole lighting equation evaluated per point: point arrays
+ *          Ambient, Diffuse, Specular, Emission and Radiance (RGB float,
+ *          linear), optionally one Radiance_<i> array per light.
+ *
+ * Each point is shaded with its point normal, seen from the eye, under every
+ * light of the scene (or of VTK's own lights, see slLitFilter), by
+ * slShadeLight() from slLighting.glsl, the same code the GPU render pass
+ * runs. Radiance = Ambient + Diffuse + Specular + Emission; emission is the
+ * material's k_e, added once.
+ *
+ * k_d can come from the mesh instead of the material: an RGB(A) point array
+ * (SetDiffuseColorArrayName()) or a texture sampled at the point texture
+ * coordinates (SetDiffuseTexture()). 8-bit colours are decoded from sRGB to
+ * linear, float colours are used as they are. The array wins if both are set.
+ *
+ * Input arrays are passed through. The loop over points runs in parallel with
+ * vtkSMPTools.
+ *
+ * @warning This is per-vertex (Gouraud-style) lighting; no shadows and no
+ * interreflection: it is the local lighting equation, light by light.
+ * Per-light arrays hold ambient + diffuse + specular of that light.
+ *
+ * @sa slLitFilter slCosineField slRadianceReference slScene
+ */
+
+#include "ShadeLabLightingModule.h"
+#include "slLitFilter.h"
+
+#include <string>
+
+class vtkImageData;
+
+class SHADELABLIGHTING_EXPORT slRadianceFilter : public slLitFilter
+{
+public:
+  static slRadianceFilter* New();
+  vtkTypeMacro(slRadianceFilter, slLitFilter);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// Also write Radiance_<i> (ambient + diffuse + specular of light i). Off by default.
+  vtkSetMacro(PerLightArrays, bool);
+  vtkGetMacro(PerLightArrays, bool);
+  vtkBooleanMacro(PerLightArrays, bool);
+  ///@}
+
+  ///@{
+  /// Name of an RGB(A) point array that stands in for k_d; "" (default): none.
+  vtkSetStringMacro(DiffuseColorArrayName);
+  vtkGetStringMacro(DiffuseColorArrayName);
+  ///@}
+
+  ///@{
+  /// A texture (e.g. from slImageReader) that stands in for k_d, looked up at
+  /// the point texture coordinates. Null (default): none.
+  virtual void SetDiffuseTexture(vtkImageData* image);
+  vtkGetObjectMacro(DiffuseTexture, vtkImageData);
+  ///@}
+
+  vtkMTimeType GetMTime() override;
+
+protected:
+  slRadianceFilter();
+  ~slRadianceFilter() override;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+private:
+  slRadianceFilter(const slRadianceFilter&) = delete;
+  void operator=(const slRadianceFilter&) = delete;
+
+  bool PerLightArrays = false;
+  char* DiffuseColorArrayName = nullptr;
+  vtkImageData* DiffuseTexture = nullptr;
+};
+
+#endif

@@ -1,0 +1,118 @@
+// slCosineField: N.L per point and per cell against dot products computed here.
+#include "LightingTestMeshes.h"
+
+#include "slCosineField.h"
+
+#include <vtkCellData.h>
+#include <vtkIdList.h>
+
+#include <gtest/gtest.h>
+
+using namespace shadelab;
+using namespace shadelab::test;
+
+namespace
+{
+double value(vtkFieldData* data, const char* name, vtkIdType i)
+{
+  vtkDataArray* a = data->GetArray(name);
+  return a ? a->GetComponent(i, 0) : NAN;
+}
+
+/// N.L with L toward @p light from @p p, in double precision.
+double cosineToPoint(const double p[3], const double n[3], const glm::vec3& light)
+{
+  double L[3] = { light.x - p[0], light.y - p[1], light.z - p[2] };
+  const double ll = std::sqrt(L[0] * L[0] + L[1] * L[1] + L[2] * L[2]);
+  const double nl = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  return (n[0] * L[0] + n[1] * L[1] + n[2] * L[2]) / (ll * nl);
+}
+} // namespace
+
+TEST(CosineField, PointLightCosineChangesFromPointToPoint)
+{
+  SceneLight light = whiteLight(LightType::Point);
+  light.position = glm::vec3(0.5f, 2.0f, 0.0f);
+  vtkNew<slCosineField> filter;
+  filter->SetScene(makeScene({ light }, ShadingModel::Lambert));
+  filter->SetLightIndex(0);
+  vtkSmartPointer<vtkPolyData> mesh = sphere(16);
+  filter->SetInputData(mesh);
+  filter->Update();
+  ASSERT_STREQ(filter->GetErrorMessage(), "");
+  vtkPolyData* out = filter->GetOutput();
+  int negative = 0;
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double p[3], n[3];
+    mesh->GetPoint(i, p);
+    mesh->GetPointData()->GetNormals()->GetTuple(i, n);
+    const double expected = cosineToPoint(p, n, light.position);
+    EXPECT_NEAR(value(out->GetPointData(), "CosThetaRaw", i), expected, 1e-5);
+    EXPECT_NEAR(value(out->GetPointData(), "CosTheta", i), std::max(0.0, expected), 1e-5);
+    negative += expected < -0.1 ? 1 : 0;
+  }
+  EXPECT_GT(negative, 10) << "the far side of the sphere shadows itself";
+
+  // Cells: the polygon's own normal at its vertex centroid.
+  ASSERT_NE(out->GetCellData()->GetArray("CosThetaRaw"), nullptr);
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    mesh->GetCellPoints(c, ids);
+    ASSERT_EQ(ids->GetNumberOfIds(), 3);
+    double p[3][3];
+    for (int k = 0; k < 3; ++k)
+    {
+      mesh->GetPoint(ids->GetId(k), p[k]);
+    }
+    const double e1[3] = { p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2] };
+    const double e2[3] = { p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2] };
+    const double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0] };
+    const double centre[3] = { (p[0][0] + p[1][0] + p[2][0]) / 3, (p[0][1] + p[1][1] + p[2][1]) / 3,
+      (p[0][2] + p[1][2] + p[2][2]) / 3 };
+    if (std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) < 1e-9)
+    {
+      continue;
+    }
+    EXPECT_NEAR(value(out->GetCellData(), "CosThetaRaw", c), cosineToPoint(centre, n, light.position), 1e-4) << c;
+  }
+}
+
+TEST(CosineField, OneArrayPerLightAndDirectionalIsConstantDirection)
+{
+  SceneLight a = whiteLight(LightType::Directional);
+  a.direction = glm::vec3(0.0f, 0.0f, -2.0f); // from +z
+  SceneLight spot = whiteLight(LightType::Spot);
+  spot.position = glm::vec3(3.0f, 0.0f, 0.0f);
+  spot.direction = glm::vec3(-1.0f, 0.0f, 0.0f);
+  vtkNew<slCosineField> filter;
+  filter->SetScene(makeScene({ a, spot }, ShadingModel::Lambert));
+  vtkSmartPointer<vtkPolyData> mesh = sphere(10);
+  filter->SetInputData(mesh);
+  filter->Update();
+  vtkPolyData* out = filter->GetOutput();
+  ASSERT_NE(out->GetPointData()->GetArray("CosTheta_0"), nullptr);
+  ASSERT_NE(out->GetPointData()->GetArray("CosThetaRaw_1"), nullptr);
+  EXPECT_EQ(out->GetPointData()->GetArray("CosTheta"), nullptr);
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double p[3], n[3];
+    mesh->GetPoint(i, p);
+    mesh->GetPointData()->GetNormals()->GetTuple(i, n);
+    EXPECT_NEAR(value(out->GetPointData(), "CosThetaRaw_0", i), n[2] / std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]), 1e-5);
+    EXPECT_NEAR(value(out->GetPointData(), "CosThetaRaw_1", i), cosineToPoint(p, n, spot.position), 1e-5);
+  }
+}
+
+TEST(CosineField, LightIndexOutOfRangeIsAnError)
+{
+  vtkNew<slCosineField> filter;
+  filter->SetScene(makeScene({ whiteLight(LightType::Directional) }, ShadingModel::Lambert));
+  filter->SetLightIndex(3);
+  filter->SetGlobalWarningDisplay(0);
+  filter->SetInputData(sphere(6));
+  filter->Update();
+  EXPECT_STREQ(filter->GetErrorMessage(), "LightIndex 3 is out of range: the scene has 1 lights");
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+}

@@ -1,0 +1,109 @@
+// Bad input to the lighting filters: one-line errors, empty outputs, and
+// never a NaN in any output array (degenerate meshes).
+#include "LightingTestMeshes.h"
+
+#include "slCosineField.h"
+#include "slRadianceFilter.h"
+
+#include <vtkPointData.h>
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+using namespace shadelab;
+using namespace shadelab::test;
+
+namespace
+{
+SceneLight someLight()
+{
+  SceneLight l = whiteLight(LightType::Point);
+  l.position = glm::vec3(1.0f, 1.0f, 1.0f);
+  return l;
+}
+
+/// Degenerate geometry: a zero normal, a NaN normal, an infinite normal, a
+/// point at the light's position, a point at the eye, coincident points.
+vtkSmartPointer<vtkPolyData> degenerateMesh()
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  return pointsWithNormals({ { 0, 0, 0, 0, 0, 0 }, { 0, 0, 0, nan, 0, 1 }, { 0, 0, 0, inf, 0, 0 },
+    { 1, 1, 1, 0, 0, 1 }, { 0, 0, 10, 0, 0, 1 }, { 0.5, 0.5, 0.5, 1e-30, 0, 0 } });
+}
+
+template <typename Filter>
+void expectError(vtkPolyData* mesh, vtkSmartPointer<slScene> scene, const std::string& message)
+{
+  vtkNew<Filter> filter;
+  filter->SetScene(scene);
+  filter->SetInputData(mesh);
+  filter->SetGlobalWarningDisplay(0);
+  filter->Update();
+  EXPECT_EQ(filter->GetErrorMessage(), message);
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+}
+} // namespace
+
+TEST(LightingBadInput, EmptyMesh)
+{
+  vtkNew<vtkPolyData> empty;
+  expectError<slRadianceFilter>(empty, makeScene({ someLight() }, ShadingModel::Phong), "input mesh: it is empty (no points)");
+  expectError<slCosineField>(empty, makeScene({ someLight() }, ShadingModel::Phong), "input mesh: it is empty (no points)");
+}
+
+TEST(LightingBadInput, NoNormals)
+{
+  vtkSmartPointer<vtkPolyData> mesh = sphere(6);
+  mesh->GetPointData()->SetNormals(nullptr);
+  expectError<slRadianceFilter>(mesh, makeScene({ someLight() }, ShadingModel::Phong),
+    "input mesh: it has no point normals (3-component Normals array); compute them first");
+}
+
+TEST(LightingBadInput, ZeroLengthNormal)
+{
+  expectError<slRadianceFilter>(degenerateMesh(), makeScene({ someLight() }, ShadingModel::Phong),
+    "input mesh: point 0 of 6 has a zero-length or non-finite normal (ZeroNormalsAreErrors is on)");
+  expectError<slCosineField>(degenerateMesh(), makeScene({ someLight() }, ShadingModel::Phong),
+    "input mesh: point 0 of 6 has a zero-length or non-finite normal (ZeroNormalsAreErrors is on)");
+}
+
+TEST(LightingBadInput, NoLight)
+{
+  expectError<slRadianceFilter>(sphere(6), makeScene({}, ShadingModel::Phong), "scene: it has no lights");
+  expectError<slCosineField>(sphere(6), makeScene({}, ShadingModel::Phong), "scene: it has no lights");
+}
+
+TEST(LightingBadInput, DegenerateMeshGivesNoNaN)
+{
+  SceneLight spot = whiteLight(LightType::Spot);
+  spot.position = glm::vec3(0.0f);
+  spot.direction = glm::vec3(0.0f);
+  SceneLight ambient = whiteLight(LightType::Ambient);
+  ambient.ambient = glm::vec3(1.0f);
+  for (int model = 0; model < 6; ++model)
+  {
+    vtkSmartPointer<slScene> scene =
+      makeScene({ someLight(), spot, ambient }, static_cast<ShadingModel>(model), glm::vec3(0.0f, 0.0f, 10.0f));
+    vtkNew<slRadianceFilter> radiance;
+    radiance->SetScene(scene);
+    radiance->ZeroNormalsAreErrorsOff();
+    radiance->PerLightArraysOn();
+    radiance->SetInputData(degenerateMesh());
+    radiance->Update();
+    EXPECT_STREQ(radiance->GetErrorMessage(), "");
+    EXPECT_TRUE(allFinite(radiance->GetOutput())) << model;
+    // A zero normal gets ambient and emission only.
+    EXPECT_NEAR(tuple3(radiance->GetOutput(), "Diffuse", 0)[0], 0.0, 0.0);
+    EXPECT_GT(tuple3(radiance->GetOutput(), "Ambient", 0)[0], 0.0);
+
+    vtkNew<slCosineField> cosine;
+    cosine->SetScene(scene);
+    cosine->ZeroNormalsAreErrorsOff();
+    cosine->SetInputData(degenerateMesh());
+    cosine->Update();
+    EXPECT_STREQ(cosine->GetErrorMessage(), "");
+    EXPECT_TRUE(allFinite(cosine->GetOutput())) << model;
+  }
+}

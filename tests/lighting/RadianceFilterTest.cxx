@@ -1,0 +1,236 @@
+// slRadianceFilter against the lighting equation evaluated by hand.
+#include "LightingTestMeshes.h"
+
+#include "shadelab/ShadePoint.h"
+#include "slRadianceFilter.h"
+
+#include <vtkCamera.h>
+#include <vtkImageData.h>
+#include <vtkLight.h>
+#include <vtkLightCollection.h>
+#include <vtkProperty.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace shadelab;
+using namespace shadelab::test;
+
+namespace
+{
+vtkSmartPointer<vtkPolyData> run(slRadianceFilter* filter, vtkPolyData* mesh)
+{
+  filter->SetInputData(mesh);
+  filter->Update();
+  EXPECT_STREQ(filter->GetErrorMessage(), "");
+  return filter->GetOutput();
+}
+} // namespace
+
+TEST(RadianceFilter, LambertDiffuseIsKdTimesCosine)
+{
+  // Directional light from 60 degrees off the normal: diffuse = I k_d cos 60.
+  SceneLight light = whiteLight(LightType::Directional);
+  const double theta = 60.0 * kPi / 180.0;
+  light.direction = -glm::vec3(std::sin(theta), 0.0, std::cos(theta));
+  light.intensity = 2.0f;
+  vtkNew<slRadianceFilter> filter;
+  filter->SetScene(makeScene({ light }, ShadingModel::Lambert));
+  vtkPolyData* out = run(filter, pointsWithNormals({ { 0, 0, 0, 0, 0, 1 }, { 1, 0, 0, 0, 0, -1 } }));
+  const auto d = tuple3(out, "Diffuse", 0);
+  EXPECT_NEAR(d[0], 2.0 * 0.8 * 0.5, 1e-6);
+  EXPECT_NEAR(d[1], 2.0 * 0.5 * 0.5, 1e-6);
+  EXPECT_NEAR(d[2], 2.0 * 0.25 * 0.5, 1e-6);
+  EXPECT_EQ(tuple3(out, "Specular", 0)[0], 0.0);
+  // Facing away: no diffuse, never negative.
+  EXPECT_EQ(tuple3(out, "Diffuse", 1)[0], 0.0);
+  // Emission is k_e, and Radiance the sum of the four terms.
+  for (vtkIdType i = 0; i < 2; ++i)
+  {
+    EXPECT_NEAR(tuple3(out, "Emission", i)[2], 0.03, 1e-7);
+    for (int c = 0; c < 3; ++c)
+    {
+      const double sum = tuple3(out, "Ambient", i)[c] + tuple3(out, "Diffuse", i)[c] + tuple3(out, "Specular", i)[c] +
+        tuple3(out, "Emission", i)[c];
+      EXPECT_NEAR(tuple3(out, "Radiance", i)[c], sum, 1e-6);
+    }
+  }
+}
+
+TEST(RadianceFilter, BlinnPhongPointLightWithAttenuation)
+{
+  // Point light at (1, 0, 2), eye at (-1, 0, 3), surface point at the origin, N = +z.
+  SceneLight light = whiteLight(LightType::Point);
+  light.position = glm::vec3(1.0f, 0.0f, 2.0f);
+  light.attenuation = glm::vec3(0.5f, 0.25f, 0.125f);
+  light.ambient = glm::vec3(0.5f);
+  vtkNew<slRadianceFilter> filter;
+  filter->SetScene(makeScene({ light }, ShadingModel::BlinnPhong, glm::vec3(-1.0f, 0.0f, 3.0f)));
+  vtkPolyData* out = run(filter, pointsWithNormals({ { 0, 0, 0, 0, 0, 1 } }));
+  const double d = std::sqrt(5.0);
+  const double att = std::min(1.0, 1.0 / (0.5 + 0.25 * d + 0.125 * d * d));
+  const double L[3] = { 1 / d, 0, 2 / d };
+  const double dv = std::sqrt(10.0);
+  const double V[3] = { -1 / dv, 0, 3 / dv };
+  double H[3] = { L[0] + V[0], L[1] + V[1], L[2] + V[2] };
+  const double hl = std::sqrt(H[0] * H[0] + H[1] * H[1] + H[2] * H[2]);
+  const double spec = std::pow(H[2] / hl, 20.0);
+  EXPECT_NEAR(tuple3(out, "Diffuse", 0)[0], att * L[2] * 0.8, 1e-6);
+  EXPECT_NEAR(tuple3(out, "Specular", 0)[0], att * spec * 0.5, 1e-5);
+  EXPECT_NEAR(tuple3(out, "Ambient", 0)[1], att * 0.5 * 0.1, 1e-7);
+}
+
+TEST(RadianceFilter, VectorizedLoopAgreesWithShadePointForEveryModelAndLightType)
+{
+  // The filter's vectorised loop against the lighting core's scalar
+  // shadePoint() on a sphere under a directional, a point, a spot (smooth
+  // edge) and an ambient light, for every model.
+  SceneLight directional = whiteLight(LightType::Directional);
+  directional.direction = glm::vec3(-0.3f, -0.5f, -1.0f);
+  SceneLight point = whiteLight(LightType::Point);
+  point.position = glm::vec3(2.0f, 1.0f, 1.5f);
+  point.attenuation = glm::vec3(0.2f, 0.3f, 0.1f);
+  SceneLight spot = whiteLight(LightType::Spot);
+  spot.position = glm::vec3(0.0f, 0.0f, 3.0f);
+  spot.direction = glm::vec3(0.1f, 0.0f, -1.0f);
+  spot.cutoffDegrees = 25.0f;
+  spot.edgeDegrees = 5.0f;
+  spot.exponent = 3.0f;
+  SceneLight ambient = whiteLight(LightType::Ambient);
+  ambient.ambient = glm::vec3(0.3f);
+  vtkSmartPointer<vtkPolyData> mesh = sphere(20);
+  for (int model = 0; model < 6; ++model)
+  {
+    vtkSmartPointer<slScene> scene =
+      makeScene({ directional, point, spot, ambient }, static_cast<ShadingModel>(model), glm::vec3(1, 2, 5));
+    vtkNew<slRadianceFilter> filter;
+    filter->SetScene(scene);
+    vtkPolyData* out = run(filter, mesh);
+    std::vector<glsl::slLight> lights;
+    for (const SceneLight& l : scene->GetScene().lights)
+    {
+      lights.push_back(toEvaluationLight(l));
+    }
+    const glsl::slMaterial m = toEvaluationMaterial(scene->GetScene().material);
+    double worst = 0.0;
+    for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+    {
+      double p[3], n[3];
+      mesh->GetPoint(i, p);
+      mesh->GetPointData()->GetNormals()->GetTuple(i, n);
+      const glm::vec3 expected = glsl::slTotal(shadePoint(
+        lights, m, model, glm::vec3(p[0], p[1], p[2]), glm::vec3(n[0], n[1], n[2]), glm::vec3(1, 2, 5)));
+      const auto got = tuple3(out, "Radiance", i);
+      for (int c = 0; c < 3; ++c)
+      {
+        worst = std::max(worst, std::abs(got[c] - expected[c]) / std::max(1e-3, double(std::abs(expected[c]))));
+      }
+    }
+    EXPECT_LT(worst, 1e-4) << "model " << model;
+  }
+}
+
+TEST(RadianceFilter, PerLightArraysSumToTheLitPart)
+{
+  SceneLight a = whiteLight(LightType::Directional);
+  a.direction = glm::vec3(0.0f, 0.0f, -1.0f);
+  SceneLight b = whiteLight(LightType::Point);
+  b.position = glm::vec3(0.0f, 3.0f, 0.0f);
+  vtkNew<slRadianceFilter> filter;
+  filter->SetScene(makeScene({ a, b }, ShadingModel::Phong));
+  filter->PerLightArraysOn();
+  vtkPolyData* out = run(filter, sphere());
+  ASSERT_NE(out->GetPointData()->GetArray("Radiance_1"), nullptr);
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      EXPECT_NEAR(tuple3(out, "Radiance_0", i)[c] + tuple3(out, "Radiance_1", i)[c] + tuple3(out, "Emission", i)[c],
+        tuple3(out, "Radiance", i)[c], 1e-5);
+    }
+  }
+}
+
+TEST(RadianceFilter, TakesVTKLightsPropertyAndCamera)
+{
+  // A VTK scene light shining straight down -z onto N = +z; a property with
+  // diffuse 0.5 x (1, 0.5, 0.25) and ambient 0.2 x white; VTK's implicit
+  // white ambient light adds k_a.
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPositional(false);
+  light->SetPosition(0, 0, 1);
+  light->SetFocalPoint(0, 0, 0);
+  light->SetIntensity(0.5);
+  light->SetAmbientColor(0, 0, 0);
+  vtkNew<vtkLightCollection> lights;
+  lights->AddItem(light);
+  vtkNew<vtkProperty> property;
+  property->SetDiffuse(0.5);
+  property->SetDiffuseColor(1.0, 0.5, 0.25);
+  property->SetAmbient(0.2);
+  property->SetAmbientColor(1.0, 1.0, 1.0);
+  property->SetSpecular(0.0);
+  vtkNew<vtkCamera> camera;
+  camera->SetPosition(0, 0, 5);
+  vtkNew<slRadianceFilter> filter;
+  filter->SetLights(lights);
+  filter->SetProperty(property);
+  filter->SetCamera(camera);
+  vtkPolyData* out = run(filter, pointsWithNormals({ { 0, 0, 0, 0, 0, 1 } }));
+  EXPECT_NEAR(tuple3(out, "Diffuse", 0)[0], 0.5 * 0.5 * 1.0, 1e-6);
+  EXPECT_NEAR(tuple3(out, "Diffuse", 0)[2], 0.5 * 0.5 * 0.25, 1e-6);
+  EXPECT_NEAR(tuple3(out, "Ambient", 0)[1], 0.2, 1e-6);
+}
+
+TEST(RadianceFilter, DiffuseFromColourArrayAndTexture)
+{
+  SceneLight light = whiteLight(LightType::Directional);
+  light.direction = glm::vec3(0.0f, 0.0f, -1.0f);
+  vtkSmartPointer<vtkPolyData> mesh = pointsWithNormals({ { 0, 0, 0, 0, 0, 1 }, { 1, 0, 0, 0, 0, 1 } });
+  vtkNew<vtkFloatArray> colours;
+  colours->SetName("Colour");
+  colours->SetNumberOfComponents(3);
+  colours->InsertNextTuple3(0.25, 0.5, 1.0);
+  colours->InsertNextTuple3(1.0, 0.0, 0.0);
+  mesh->GetPointData()->AddArray(colours);
+  vtkNew<vtkUnsignedCharArray> bytes;
+  bytes->SetName("Bytes");
+  bytes->SetNumberOfComponents(4);
+  bytes->InsertNextTuple4(255, 188, 0, 255); // sRGB 188/255 -> linear 0.5029
+  bytes->InsertNextTuple4(0, 0, 0, 255);
+  mesh->GetPointData()->AddArray(bytes);
+  vtkNew<slRadianceFilter> filter;
+  filter->SetScene(makeScene({ light }, ShadingModel::Lambert));
+  filter->SetDiffuseColorArrayName("Colour");
+  vtkPolyData* out = run(filter, mesh);
+  EXPECT_NEAR(tuple3(out, "Diffuse", 0)[2], 1.0, 1e-6);
+  EXPECT_NEAR(tuple3(out, "Diffuse", 1)[0], 1.0, 1e-6);
+  EXPECT_NE(out->GetPointData()->GetArray("Colour"), nullptr) << "input arrays pass through";
+  filter->SetDiffuseColorArrayName("Bytes");
+  out = run(filter, mesh);
+  EXPECT_NEAR(tuple3(out, "Diffuse", 0)[0], 1.0, 1e-6);
+  EXPECT_NEAR(tuple3(out, "Diffuse", 0)[1], std::pow((188.0 / 255.0 + 0.055) / 1.055, 2.4), 1e-5);
+
+  // A 2 x 1 texture: left texel red, right texel blue; u = 0.25 and 0.75 hit their centres.
+  vtkNew<vtkImageData> texture;
+  texture->SetDimensions(2, 1, 1);
+  vtkNew<vtkFloatArray> pixels;
+  pixels->SetNumberOfComponents(3);
+  pixels->InsertNextTuple3(1, 0, 0);
+  pixels->InsertNextTuple3(0, 0, 1);
+  texture->GetPointData()->SetScalars(pixels);
+  vtkNew<vtkFloatArray> uv;
+  uv->SetNumberOfComponents(2);
+  uv->InsertNextTuple2(0.25, 0.5);
+  uv->InsertNextTuple2(0.75, 0.5);
+  mesh->GetPointData()->SetTCoords(uv);
+  filter->SetDiffuseColorArrayName(nullptr);
+  filter->SetDiffuseTexture(texture);
+  out = run(filter, mesh);
+  EXPECT_NEAR(tuple3(out, "Diffuse", 0)[0], 1.0, 1e-6);
+  EXPECT_NEAR(tuple3(out, "Diffuse", 0)[2], 0.0, 1e-6);
+  EXPECT_NEAR(tuple3(out, "Diffuse", 1)[2], 1.0, 1e-6);
+}
