@@ -17,8 +17,8 @@
  * pair: normals are computed on the welded surface, but points that differed
  * in the input (texture seams) stay apart.
  *
- * Work is parallel over points in two passes (count, then write) that both
- * rebuild the groups, which costs time but no memory per corner.
+ * Work is parallel over points in two passes: count (building the groups),
+ * then write. Without welding the first pass keeps each corner's group.
  */
 
 #include "slCornerWeights.h"
@@ -50,12 +50,9 @@ template <typename T>
 struct SplitScratch
 {
   std::vector<int64_t> face, prev, next, orig;
-  std::vector<glm::vec<3, T>> unit; ///< unit polygon normal per corner
-  std::vector<T> len;               ///< Newell vector length per corner
   std::vector<int> parent;
-  std::vector<std::pair<int64_t, int>> edges;
-  std::vector<int> group;       ///< per corner, 0..numGroups-1
-  std::vector<int> slot;        ///< per corner, 0..numSlots-1
+  std::vector<int> group; ///< per corner, 0..numGroups-1
+  std::vector<int> slot;  ///< per corner, 0..numSlots-1
   std::vector<std::pair<int64_t, int>> slots; ///< (original id, group) per slot
   std::vector<glm::vec<3, T>> sums;
 
@@ -70,10 +67,18 @@ struct SplitScratch
   }
 };
 
-/// Builds the groups and slots of point @p v; returns the number of slots.
+template <typename T>
+inline glm::vec<3, T> unitOf(const glm::vec<3, T>& n, T& len)
+{
+  len = glm::length(n);
+  return len > T(0) ? n / len : glm::vec<3, T>(0);
+}
+
+/// Builds the groups and slots of point @p v from the polygons' Newell
+/// vectors @p newell (3 per polygon); returns the number of slots.
 template <typename T, typename Id>
-int groupCorners(const Polygons<Id>& polys, const Id* original, const T* xyz, const VertexCorners<Id>& vc,
-  int64_t v, T cosFeature, bool split, SplitScratch<T>& s)
+int groupCorners(const Polygons<Id>& polys, const Id* original, const T* newell, const VertexCorners<Id>& vc,
+  int64_t v, T cosFeature, SplitScratch<T>& s)
 {
   const int32_t b = vc.offsets[static_cast<size_t>(v)];
   const int k = vc.offsets[static_cast<size_t>(v) + 1] - b;
@@ -81,12 +86,9 @@ int groupCorners(const Polygons<Id>& polys, const Id* original, const T* xyz, co
   s.prev.resize(k);
   s.next.resize(k);
   s.orig.resize(k);
-  s.unit.resize(k);
-  s.len.resize(k);
   s.parent.resize(k);
   s.group.resize(k);
   s.slot.resize(k);
-  s.edges.clear();
   for (int i = 0; i < k; ++i)
   {
     const int64_t c = vc.corners[static_cast<size_t>(b + i)];
@@ -96,36 +98,33 @@ int groupCorners(const Polygons<Id>& polys, const Id* original, const T* xyz, co
     s.prev[i] = polys.connectivity[c == polys.begin(f) ? polys.end(f) - 1 : c - 1];
     s.orig[i] = original ? static_cast<int64_t>(original[c]) : v;
     s.parent[i] = i;
-    const glm::vec<3, T> n = newellVector(polys, xyz, f);
-    s.len[i] = glm::length(n);
-    s.unit[i] = s.len[i] > T(0) ? n / s.len[i] : glm::vec<3, T>(0);
-    if (split)
-    {
-      s.edges.emplace_back(s.next[i], i);
-      s.edges.emplace_back(s.prev[i], i);
-    }
   }
-  if (split)
+  // Join corners i, j across each edge (v, w) that exactly these two share.
+  for (int i = 0; i < k; ++i)
   {
-    std::sort(s.edges.begin(), s.edges.end());
-    for (size_t e = 0; e < s.edges.size();)
+    for (const int64_t w : { s.next[i], s.prev[i] })
     {
-      size_t end = e + 1;
-      while (end < s.edges.size() && s.edges[end].first == s.edges[e].first)
+      int count = 0, other = -1;
+      for (int j = 0; j < k; ++j)
       {
-        ++end;
-      }
-      if (end - e == 2)
-      {
-        const int i = s.edges[e].second, j = s.edges[e + 1].second;
-        const T d = glm::dot(s.unit[i], s.unit[j]);
-        const bool degenerate = glm::dot(s.unit[i], s.unit[i]) == T(0) || glm::dot(s.unit[j], s.unit[j]) == T(0);
-        if (degenerate || d >= cosFeature)
+        if (j != i && (s.next[j] == w || s.prev[j] == w))
         {
-          s.parent[s.find(i)] = s.find(j);
+          ++count;
+          other = j;
         }
       }
-      e = end;
+      if (count != 1 || other < i)
+      {
+        continue; // boundary, non-manifold, or already seen from the other side
+      }
+      const glm::vec<3, T> ni(newell[3 * s.face[i]], newell[3 * s.face[i] + 1], newell[3 * s.face[i] + 2]);
+      const glm::vec<3, T> nj(newell[3 * s.face[other]], newell[3 * s.face[other] + 1], newell[3 * s.face[other] + 2]);
+      const T li = glm::length(ni), lj = glm::length(nj);
+      // A degenerate polygon joins any neighbour.
+      if (!(li > T(0)) || !(lj > T(0)) || glm::dot(ni, nj) >= cosFeature * li * lj)
+      {
+        s.parent[s.find(i)] = s.find(other);
+      }
     }
   }
   // Compact groups in order of first corner, then (original, group) slots.
@@ -133,17 +132,26 @@ int groupCorners(const Polygons<Id>& polys, const Id* original, const T* xyz, co
   std::fill(s.group.begin(), s.group.end(), -1);
   for (int i = 0; i < k; ++i)
   {
-    const int r = split ? s.find(i) : 0;
+    const int r = s.find(i);
     if (s.group[r] < 0)
     {
       s.group[r] = groups++;
     }
   }
+  for (int i = 0; i < k; ++i)
+  {
+    s.slot[i] = s.group[s.find(i)];
+  }
+  std::swap(s.group, s.slot); // group[i] is now corner i's group
+  if (!original)
+  {
+    s.slot = s.group;
+    return groups;
+  }
   s.slots.clear();
   for (int i = 0; i < k; ++i)
   {
-    const int g = s.group[split ? s.find(i) : 0];
-    const std::pair<int64_t, int> key(s.orig[i], g);
+    const std::pair<int64_t, int> key(s.orig[i], s.group[i]);
     const auto it = std::find(s.slots.begin(), s.slots.end(), key);
     s.slot[i] = static_cast<int>(it - s.slots.begin());
     if (it == s.slots.end())
@@ -163,18 +171,43 @@ int groupCorners(const Polygons<Id>& polys, const Id* original, const T* xyz, co
  * write; @p outConnectivity (same size as the connectivity) receives the
  * output point id of every corner. Returns the number of output points;
  * points used by no polygon are not output.
+ *
+ * Memory besides the output: the polygons' Newell vectors (3 T each) and,
+ * without welding, one 16-bit group number per corner.
  */
 template <typename T, typename Id, typename OutId, typename Allocate>
 int64_t splitVertexNormals(const Polygons<Id>& topology, const Id* original, const T* xyz, int64_t numPoints,
-  const VertexCorners<Id>& vc, Weighting weighting, T cosFeature, bool split, OutId* outConnectivity,
-  Allocate&& allocate, const Parallel& parallel)
+  const VertexCorners<Id>& vc, Weighting weighting, T cosFeature, OutId* outConnectivity, Allocate&& allocate,
+  const Parallel& parallel)
 {
+  using V = glm::vec<3, T>;
+  std::vector<T> newell(static_cast<size_t>(3 * topology.numPolygons));
+  parallel.forRange(0, topology.numPolygons, 8192, [&](int64_t b, int64_t e) {
+    for (int64_t f = b; f < e; ++f)
+    {
+      const V n = newellVector(topology, xyz, f);
+      newell[3 * f] = n.x;
+      newell[3 * f + 1] = n.y;
+      newell[3 * f + 2] = n.z;
+    }
+  });
+  constexpr uint16_t recompute = 0xFFFF;
+  std::vector<uint16_t> stored(original ? 0 : vc.corners.size());
   std::vector<int64_t> base(static_cast<size_t>(numPoints + 1), 0);
   parallel.forRange(0, numPoints, 4096, [&](int64_t b, int64_t e) {
     detail::SplitScratch<T> s;
     for (int64_t v = b; v < e; ++v)
     {
-      base[static_cast<size_t>(v + 1)] = detail::groupCorners(topology, original, xyz, vc, v, cosFeature, split, s);
+      const int slots = detail::groupCorners(topology, original, newell.data(), vc, v, cosFeature, s);
+      base[static_cast<size_t>(v + 1)] = slots;
+      if (!original)
+      {
+        const int32_t first = vc.offsets[static_cast<size_t>(v)];
+        for (size_t i = 0; i < s.slot.size(); ++i)
+        {
+          stored[first + i] = slots < recompute ? static_cast<uint16_t>(s.slot[i]) : recompute;
+        }
+      }
     }
   });
   for (int64_t v = 0; v < numPoints; ++v)
@@ -187,27 +220,43 @@ int64_t splitVertexNormals(const Polygons<Id>& topology, const Id* original, con
     detail::SplitScratch<T> s;
     for (int64_t v = b; v < e; ++v)
     {
-      detail::groupCorners(topology, original, xyz, vc, v, cosFeature, split, s);
-      const int k = static_cast<int>(s.face.size());
-      s.sums.assign(static_cast<size_t>(k), glm::vec<3, T>(0));
-      const glm::vec<3, T> p = point(xyz, v);
+      const int32_t first = vc.offsets[static_cast<size_t>(v)];
+      const int k = vc.offsets[static_cast<size_t>(v) + 1] - first;
+      if (k == 0)
+      {
+        continue;
+      }
+      const bool fromTable = !original && stored[static_cast<size_t>(first)] != recompute;
+      if (!fromTable)
+      {
+        detail::groupCorners(topology, original, newell.data(), vc, v, cosFeature, s);
+      }
+      s.sums.assign(static_cast<size_t>(k), V(0));
+      const V p = point(xyz, v);
       for (int i = 0; i < k; ++i)
       {
-        s.sums[static_cast<size_t>(s.group[split ? s.find(i) : 0])] +=
-          cornerContribution(weighting, point(xyz, s.prev[i]), p, point(xyz, s.next[i]), s.unit[i], s.len[i]);
+        const int64_t c = vc.corners[static_cast<size_t>(first + i)];
+        const int64_t f = vc.faceOf(c);
+        const int g = fromTable ? stored[static_cast<size_t>(first + i)] : s.group[i];
+        T len;
+        const V u = detail::unitOf(V(newell[3 * f], newell[3 * f + 1], newell[3 * f + 2]), len);
+        const int64_t next = topology.connectivity[c + 1 == topology.end(f) ? topology.begin(f) : c + 1];
+        const int64_t prev = topology.connectivity[c == topology.begin(f) ? topology.end(f) - 1 : c - 1];
+        s.sums[static_cast<size_t>(g)] +=
+          cornerContribution(weighting, point(xyz, prev), p, point(xyz, next), u, len);
       }
       for (int i = 0; i < k; ++i)
       {
-        const int64_t id = base[static_cast<size_t>(v)] + s.slot[i];
-        glm::vec<3, T> n = s.sums[static_cast<size_t>(s.group[split ? s.find(i) : 0])];
-        const T len = glm::length(n);
-        n = len > T(0) ? n / len : glm::vec<3, T>(0);
+        const int g = fromTable ? stored[static_cast<size_t>(first + i)] : s.group[i];
+        const int slot = fromTable ? g : s.slot[i];
+        const int64_t id = base[static_cast<size_t>(v)] + slot;
+        T len;
+        const V n = detail::unitOf(s.sums[static_cast<size_t>(g)], len);
         out.normals[3 * id] = static_cast<float>(n.x);
         out.normals[3 * id + 1] = static_cast<float>(n.y);
         out.normals[3 * id + 2] = static_cast<float>(n.z);
-        out.source[id] = s.orig[i];
-        outConnectivity[vc.corners[static_cast<size_t>(vc.offsets[static_cast<size_t>(v)] + i)]] =
-          static_cast<OutId>(id);
+        out.source[id] = original ? static_cast<int64_t>(original[vc.corners[static_cast<size_t>(first + i)]]) : v;
+        outConnectivity[vc.corners[static_cast<size_t>(first + i)]] = static_cast<OutId>(id);
       }
     }
   });

@@ -1,5 +1,6 @@
 #include "slNormalsVTKBridge.h"
 
+#include <vtkFloatArray.h>
 #include <vtkPoints.h>
 #include <vtkSMPTools.h>
 
@@ -22,11 +23,19 @@ vtkIdType slFirstNonFinitePoint(vtkPoints* points)
   const vtkIdType n = points ? points->GetNumberOfPoints() : 0;
   std::atomic<vtkIdType> first{ n };
   vtkDataArray* data = n ? points->GetData() : nullptr;
+  const float* f = vtkFloatArray::SafeDownCast(data) ? vtkFloatArray::SafeDownCast(data)->GetPointer(0) : nullptr;
   vtkSMPTools::For(0, n, 65536, [&](vtkIdType b, vtkIdType e) {
     for (vtkIdType i = b; i < e; ++i)
     {
       double p[3];
-      data->GetTuple(i, p);
+      if (f)
+      {
+        p[0] = f[3 * i], p[1] = f[3 * i + 1], p[2] = f[3 * i + 2];
+      }
+      else
+      {
+        data->GetTuple(i, p);
+      }
       if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
       {
         vtkIdType cur = first.load();

@@ -67,12 +67,14 @@ inline void forEdgeNeighbours(const Polygons<Id>& polys, const VertexCorners<Id>
 {
   for (int32_t i = vc.offsets[static_cast<size_t>(a)]; i < vc.offsets[static_cast<size_t>(a) + 1]; ++i)
   {
-    const int64_t g = vc.faceOf(vc.corners[static_cast<size_t>(i)]);
+    const int64_t corner = vc.corners[static_cast<size_t>(i)];
+    const int64_t g = vc.faceOf(corner);
     if (g == f)
     {
       continue;
     }
-    const int64_t c = findInPolygon(polys, g, a);
+    // The table's position holds a unless its polygon has been reversed since.
+    const int64_t c = static_cast<int64_t>(polys.connectivity[corner]) == a ? corner : findInPolygon(polys, g, a);
     if (c < 0)
     {
       continue;
@@ -95,24 +97,28 @@ inline void reversePolygon(Polygons<Id>& polys, int64_t f)
 }
 } // namespace detail
 
-/// True if two polygons traverse some shared edge in the same direction.
+/// True if two polygons traverse some shared edge in the same direction:
+/// at some point v, two corners continue to the same next point.
 template <typename Id>
 bool hasInconsistentEdge(const Polygons<Id>& polys, const VertexCorners<Id>& vc, const Parallel& parallel)
 {
+  const int64_t numPoints = static_cast<int64_t>(vc.offsets.size()) - 1;
   std::atomic<bool> found{ false };
-  parallel.forRange(0, polys.numPolygons, 4096, [&](int64_t b, int64_t e) {
-    for (int64_t f = b; f < e && !found.load(std::memory_order_relaxed); ++f)
+  parallel.forRange(0, numPoints, 8192, [&](int64_t b, int64_t e) {
+    std::vector<int64_t> next;
+    for (int64_t v = b; v < e && !found.load(std::memory_order_relaxed); ++v)
     {
-      for (int64_t c = polys.begin(f); c < polys.end(f); ++c)
+      next.clear();
+      for (int32_t i = vc.offsets[static_cast<size_t>(v)]; i < vc.offsets[static_cast<size_t>(v) + 1]; ++i)
       {
-        const int64_t a = polys.connectivity[c];
-        const int64_t n = polys.connectivity[detail::nextPos(polys, f, c)];
-        detail::forEdgeNeighbours(polys, vc, f, a, n, [&](int64_t, bool same) {
-          if (same)
-          {
-            found = true;
-          }
-        });
+        const int64_t c = vc.corners[static_cast<size_t>(i)];
+        const int64_t n = polys.connectivity[detail::nextPos(polys, vc.faceOf(c), c)];
+        if (std::find(next.begin(), next.end(), n) != next.end())
+        {
+          found = true;
+          break;
+        }
+        next.push_back(n);
       }
     }
   });

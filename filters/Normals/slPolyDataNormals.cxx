@@ -339,7 +339,7 @@ private:
     const bool welded = topology.connectivity != polys.connectivity;
     const T cosFeature = static_cast<T>(std::cos(vtkMath::RadiansFromDegrees(this->S.featureAngle)));
     const int64_t split = slnormals::splitVertexNormals(topology, welded ? polys.connectivity : nullptr, this->XYZ,
-      numPoints, corners, this->S.weighting, cosFeature, true, conn->GetPointer(0), allocate, this->Par);
+      numPoints, corners, this->S.weighting, cosFeature, conn->GetPointer(0), allocate, this->Par);
 
     pointMap.assign(static_cast<size_t>(numPoints), -1);
     for (int64_t i = split - 1; i >= 0; --i)

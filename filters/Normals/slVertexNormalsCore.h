@@ -18,6 +18,7 @@
 #include <glm/glm.hpp>
 
 #include <algorithm>
+#include <type_traits>
 #include <vector>
 
 namespace slnormals
@@ -117,27 +118,40 @@ void computeVertexNormals(const Polygons<Id>& polys, const T* xyz, int64_t numPo
 {
   const int64_t chunks =
     polys.numPolygons < 65536 ? 1 : std::max<int64_t>(1, std::min<int64_t>(parallel.threads, 64));
+  // With float points, the first chunk accumulates straight into the output.
+  constexpr bool inPlace = std::is_same<T, float>::value;
   std::vector<std::vector<T>> acc(static_cast<size_t>(chunks));
+  std::vector<T*> target(static_cast<size_t>(chunks));
   parallel.forRange(0, chunks, 1, [&](int64_t cb, int64_t ce) {
     for (int64_t k = cb; k < ce; ++k)
     {
-      std::vector<T>& a = acc[static_cast<size_t>(k)];
-      a.assign(static_cast<size_t>(3 * numPoints), T(0));
+      T* a;
+      if (inPlace && k == 0)
+      {
+        a = reinterpret_cast<T*>(out);
+        std::fill(a, a + 3 * numPoints, T(0));
+      }
+      else
+      {
+        acc[static_cast<size_t>(k)].assign(static_cast<size_t>(3 * numPoints), T(0));
+        a = acc[static_cast<size_t>(k)].data();
+      }
+      target[static_cast<size_t>(k)] = a;
       const int64_t b = polys.numPolygons * k / chunks;
       const int64_t e = polys.numPolygons * (k + 1) / chunks;
       switch (weighting)
       {
         case Weighting::Uniform:
-          detail::scatter<Weighting::Uniform>(polys, xyz, b, e, a.data());
+          detail::scatter<Weighting::Uniform>(polys, xyz, b, e, a);
           break;
         case Weighting::Area:
-          detail::scatter<Weighting::Area>(polys, xyz, b, e, a.data());
+          detail::scatter<Weighting::Area>(polys, xyz, b, e, a);
           break;
         case Weighting::Angle:
-          detail::scatter<Weighting::Angle>(polys, xyz, b, e, a.data());
+          detail::scatter<Weighting::Angle>(polys, xyz, b, e, a);
           break;
         case Weighting::Max:
-          detail::scatter<Weighting::Max>(polys, xyz, b, e, a.data());
+          detail::scatter<Weighting::Max>(polys, xyz, b, e, a);
           break;
       }
     }
@@ -146,7 +160,7 @@ void computeVertexNormals(const Polygons<Id>& polys, const T* xyz, int64_t numPo
     for (int64_t v = b; v < e; ++v)
     {
       glm::vec<3, T> s(0);
-      for (const std::vector<T>& a : acc)
+      for (const T* a : target)
       {
         s += glm::vec<3, T>(a[3 * v], a[3 * v + 1], a[3 * v + 2]);
       }
