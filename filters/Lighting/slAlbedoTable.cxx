@@ -1,0 +1,72 @@
+#include "slAlbedoTable.h"
+
+#include "shadelab/Albedo.h"
+#include "shadelab/Scene.h"
+
+#include <vtkDoubleArray.h>
+#include <vtkInformationVector.h>
+#include <vtkObjectFactory.h>
+#include <vtkSMPTools.h>
+#include <vtkTable.h>
+
+#include <vector>
+
+vtkStandardNewMacro(slAlbedoTable);
+
+slAlbedoTable::slAlbedoTable()
+{
+  this->SetNumberOfInputPorts(0);
+}
+
+slAlbedoTable::~slAlbedoTable() = default;
+
+int slAlbedoTable::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  using namespace shadelab;
+  vtkTable* output = vtkTable::GetData(outputVector);
+  const int angles = this->NumberOfAngles;
+  vtkNew<vtkDoubleArray> degrees;
+  degrees->SetName("IncidenceDegrees");
+  degrees->SetNumberOfTuples(angles);
+  for (int a = 0; a < angles; ++a)
+  {
+    degrees->SetValue(a, 89.0 * a / (angles - 1));
+  }
+  output->AddColumn(degrees);
+  const int models = static_cast<int>(modelNames().size());
+  std::vector<double> values(static_cast<size_t>(models * angles));
+  vtkSMPTools::For(0, models * angles, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType k = begin; k < end; ++k)
+    {
+      const int model = static_cast<int>(k / angles), a = static_cast<int>(k % angles);
+      glsl::slMaterial m;
+      m.ambient = m.emission = glm::vec3(0.0f);
+      const bool lambert = model == glsl::SL_MODEL_LAMBERT || model == glsl::SL_MODEL_LAMBERT_NORMALIZED;
+      m.diffuse = glm::vec3(lambert ? 1.0f : 0.0f);
+      m.specular = glm::vec3(lambert ? 0.0f : 1.0f);
+      m.shininess = static_cast<float>(this->Shininess);
+      values[static_cast<size_t>(k)] =
+        directionalAlbedo(model, m, degrees->GetValue(a) * 3.14159265358979323846 / 180.0, this->IntegrationSteps);
+    }
+  });
+  for (int model = 0; model < models; ++model)
+  {
+    vtkNew<vtkDoubleArray> column;
+    column->SetName(modelNames()[static_cast<size_t>(model)].c_str());
+    column->SetNumberOfTuples(angles);
+    for (int a = 0; a < angles; ++a)
+    {
+      column->SetValue(a, values[static_cast<size_t>(model * angles + a)]);
+    }
+    output->AddColumn(column);
+  }
+  return 1;
+}
+
+void slAlbedoTable::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Shininess: " << this->Shininess << "\n";
+  os << indent << "NumberOfAngles: " << this->NumberOfAngles << "\n";
+  os << indent << "IntegrationSteps: " << this->IntegrationSteps << "\n";
+}

@@ -1,0 +1,49 @@
+#ifndef slLobeGeometry_h
+#define slLobeGeometry_h
+/**
+ * @file slLobeGeometry.h
+ * @brief Internal: BRDF lobe surfaces and polar slices as polygons, shared
+ * by slBRDFLobeSource and slLobesOnMesh. Not wrapped.
+ *
+ * The lobe for incident direction L at a surface with unit normal N is the
+ * surface origin + scale r(w_o) w_o over the hemisphere of outgoing unit
+ * directions w_o, with r = f_r(L, w_o) (slBRDF() of slLighting.glsl,
+ * averaged over R, G, B), optionally times cos(theta_o). Tangent T lies in
+ * the plane of incidence (the plane of N and L), B = N x T.
+ */
+
+#include "shadelab/LightingGLSL.h"
+
+class vtkCellArray;
+class vtkFloatArray;
+class vtkPoints;
+
+namespace shadelab
+{
+
+struct LobeSpec
+{
+  glsl::slMaterial material;
+  int model = glsl::SL_MODEL_PHONG;
+  glm::vec3 normal{ 0.0f, 0.0f, 1.0f };
+  glm::vec3 toLight{ 0.0f, 0.0f, 1.0f };
+  bool timesCosine = false;
+  int thetaResolution = 32; ///< rings from the normal to the horizon
+  int phiResolution = 64;   ///< segments around the normal
+  glm::vec3 origin{ 0.0f };
+  float scale = 1.0f;
+};
+
+/// r(w_o) for one outgoing direction (0 below the horizon).
+float lobeRadius(const LobeSpec& spec, const glm::vec3& out);
+
+/// Appends the lobe surface (triangles) to @p points / @p polys, with r per point in @p values.
+void appendLobe(const LobeSpec& spec, vtkPoints* points, vtkCellArray* polys, vtkFloatArray* values);
+
+/// Appends the polar slice in the plane of incidence, theta_o from -90 to 90
+/// degrees (positive on the side of the mirror direction), as one polyline.
+void appendSlice(const LobeSpec& spec, vtkPoints* points, vtkCellArray* lines, vtkFloatArray* values);
+
+} // namespace shadelab
+
+#endif

@@ -1,0 +1,143 @@
+#include "slLobesOnMesh.h"
+
+#include "slFloat3View.h"
+#include "slLightingSetup.h"
+#include "slLobeGeometry.h"
+
+#include <vtkCellArray.h>
+#include <vtkFloatArray.h>
+#include <vtkIdList.h>
+#include <vtkIdTypeArray.h>
+#include <vtkInformationVector.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+
+#include <algorithm>
+#include <cmath>
+
+vtkStandardNewMacro(slLobesOnMesh);
+vtkCxxSetObjectMacro(slLobesOnMesh, PointIds, vtkIdList);
+
+slLobesOnMesh::slLobesOnMesh() = default;
+
+slLobesOnMesh::~slLobesOnMesh()
+{
+  this->SetPointIds(nullptr);
+}
+
+int slLobesOnMesh::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  using namespace shadelab;
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  this->ClearError();
+  LightingSetup setup;
+  if (!this->PrepareLighting(input, output, true, setup))
+  {
+    return 0;
+  }
+  int light = this->LightIndex;
+  if (light < 0)
+  {
+    for (size_t l = 0; l < setup.lights.size() && light < 0; ++l)
+    {
+      light = setup.lights[l].type == glsl::SL_LIGHT_AMBIENT ? -1 : static_cast<int>(l);
+    }
+    if (light < 0)
+    {
+      return this->Fail(output, "scene: it has only ambient lights; a lobe needs an incident direction");
+    }
+  }
+  if (light >= static_cast<int>(setup.lights.size()))
+  {
+    return this->Fail(output, "LightIndex " + std::to_string(light) + " is out of range: the scene has " +
+        std::to_string(setup.lights.size()) + " lights");
+  }
+
+  const vtkIdType n = input->GetNumberOfPoints();
+  std::vector<vtkIdType> ids;
+  if (this->PointIds)
+  {
+    for (vtkIdType k = 0; k < this->PointIds->GetNumberOfIds(); ++k)
+    {
+      const vtkIdType id = this->PointIds->GetId(k);
+      if (id < 0 || id >= n)
+      {
+        return this->Fail(output, "PointIds: point " + std::to_string(id) + " is not in the mesh (it has " +
+            std::to_string(n) + " points)");
+      }
+      ids.push_back(id);
+    }
+  }
+  else
+  {
+    const vtkIdType count = std::min<vtkIdType>(n, this->NumberOfLobes);
+    for (vtkIdType k = 0; k < count; ++k)
+    {
+      ids.push_back(k * n / count);
+    }
+  }
+
+  const Float3View points(input->GetPoints()->GetData());
+  const Float3View normals(input->GetPointData()->GetNormals());
+  auto lobeAt = [&](vtkIdType id) {
+    LobeSpec spec;
+    spec.material = setup.material;
+    spec.model = setup.model;
+    spec.normal = normals[id];
+    spec.origin = points[id];
+    spec.toLight = glsl::slDirectionToLight(setup.lights[static_cast<size_t>(light)], points[id]);
+    spec.timesCosine = this->MultiplyByCosine;
+    spec.thetaResolution = this->ThetaResolution;
+    spec.phiResolution = this->PhiResolution;
+    return spec;
+  };
+
+  // First pass: the largest r, so every lobe shares one scale.
+  float largest = 0.0f;
+  for (vtkIdType id : ids)
+  {
+    vtkNew<vtkPoints> p;
+    vtkNew<vtkCellArray> c;
+    vtkNew<vtkFloatArray> v;
+    appendLobe(lobeAt(id), p, c, v);
+    largest = std::max(largest, static_cast<float>(v->GetRange()[1]));
+  }
+  const float scale = largest > 0.0f ? static_cast<float>(this->Scale * input->GetLength()) / largest : 0.0f;
+
+  vtkNew<vtkPoints> outPoints;
+  vtkNew<vtkCellArray> polys;
+  vtkNew<vtkFloatArray> values;
+  values->SetName("BRDF");
+  vtkNew<vtkIdTypeArray> owners;
+  owners->SetName("PointId");
+  for (vtkIdType id : ids)
+  {
+    LobeSpec spec = lobeAt(id);
+    spec.scale = scale;
+    appendLobe(spec, outPoints, polys, values);
+    while (owners->GetNumberOfTuples() < values->GetNumberOfTuples())
+    {
+      owners->InsertNextValue(id);
+    }
+  }
+  output->SetPoints(outPoints);
+  output->SetPolys(polys);
+  output->GetPointData()->SetScalars(values);
+  output->GetPointData()->AddArray(owners);
+  return 1;
+}
+
+void slLobesOnMesh::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "LightIndex: " << this->LightIndex << "\n";
+  os << indent << "PointIds: " << this->PointIds << "\n";
+  os << indent << "NumberOfLobes: " << this->NumberOfLobes << "\n";
+  os << indent << "Scale: " << this->Scale << "\n";
+  os << indent << "MultiplyByCosine: " << this->MultiplyByCosine << "\n";
+  os << indent << "ThetaResolution: " << this->ThetaResolution << "\n";
+  os << indent << "PhiResolution: " << this->PhiResolution << "\n";
+}
