@@ -1,6 +1,7 @@
 #include "BenchMemory.h"
 
 #include <fstream>
+#include <malloc.h>
 #include <string>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -33,6 +34,7 @@ long long slPeakMemoryAbove(const std::function<void()>& job)
   if (pid == 0)
   {
     close(fds[0]);
+    malloc_trim(0); // memory freed earlier must not be reused unseen
     std::ofstream("/proc/self/clear_refs") << "5"; // resets VmHWM to VmRSS
     const long long before = statusField("VmRSS");
     job();

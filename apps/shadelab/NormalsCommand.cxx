@@ -1,0 +1,72 @@
+// shadelab normals MESH -o OUT [--weighting W] [--feature-angle DEG] [...]
+#include "CommandLine.h"
+#include "Commands.h"
+#include "Inputs.h"
+#include "NormalsOptions.h"
+
+#include "slPolyDataNormals.h"
+
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+
+#include <iostream>
+
+namespace shadelab
+{
+namespace app
+{
+
+namespace
+{
+int runNormals(const std::vector<std::string>& args)
+{
+  std::vector<OptionSpec> specs{
+    { "output", "o", "FILE", "mesh to write (.vtp, .vtk, .ply, .obj, .stl)" },
+    { "cells", "", "", "also write face normals (cell array \"Normals\"; VTP and VTK keep it)" },
+  };
+  for (const OptionSpec& s : normalsOptionSpecs())
+  {
+    specs.push_back(s);
+  }
+  specs.push_back({ "help", "h", "", "show this help" });
+  const CommandLine cl(args, specs);
+  if (cl.has("help"))
+  {
+    std::cout << "usage: shadelab normals MESH -o OUT [options]\n\n"
+                 "Computes vertex normals (point array \"Normals\") of MESH ("
+              << meshFormatsText()
+              << ") with slPolyDataNormals: weighted face normals,\n"
+                 "points split along sharp edges, polygons oriented consistently.\n\noptions:\n"
+              << CommandLine::describe(specs);
+    return 0;
+  }
+  if (cl.positional().size() != 1)
+  {
+    throw UsageError("expected one MESH argument, got " + std::to_string(cl.positional().size()));
+  }
+  if (!cl.has("output"))
+  {
+    throw UsageError("missing -o/--output FILE");
+  }
+  vtkNew<slPolyDataNormals> normals;
+  applyNormalsOptions(cl, normals);
+  normals->SetComputeCellNormals(cl.has("cells"));
+  const std::string path = cl.positional()[0];
+  vtkSmartPointer<vtkPolyData> mesh = loadMesh(path);
+  noteNonPolygonCells(mesh, "normals", path);
+  normals->SetInputData(mesh);
+  vtkSmartPointer<vtkPolyData> out = runMeshFilter(normals, path);
+  writeMesh(out, cl.get("output"));
+  std::cout << "wrote " << cl.get("output") << ": " << out->GetNumberOfPoints() << " points ("
+            << out->GetNumberOfPoints() - mesh->GetNumberOfPoints() << " added along sharp edges), "
+            << out->GetNumberOfPolys() << " polygons, " << normals->GetNumberOfFlippedPolygons()
+            << " reversed, weighting " << slPolyDataNormals::GetWeightingName(normals->GetWeighting()) << "\n";
+  return 0;
+}
+
+const CommandRegistration registration{ { 20, "normals",
+  "compute vertex and face normals (weighting, sharp edges, orientation)", &runNormals } };
+} // namespace
+
+} // namespace app
+} // namespace shadelab
