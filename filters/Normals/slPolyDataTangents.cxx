@@ -1,0 +1,180 @@
+#include "slPolyDataTangents.h"
+
+#include "slNormalsVTKBridge.h"
+#include "slPolyDataNormals.h"
+#include "slTangentFramesCore.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkFloatArray.h>
+#include <vtkIdList.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSMPTools.h>
+
+#include <array>
+
+vtkStandardNewMacro(slPolyDataTangents);
+
+slPolyDataTangents::slPolyDataTangents() = default;
+slPolyDataTangents::~slPolyDataTangents() = default;
+
+int slPolyDataTangents::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  output->Initialize();
+  this->NumberOfSplitPoints = 0;
+  if (!input || input->GetNumberOfPoints() == 0)
+  {
+    return 1;
+  }
+  const vtkIdType bad = slFirstNonFinitePoint(input->GetPoints());
+  if (bad >= 0)
+  {
+    vtkErrorMacro(<< "point " << bad << " has a NaN or infinite coordinate");
+    return 0;
+  }
+  vtkDataArray* tcoords = input->GetPointData()->GetTCoords();
+  if (!tcoords || tcoords->GetNumberOfComponents() < 2)
+  {
+    vtkErrorMacro(<< "no texture coordinates (UVs): tangents need a 2-component point TCoords array");
+    return 0;
+  }
+  if (input->GetNumberOfVerts() + input->GetNumberOfLines() > 0)
+  {
+    vtkWarningMacro(<< input->GetNumberOfVerts() + input->GetNumberOfLines()
+                    << " vertex and line cells are not polygons: passed through without tangents");
+  }
+
+  // Normals (and strips as triangles) from slPolyDataNormals when needed.
+  vtkSmartPointer<vtkPolyData> mesh = input;
+  if (!input->GetPointData()->GetNormals() || input->GetNumberOfStrips() > 0)
+  {
+    vtkNew<slPolyDataNormals> normals;
+    normals->SetInputData(input);
+    normals->SplittingOff();
+    normals->ConsistencyOff();
+    normals->SetComputePointNormals(!input->GetPointData()->GetNormals());
+    normals->Update();
+    mesh = normals->GetOutput();
+  }
+  vtkDataArray* normalArray = mesh->GetPointData()->GetNormals();
+  tcoords = mesh->GetPointData()->GetTCoords();
+  vtkPoints* points = mesh->GetPoints();
+  const vtkIdType numPoints = mesh->GetNumberOfPoints();
+
+  // Copies in double precision keep the core free of VTK array types.
+  std::vector<glm::dvec3> pos(static_cast<size_t>(numPoints)), nrm(static_cast<size_t>(numPoints));
+  std::vector<glm::dvec2> uv(static_cast<size_t>(numPoints));
+  vtkSMPTools::For(0, numPoints, 8192, [&](vtkIdType b, vtkIdType e) {
+    for (vtkIdType i = b; i < e; ++i)
+    {
+      double p[3], n[3];
+      points->GetPoint(i, p);
+      normalArray->GetTuple(i, n);
+      pos[static_cast<size_t>(i)] = glm::dvec3(p[0], p[1], p[2]);
+      const glm::dvec3 nv(n[0], n[1], n[2]);
+      const double len = glm::length(nv);
+      nrm[static_cast<size_t>(i)] = len > 0 ? nv / len : glm::dvec3(0, 0, 1);
+      uv[static_cast<size_t>(i)] = glm::dvec2(tcoords->GetComponent(i, 0), tcoords->GetComponent(i, 1));
+    }
+  });
+
+  vtkNew<vtkCellArray> polys;
+  polys->DeepCopy(mesh->GetPolys());
+  slnormals::TangentSums sums;
+  std::vector<signed char> sign;
+  slDispatchStorage(polys, [&](auto id) {
+    using Id = decltype(id);
+    slnormals::Polygons<Id> view = slPolygonsOf<Id>(polys);
+    slnormals::accumulateTangents(
+      view, numPoints, [&](int64_t v) { return pos[static_cast<size_t>(v)]; },
+      [&](int64_t v) { return uv[static_cast<size_t>(v)]; }, [&](int64_t v) { return nrm[static_cast<size_t>(v)]; },
+      sums, sign);
+    // Mirror seams: the mirrored corners of points with both signs go to a copy.
+    std::vector<vtkIdType> copyOf(static_cast<size_t>(numPoints), -1);
+    vtkIdType next = numPoints;
+    for (vtkIdType v = 0; v < numPoints; ++v)
+    {
+      if (sums.used[0][static_cast<size_t>(v)] && sums.used[1][static_cast<size_t>(v)])
+      {
+        copyOf[static_cast<size_t>(v)] = next++;
+      }
+    }
+    const int64_t numCorners = view.numPolygons ? view.end(view.numPolygons - 1) : 0;
+    for (int64_t c = 0; c < numCorners; ++c)
+    {
+      const vtkIdType v = view.connectivity[c];
+      if (sign[static_cast<size_t>(c)] < 0 && copyOf[static_cast<size_t>(v)] >= 0)
+      {
+        view.connectivity[c] = static_cast<Id>(copyOf[static_cast<size_t>(v)]);
+      }
+    }
+    this->NumberOfSplitPoints = next - numPoints;
+
+    vtkNew<vtkIdList> from;
+    from->SetNumberOfIds(next);
+    for (vtkIdType v = 0; v < numPoints; ++v)
+    {
+      from->SetId(v, v);
+      if (copyOf[static_cast<size_t>(v)] >= 0)
+      {
+        from->SetId(copyOf[static_cast<size_t>(v)], v);
+      }
+    }
+    vtkNew<vtkPoints> outPoints;
+    outPoints->SetDataType(points->GetDataType());
+    points->GetPoints(from, outPoints);
+    output->SetPoints(outPoints);
+    vtkNew<vtkIdList> to;
+    to->SetNumberOfIds(next);
+    for (vtkIdType i = 0; i < next; ++i)
+    {
+      to->SetId(i, i);
+    }
+    output->GetPointData()->CopyAllocate(mesh->GetPointData(), next);
+    output->GetPointData()->CopyData(mesh->GetPointData(), from, to);
+
+    vtkNew<vtkFloatArray> tangents;
+    tangents->SetName("Tangents");
+    tangents->SetNumberOfComponents(4);
+    tangents->SetNumberOfTuples(next);
+    vtkSMPTools::For(0, numPoints, 8192, [&](vtkIdType b, vtkIdType e) {
+      for (vtkIdType v = b; v < e; ++v)
+      {
+        const size_t s = static_cast<size_t>(v);
+        const bool plus = sums.used[0][s] || !sums.used[1][s];
+        const glm::dvec3 t = slnormals::finishTangent(sums.sum[plus ? 0 : 1][s], nrm[s]);
+        tangents->SetTypedTuple(v, std::array<float, 4>{ static_cast<float>(t.x), static_cast<float>(t.y),
+                                     static_cast<float>(t.z), plus ? 1.0f : -1.0f }.data());
+        if (copyOf[s] >= 0)
+        {
+          const glm::dvec3 m = slnormals::finishTangent(sums.sum[1][s], nrm[s]);
+          tangents->SetTypedTuple(copyOf[s], std::array<float, 4>{ static_cast<float>(m.x),
+                                               static_cast<float>(m.y), static_cast<float>(m.z), -1.0f }.data());
+        }
+      }
+    });
+    output->GetPointData()->RemoveArray("Tangents");
+    output->GetPointData()->AddArray(tangents);
+    return 0;
+  });
+  output->SetPolys(polys);
+  output->SetVerts(mesh->GetVerts());
+  output->SetLines(mesh->GetLines());
+  output->GetCellData()->PassData(mesh->GetCellData());
+  output->GetFieldData()->PassData(mesh->GetFieldData());
+  return 1;
+}
+
+void slPolyDataTangents::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfSplitPoints: " << this->NumberOfSplitPoints << "\n";
+}
