@@ -1,0 +1,99 @@
+// shadelab reference MESH [--scene S.json] [--envmap SKY.hdr] -o OUT.vtp
+#include "CommandLine.h"
+#include "Commands.h"
+#include "Inputs.h"
+#include "LightingOptions.h"
+
+#include "slRadianceReference.h"
+
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+
+#include <cstdio>
+#include <iostream>
+
+namespace shadelab
+{
+namespace app
+{
+
+namespace
+{
+int strategyNumber(const std::string& name)
+{
+  const char* names[] = { "uniform", "cosine", "brdf", "light", "mis" };
+  for (int i = 0; i < 5; ++i)
+  {
+    if (name == names[i])
+    {
+      return i;
+    }
+  }
+  throw UsageError("--sampling: \"" + name + "\" is not one of uniform, cosine, brdf, light, mis");
+}
+
+void printSummary(vtkPolyData* out)
+{
+  for (const char* name : { "RadianceErrorMean", "RadianceErrorRMS", "RadianceErrorMaxAbs", "MeanStdError" })
+  {
+    vtkDataArray* a = out->GetFieldData()->GetArray(name);
+    if (a)
+    {
+      std::printf("%-20s %.6g %.6g %.6g\n", name, a->GetComponent(0, 0), a->GetComponent(0, 1), a->GetComponent(0, 2));
+    }
+  }
+}
+
+int runReference(const std::vector<std::string>& args)
+{
+  std::vector<OptionSpec> specs = litOptions();
+  specs.push_back({ "envmap", "e", "FILE", "equirectangular HDR environment map (.hdr, .exr)" });
+  specs.push_back({ "envmap-scale", "", "X", "multiply the environment's radiance (default 1)" });
+  specs.push_back({ "no-lights", "", "", "do not use the scene's lights (environment only)" });
+  specs.push_back({ "sampling", "", "NAME", "uniform, cosine, brdf, light or mis (default mis)" });
+  specs.push_back({ "samples", "n", "N", "samples per point (default 64)" });
+  specs.push_back({ "seed", "", "N", "random seed (default 1)" });
+  specs.push_back({ "light-radius", "", "X", "radius of point/spot lights (default 1% of the mesh diagonal)" });
+  specs.push_back({ "sun-angle", "", "DEG", "angular radius of directional lights (default 0.5)" });
+  const CommandLine cl(args, specs);
+  if (cl.has("help"))
+  {
+    std::cout << "usage: shadelab reference MESH [--scene S.json] [--envmap SKY.hdr] -o OUT.vtp\n\n"
+                 "Monte Carlo estimate per point of L_o = L_e + integral of f_r L_i cos(theta), lit by an\n"
+                 "environment map and/or the scene's lights as small spherical lights. Writes Radiance,\n"
+                 "RadianceStdError, DiscreteRadiance and RadianceError (reference - discrete) and prints\n"
+                 "summary statistics of the error.\n"
+                 "MESH: " << meshFormatsText() << "; point normals are computed if missing.\n\noptions:\n"
+              << CommandLine::describe(specs);
+    return 0;
+  }
+  requireMeshAndOutput(cl);
+  vtkNew<slRadianceReference> filter;
+  configureLitFilter(cl, filter);
+  if (cl.has("envmap"))
+  {
+    filter->SetEnvironmentFileName(cl.get("envmap").c_str());
+  }
+  filter->SetEnvironmentScale(cl.getNumber("envmap-scale", 1.0, 0.0, 1e6));
+  filter->SetUseSceneLights(!cl.has("no-lights"));
+  filter->SetStrategy(strategyNumber(cl.get("sampling", "mis")));
+  filter->SetSamplesPerPoint(static_cast<int>(cl.getNumber("samples", 64, 1, 1 << 24)));
+  filter->SetSeed(static_cast<int>(cl.getNumber("seed", 1, 0, 2147483647.0)));
+  filter->SetLightRadius(cl.getNumber("light-radius", 0.0, 0.0, 1e30));
+  filter->SetDirectionalLightAngle(cl.getNumber("sun-angle", 0.5, 1e-4, 45.0));
+  filter->SetInputData(loadMeshWithNormals(cl.positional()[0]));
+  runLitFilter(filter);
+  writeMesh(filter->GetOutput(), cl.get("output"));
+  printSummary(filter->GetOutput());
+  std::cout << "wrote " << cl.get("output") << "\n";
+  return 0;
+}
+
+const CommandRegistration registration{ { 33, "reference",
+  "Monte Carlo reference of the radiance equation and its error against discrete lights", &runReference } };
+} // namespace
+
+} // namespace app
+} // namespace shadelab

@@ -1,0 +1,199 @@
+#include "slRadianceReference.h"
+
+#include "shadelab/RadianceEstimator.h"
+#include "slEnvironmentLoader.h"
+#include "slFloat3View.h"
+#include "slLightingSetup.h"
+#include "slRadianceKernel.h"
+
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkInformationVector.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkSMPTools.h>
+#include <vtkSmartPointer.h>
+
+#include <algorithm>
+#include <cmath>
+
+vtkStandardNewMacro(slRadianceReference);
+vtkCxxSetObjectMacro(slRadianceReference, EnvironmentMap, vtkImageData);
+
+namespace
+{
+vtkSmartPointer<vtkFloatArray> rgbArray(const char* name, vtkIdType n)
+{
+  auto a = vtkSmartPointer<vtkFloatArray>::New();
+  a->SetName(name);
+  a->SetNumberOfComponents(3);
+  a->SetNumberOfTuples(n);
+  return a;
+}
+
+void addSummary(vtkFieldData* field, const char* name, const glm::dvec3& v)
+{
+  vtkNew<vtkDoubleArray> a;
+  a->SetName(name);
+  a->SetNumberOfComponents(3);
+  a->InsertNextTuple3(v.x, v.y, v.z);
+  field->AddArray(a);
+}
+} // namespace
+
+slRadianceReference::slRadianceReference() = default;
+
+slRadianceReference::~slRadianceReference()
+{
+  this->SetEnvironmentFileName(nullptr);
+  this->SetEnvironmentMap(nullptr);
+}
+
+vtkMTimeType slRadianceReference::GetMTime()
+{
+  vtkMTimeType t = this->Superclass::GetMTime();
+  if (this->EnvironmentMap && this->EnvironmentMap->GetMTime() > t)
+  {
+    t = this->EnvironmentMap->GetMTime();
+  }
+  return t;
+}
+
+int slRadianceReference::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  using namespace shadelab;
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  this->ClearError();
+  LightingSetup setup;
+  if (!this->PrepareLighting(input, output, false, setup))
+  {
+    return 0;
+  }
+  shadelab::EnvironmentMap environment;
+  std::string problem;
+  if (this->EnvironmentFileName && *this->EnvironmentFileName)
+  {
+    problem = environmentFromFile(this->EnvironmentFileName, environment);
+  }
+  else if (this->EnvironmentMap)
+  {
+    problem = environmentFromImage(this->EnvironmentMap, "EnvironmentMap", environment);
+  }
+  if (!problem.empty())
+  {
+    return this->Fail(output, problem);
+  }
+  const bool anyLight = std::any_of(setup.lights.begin(), setup.lights.end(),
+    [](const glsl::slLight& l) { return l.type != glsl::SL_LIGHT_AMBIENT; });
+  if (environment.empty() && !(this->UseSceneLights && anyLight))
+  {
+    return this->Fail(output, "no light for the reference: give an environment map or a scene with (non-ambient) lights");
+  }
+
+  ReferenceSetup reference;
+  reference.lights = setup.lights;
+  reference.useLights = this->UseSceneLights;
+  reference.lightRadius =
+    static_cast<float>(this->LightRadius > 0.0 ? this->LightRadius : 0.01 * input->GetLength());
+  reference.directionalAngularRadius = static_cast<float>(this->DirectionalLightAngle * 3.14159265358979323846 / 180.0);
+  reference.environment = environment.empty() ? nullptr : &environment;
+  reference.environmentScale = static_cast<float>(this->EnvironmentScale);
+  reference.material = setup.material;
+  reference.model = setup.model;
+  reference.strategy = static_cast<SamplingStrategy>(this->Strategy);
+  reference.samples = this->SamplesPerPoint;
+  reference.seed = static_cast<std::uint64_t>(static_cast<std::uint32_t>(this->Seed));
+
+  output->ShallowCopy(input);
+  const vtkIdType n = input->GetNumberOfPoints();
+  const Float3View points(input->GetPoints()->GetData());
+  const Float3View normals(input->GetPointData()->GetNormals());
+  auto radiance = rgbArray("Radiance", n), stdError = rgbArray("RadianceStdError", n);
+  auto discrete = rgbArray("DiscreteRadiance", n), error = rgbArray("RadianceError", n);
+  auto ambient = rgbArray("Ambient", n), diffuse = rgbArray("Diffuse", n), specular = rgbArray("Specular", n),
+       emission = rgbArray("Emission", n);
+
+  // The discrete lighting equation, as slRadianceFilter evaluates it.
+  RadianceKernelInput in;
+  in.points = points.data();
+  in.normals = normals.data();
+  in.lights = setup.lights;
+  in.material = setup.material;
+  in.model = setup.model;
+  in.eye = setup.eye;
+  RadianceKernelOutput out;
+  out.ambient = ambient->GetPointer(0);
+  out.diffuse = diffuse->GetPointer(0);
+  out.specular = specular->GetPointer(0);
+  out.emission = emission->GetPointer(0);
+  out.radiance = discrete->GetPointer(0);
+  vtkSMPTools::For(0, n, 1024, [&](vtkIdType begin, vtkIdType end) { shadeRange(in, out, begin, end); });
+
+  // The reference, in batches so that progress can be reported from this thread.
+  float* r = radiance->GetPointer(0);
+  float* s = stdError->GetPointer(0);
+  const vtkIdType batches = std::min<vtkIdType>(n, 50);
+  for (vtkIdType b = 0; b < batches; ++b)
+  {
+    vtkSMPTools::For(b * n / batches, (b + 1) * n / batches, [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const RadianceEstimate e =
+          estimateRadiance(reference, points[i], normals[i], setup.eye, static_cast<std::uint64_t>(i));
+        for (int c = 0; c < 3; ++c)
+        {
+          r[3 * i + c] = std::isfinite(e.mean[c]) ? e.mean[c] : 0.0f;
+          s[3 * i + c] = std::isfinite(e.stdError[c]) ? e.stdError[c] : 0.0f;
+        }
+      }
+    });
+    this->UpdateProgress(static_cast<double>(b + 1) / batches);
+    if (this->GetAbortExecute())
+    {
+      return this->Fail(output, "aborted");
+    }
+  }
+
+  glm::dvec3 sum(0.0), sumSquares(0.0), maxAbs(0.0), sumStdError(0.0);
+  const float* d = discrete->GetPointer(0);
+  float* e = error->GetPointer(0);
+  for (vtkIdType i = 0; i < 3 * n; ++i)
+  {
+    e[i] = r[i] - d[i];
+    const int c = static_cast<int>(i % 3);
+    sum[c] += e[i];
+    sumSquares[c] += static_cast<double>(e[i]) * e[i];
+    maxAbs[c] = std::max(maxAbs[c], static_cast<double>(std::abs(e[i])));
+    sumStdError[c] += s[i];
+  }
+  vtkPointData* pd = output->GetPointData();
+  for (vtkFloatArray* a : { radiance.Get(), stdError.Get(), discrete.Get(), error.Get() })
+  {
+    pd->AddArray(a);
+  }
+  vtkFieldData* field = output->GetFieldData();
+  addSummary(field, "RadianceErrorMean", sum / static_cast<double>(n));
+  addSummary(field, "RadianceErrorRMS", glm::sqrt(sumSquares / static_cast<double>(n)));
+  addSummary(field, "RadianceErrorMaxAbs", maxAbs);
+  addSummary(field, "MeanStdError", sumStdError / static_cast<double>(n));
+  return 1;
+}
+
+void slRadianceReference::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Strategy: " << this->Strategy << "\n";
+  os << indent << "SamplesPerPoint: " << this->SamplesPerPoint << "\n";
+  os << indent << "Seed: " << this->Seed << "\n";
+  os << indent << "EnvironmentFileName: " << (this->EnvironmentFileName ? this->EnvironmentFileName : "(none)") << "\n";
+  os << indent << "EnvironmentMap: " << this->EnvironmentMap << "\n";
+  os << indent << "EnvironmentScale: " << this->EnvironmentScale << "\n";
+  os << indent << "UseSceneLights: " << this->UseSceneLights << "\n";
+  os << indent << "LightRadius: " << this->LightRadius << "\n";
+  os << indent << "DirectionalLightAngle: " << this->DirectionalLightAngle << "\n";
+}

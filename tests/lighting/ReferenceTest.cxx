@@ -1,0 +1,290 @@
+// slRadianceReference: the Monte Carlo radiance equation against analytic
+// values (white furnace, uniform sky), the discrete Lambert formula for a
+// small distant light, zero variance where theory says so, and 1/sqrt(N).
+#include "LightingTestMeshes.h"
+
+#include "../filters/TestFolder.h"
+#include "slRadianceReference.h"
+
+#include <vtkCallbackCommand.h>
+#include <vtkFieldData.h>
+#include <vtkImageData.h>
+
+#include <gtest/gtest.h>
+
+#include <iostream>
+
+using namespace shadelab;
+using namespace shadelab::test;
+
+namespace
+{
+/// A constant equirectangular environment of radiance @p rgb (16 x 8 texels).
+vtkSmartPointer<vtkImageData> constantSky(const glm::vec3& rgb, int width = 16, int height = 8)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(width, height, 1);
+  vtkNew<vtkFloatArray> pixels;
+  pixels->SetNumberOfComponents(3);
+  for (int i = 0; i < width * height; ++i)
+  {
+    pixels->InsertNextTuple3(rgb.x, rgb.y, rgb.z);
+  }
+  image->GetPointData()->SetScalars(pixels);
+  return image;
+}
+
+/// A scene with material k_d and no ambient, specular or emission.
+vtkSmartPointer<slScene> lambertScene(const std::vector<SceneLight>& lights, const glm::vec3& kd)
+{
+  vtkSmartPointer<slScene> scene = makeScene(lights, ShadingModel::LambertNormalized);
+  Scene s = scene->GetScene();
+  s.material.ambient = s.material.specular = s.material.emission = glm::vec3(0.0f);
+  s.material.diffuse = kd;
+  scene->SetScene(s);
+  return scene;
+}
+
+vtkSmartPointer<vtkPolyData> reference(slRadianceReference* filter, vtkPolyData* mesh)
+{
+  filter->SetInputData(mesh);
+  filter->Update();
+  EXPECT_STREQ(filter->GetErrorMessage(), "");
+  return filter->GetOutput();
+}
+
+/// Checks that every point's estimate is within 5 sigma of @p expected, and
+/// the mean over points within 3 sigma of the mean (+ @p slack).
+void expectWithinSigma(vtkPolyData* out, const glm::vec3& expected, double slack = 1e-5)
+{
+  const vtkIdType n = out->GetNumberOfPoints();
+  for (int c = 0; c < 3; ++c)
+  {
+    double sum = 0.0, variance = 0.0;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      const double x = tuple3(out, "Radiance", i)[c], sigma = tuple3(out, "RadianceStdError", i)[c];
+      EXPECT_LE(std::abs(x - expected[c]), 5.0 * sigma + slack) << "point " << i << " channel " << c;
+      sum += x;
+      variance += sigma * sigma;
+    }
+    EXPECT_LE(std::abs(sum / n - expected[c]), 3.0 * std::sqrt(variance) / n + slack) << "channel " << c;
+  }
+}
+} // namespace
+
+TEST(RadianceReference, WhiteFurnaceGivesOneForEveryStrategy)
+{
+  for (int strategy = 0; strategy <= 4; ++strategy)
+  {
+    vtkNew<slRadianceReference> filter;
+    filter->SetScene(lambertScene({}, glm::vec3(1.0f)));
+    filter->UseSceneLightsOff();
+    filter->SetEnvironmentMap(constantSky(glm::vec3(1.0f)));
+    filter->SetStrategy(strategy);
+    filter->SetSamplesPerPoint(64);
+    vtkPolyData* out = reference(filter, sphere(8));
+    SCOPED_TRACE("strategy " + std::to_string(strategy));
+    expectWithinSigma(out, glm::vec3(1.0f));
+  }
+}
+
+TEST(RadianceReference, UniformSkyOnLambertGivesAlbedoTimesSky)
+{
+  const glm::vec3 sky(0.7f, 0.5f, 2.0f), kd(0.8f, 0.6f, 0.25f);
+  vtkNew<slRadianceReference> filter;
+  filter->SetScene(lambertScene({}, kd));
+  filter->SetEnvironmentMap(constantSky(sky));
+  filter->SetStrategyToUniform();
+  filter->SetSamplesPerPoint(128);
+  expectWithinSigma(reference(filter, sphere(8)), kd * sky);
+}
+
+TEST(RadianceReference, CosineWeightedLambertUnderUniformSkyHasZeroVariance)
+{
+  const glm::vec3 sky(1.5f), kd(0.5f, 0.25f, 1.0f);
+  vtkNew<slRadianceReference> filter;
+  filter->SetScene(lambertScene({}, kd));
+  filter->SetEnvironmentMap(constantSky(sky));
+  filter->SetStrategyToCosine();
+  filter->SetSamplesPerPoint(16);
+  vtkPolyData* out = reference(filter, sphere(8));
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      EXPECT_LT(tuple3(out, "RadianceStdError", i)[c], 1e-6);
+      EXPECT_NEAR(tuple3(out, "Radiance", i)[c], kd[c] * sky[c], 1e-5);
+    }
+  }
+}
+
+TEST(RadianceReference, SmallDistantLightAgreesWithDiscreteLambert)
+{
+  // A directional light of 0.25 degrees angular radius: the reference must
+  // match (k_d / pi) I cos(theta), computed here, to well under a percent.
+  SceneLight sun = whiteLight(LightType::Directional);
+  sun.direction = -glm::normalize(glm::vec3(0.3f, 0.5f, 1.0f));
+  sun.intensity = 3.0f;
+  const glm::vec3 kd(0.9f, 0.5f, 0.2f);
+  for (int strategy : { slRadianceReference::LIGHT, slRadianceReference::MIS })
+  {
+    vtkNew<slRadianceReference> filter;
+    filter->SetScene(lambertScene({ sun }, kd));
+    filter->SetDirectionalLightAngle(0.25);
+    filter->SetStrategy(strategy);
+    filter->SetSamplesPerPoint(32);
+    vtkSmartPointer<vtkPolyData> mesh = sphere(10);
+    vtkPolyData* out = reference(filter, mesh);
+    const glm::vec3 L = -glm::normalize(sun.direction);
+    for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+    {
+      double n[3];
+      mesh->GetPointData()->GetNormals()->GetTuple(i, n);
+      const double cosTheta = (n[0] * L.x + n[1] * L.y + n[2] * L.z) / std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      if (cosTheta < 0.05)
+      {
+        continue; // the light's disc straddles the horizon
+      }
+      for (int c = 0; c < 3; ++c)
+      {
+        const double expected = kd[c] / kPi * 3.0 * cosTheta;
+        EXPECT_NEAR(tuple3(out, "Radiance", i)[c], expected, 0.005 * expected + 3.0 * tuple3(out, "RadianceStdError", i)[c])
+          << "strategy " << strategy << " point " << i;
+        EXPECT_NEAR(tuple3(out, "DiscreteRadiance", i)[c], expected, 1e-5);
+      }
+    }
+    vtkDataArray* rms = out->GetFieldData()->GetArray("RadianceErrorRMS");
+    ASSERT_NE(rms, nullptr);
+    EXPECT_LT(rms->GetComponent(0, 0), 0.01);
+  }
+}
+
+TEST(RadianceReference, ErrorFollowsOneOverSqrtN)
+{
+  // MIS on a Blinn-Phong surface under the studio environment:
+  // RMSE against a 16384-sample MIS reference falls by ~2 per 4x samples.
+  const std::string envmap = std::string(SHADELAB_SHARED_DATA_DIR) + "/envmaps/studio_small_03_1k.hdr";
+  vtkSmartPointer<vtkPolyData> mesh = sphere(6);
+  auto run = [&](int strategy, int samples, int seed) {
+    vtkNew<slRadianceReference> filter;
+    vtkSmartPointer<slScene> scene = makeScene({}, ShadingModel::BlinnPhongNormalized);
+    filter->SetScene(scene);
+    filter->SetEnvironmentFileName(envmap.c_str());
+    filter->SetStrategy(strategy);
+    filter->SetSamplesPerPoint(samples);
+    filter->SetSeed(seed);
+    vtkSmartPointer<vtkPolyData> out = reference(filter, mesh);
+    return out;
+  };
+  vtkSmartPointer<vtkPolyData> truth = run(slRadianceReference::MIS, 16384, 99);
+  std::vector<double> rmse;
+  for (int samples : { 16, 64, 256 })
+  {
+    double sum = 0.0;
+    int count = 0;
+    for (int seed = 1; seed <= 4; ++seed)
+    {
+      vtkSmartPointer<vtkPolyData> out = run(slRadianceReference::MIS, samples, seed);
+      for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+      {
+        const double d = tuple3(out, "Radiance", i)[1] - tuple3(truth, "Radiance", i)[1];
+        sum += d * d;
+        ++count;
+      }
+    }
+    rmse.push_back(std::sqrt(sum / count));
+  }
+  EXPECT_NEAR(rmse[0] / rmse[1], 2.0, 0.5);
+  EXPECT_NEAR(rmse[1] / rmse[2], 2.0, 0.5);
+  std::cout << "RMSE at 16, 64, 256 samples: " << rmse[0] << " " << rmse[1] << " " << rmse[2] << "\n";
+}
+
+TEST(RadianceReference, SameSeedSameResultAndProgressIsReported)
+{
+  int progressEvents = 0;
+  vtkNew<vtkCallbackCommand> onProgress;
+  onProgress->SetClientData(&progressEvents);
+  onProgress->SetCallback([](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
+  vtkSmartPointer<vtkPolyData> a, b;
+  for (auto* out : { &a, &b })
+  {
+    vtkNew<slRadianceReference> filter;
+    filter->SetScene(lambertScene({}, glm::vec3(0.5f)));
+    filter->SetEnvironmentMap(constantSky(glm::vec3(1.0f, 2.0f, 3.0f)));
+    filter->SetStrategyToUniform();
+    filter->SetSamplesPerPoint(8);
+    filter->AddObserver(vtkCommand::ProgressEvent, onProgress);
+    *out = reference(filter, sphere(8));
+  }
+  for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+  {
+    EXPECT_EQ(tuple3(a, "Radiance", i), tuple3(b, "Radiance", i));
+  }
+  EXPECT_GT(progressEvents, 10);
+}
+
+TEST(RadianceReference, BadEnvironmentMapsAndNoLight)
+{
+  TestFolder folder;
+  folder.write("broken.hdr", "this is not an image");
+  auto expectError = [](slRadianceReference* filter, const std::string& message) {
+    filter->SetGlobalWarningDisplay(0);
+    filter->SetInputData(sphere(6));
+    filter->Update();
+    EXPECT_EQ(filter->GetErrorMessage(), message);
+    EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+  };
+  {
+    vtkNew<slRadianceReference> filter;
+    filter->SetEnvironmentFileName("/nonexistent/sky.hdr");
+    filter->SetInputData(sphere(6));
+    filter->SetGlobalWarningDisplay(0);
+    filter->Update();
+    EXPECT_EQ(std::string(filter->GetErrorMessage()).rfind("/nonexistent/sky.hdr: cannot read image", 0), 0u)
+      << filter->GetErrorMessage();
+  }
+  {
+    vtkNew<slRadianceReference> filter;
+    filter->SetEnvironmentFileName(folder.path("broken.hdr").c_str());
+    filter->SetInputData(sphere(6));
+    filter->SetGlobalWarningDisplay(0);
+    filter->Update();
+    EXPECT_EQ(std::string(filter->GetErrorMessage()).rfind(folder.path("broken.hdr") + ": cannot read image", 0), 0u)
+      << filter->GetErrorMessage();
+  }
+  {
+    vtkNew<slRadianceReference> filter;
+    filter->SetEnvironmentMap(constantSky(glm::vec3(1.0f), 8, 8));
+    expectError(filter, "EnvironmentMap: environment map is 8 x 8 pixels; an equirectangular environment map must be "
+                        "twice as wide as it is high");
+  }
+  {
+    vtkNew<slRadianceReference> filter;
+    filter->SetScene(lambertScene({}, glm::vec3(1.0f)));
+    expectError(filter, "no light for the reference: give an environment map or a scene with (non-ambient) lights");
+  }
+}
+
+TEST(RadianceReference, DegenerateMeshGivesNoNaN)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  vtkSmartPointer<vtkPolyData> mesh = pointsWithNormals(
+    { { 0, 0, 0, 0, 0, 0 }, { 0, 0, 0, nan, 0, 1 }, { 1, 1, 1, 0, 0, 1 }, { 0, 0, 10, 0, 0, 1 } });
+  SceneLight point = whiteLight(LightType::Point);
+  point.position = glm::vec3(1.0f, 1.0f, 1.0f);
+  for (int strategy = 0; strategy <= 4; ++strategy)
+  {
+    for (int model = 0; model < 6; ++model)
+    {
+      vtkNew<slRadianceReference> filter;
+      filter->SetScene(makeScene({ point }, static_cast<ShadingModel>(model), glm::vec3(0.0f, 0.0f, 10.0f)));
+      filter->SetEnvironmentMap(constantSky(glm::vec3(1.0f)));
+      filter->ZeroNormalsAreErrorsOff();
+      filter->SetStrategy(strategy);
+      filter->SetSamplesPerPoint(8);
+      vtkPolyData* out = reference(filter, mesh);
+      EXPECT_TRUE(allFinite(out)) << strategy << " " << model;
+    }
+  }
+}
