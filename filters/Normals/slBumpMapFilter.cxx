@@ -1,0 +1,54 @@
+#include "slBumpMapFilter.h"
+
+#include "slDetailInputs.h"
+
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkObjectFactory.h>
+#include <vtkPolyData.h>
+#include <vtkSMPTools.h>
+
+vtkStandardNewMacro(slBumpMapFilter);
+
+slBumpMapFilter::slBumpMapFilter() = default;
+
+slBumpMapFilter::~slBumpMapFilter()
+{
+  this->SetFileName(nullptr);
+}
+
+int slBumpMapFilter::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  output->Initialize();
+  slSurfaceFrames frames;
+  slnormals::Texture height;
+  const std::string problem = slPrepareDetail(input, this->FileName, true, frames, height);
+  if (!problem.empty())
+  {
+    vtkErrorMacro(<< problem);
+    return 0;
+  }
+  // 1 − h has the gradient of h negated: invert through the scale's sign.
+  const double scale = this->InvertHeight ? -this->Scale : this->Scale;
+  std::vector<glm::dvec3> normals(frames.normal.size());
+  vtkSMPTools::For(0, static_cast<vtkIdType>(normals.size()), 4096, [&](vtkIdType b, vtkIdType e) {
+    for (vtkIdType i = b; i < e; ++i)
+    {
+      const size_t s = static_cast<size_t>(i);
+      const glm::dvec3 ts = slnormals::bumpNormal(height, frames.uv[s].x, frames.uv[s].y, scale);
+      normals[s] = slnormals::toObjectSpace(ts, frames.normal[s], frames.tangent[s], frames.handedness[s]);
+    }
+  });
+  slOutputWithNormals(output, frames.mesh, normals);
+  return 1;
+}
+
+void slBumpMapFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "Scale: " << this->Scale << "\n";
+  os << indent << "InvertHeight: " << this->InvertHeight << "\n";
+}

@@ -1,0 +1,59 @@
+#include "slNormalMapFilter.h"
+
+#include "slDetailInputs.h"
+
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkObjectFactory.h>
+#include <vtkPolyData.h>
+#include <vtkSMPTools.h>
+
+vtkStandardNewMacro(slNormalMapFilter);
+
+slNormalMapFilter::slNormalMapFilter() = default;
+
+slNormalMapFilter::~slNormalMapFilter()
+{
+  this->SetFileName(nullptr);
+}
+
+int slNormalMapFilter::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  output->Initialize();
+  slSurfaceFrames frames;
+  slnormals::Texture map;
+  const std::string problem = slPrepareDetail(input, this->FileName, true, frames, map);
+  if (!problem.empty())
+  {
+    vtkErrorMacro(<< problem);
+    return 0;
+  }
+  if (map.channels < 3)
+  {
+    vtkErrorMacro(<< this->FileName << ": a normal map needs 3 channels (RGB), the image has " << map.channels);
+    return 0;
+  }
+  std::vector<glm::dvec3> normals(frames.normal.size());
+  vtkSMPTools::For(0, static_cast<vtkIdType>(normals.size()), 4096, [&](vtkIdType b, vtkIdType e) {
+    for (vtkIdType i = b; i < e; ++i)
+    {
+      const size_t s = static_cast<size_t>(i);
+      const glm::dvec2 uv = frames.uv[s];
+      const glm::dvec3 rgb(map.sample(uv.x, uv.y, 0), map.sample(uv.x, uv.y, 1), map.sample(uv.x, uv.y, 2));
+      const glm::dvec3 ts = slnormals::decodeNormal(rgb, this->GreenDown, this->Strength);
+      normals[s] = slnormals::toObjectSpace(ts, frames.normal[s], frames.tangent[s], frames.handedness[s]);
+    }
+  });
+  slOutputWithNormals(output, frames.mesh, normals);
+  return 1;
+}
+
+void slNormalMapFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "Strength: " << this->Strength << "\n";
+  os << indent << "GreenDown: " << this->GreenDown << "\n";
+}
