@@ -3,9 +3,13 @@
 // against a vectorised numpy implementation of the same formula run in the
 // same process tree by /usr/bin/python3. Prints medians and the ratio.
 //
-// usage: shadelab_bench_lighting [--grid N] [--repetitions R] [--no-numpy]
+// It also measures Monte Carlo throughput of slRadianceReference, and with
+// --rmse-table prints the RMSE-against-N table of docs/lighting-cpu.md.
+//
+// usage: shadelab_bench_lighting [--grid N] [--repetitions R] [--no-numpy] [--rmse-table]
 #include "shadelab/Scene.h"
 #include "slRadianceFilter.h"
+#include "slRadianceReference.h"
 #include "slScene.h"
 
 #include <vtkFloatArray.h>
@@ -14,6 +18,7 @@
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkSMPTools.h>
+#include <vtkSphereSource.h>
 
 #include <algorithm>
 #include <chrono>
@@ -121,12 +126,104 @@ double runNumpy(const std::string& setup, std::string& firstRadiance)
   }
   return seconds;
 }
+const std::string kEnvironment = std::string(SHADELAB_SHARED_DATA_DIR) + "/envmaps/venice_sunset_1k.hdr";
+
+vtkSmartPointer<vtkPolyData> sphereMesh(int resolution)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(resolution);
+  sphere->SetPhiResolution(resolution);
+  sphere->Update();
+  vtkSmartPointer<vtkPolyData> mesh = sphere->GetOutput();
+  return mesh;
+}
+
+/// A Blinn-Phong-normalised material under the bench's first two lights.
+vtkSmartPointer<slScene> referenceScene()
+{
+  shadelab::Scene s = benchScene();
+  s.lights.resize(2);
+  s.model = shadelab::ShadingModel::BlinnPhongNormalized;
+  auto scene = vtkSmartPointer<slScene>::New();
+  scene->SetScene(s);
+  return scene;
+}
+
+vtkSmartPointer<vtkPolyData> runReference(vtkPolyData* mesh, int strategy, int samples, int seed, bool lights = true)
+{
+  vtkNew<slRadianceReference> reference;
+  reference->SetUseSceneLights(lights);
+  reference->SetInputData(mesh);
+  reference->SetScene(referenceScene());
+  reference->SetEnvironmentFileName(kEnvironment.c_str());
+  reference->SetStrategy(strategy);
+  reference->SetSamplesPerPoint(samples);
+  reference->SetSeed(seed);
+  reference->Update();
+  if (*reference->GetErrorMessage())
+  {
+    std::fprintf(stderr, "%s\n", reference->GetErrorMessage());
+    std::exit(1);
+  }
+  vtkSmartPointer<vtkPolyData> out = reference->GetOutput();
+  return out;
+}
+
+/// Monte Carlo throughput: samples (estimator evaluations) per second, per strategy.
+void monteCarloThroughput(int repetitions)
+{
+  vtkSmartPointer<vtkPolyData> mesh = sphereMesh(100);
+  const char* names[] = { "uniform", "cosine", "brdf", "light", "mis" };
+  const int samples = 64;
+  for (int strategy = 0; strategy <= 4; ++strategy)
+  {
+    const double seconds = median(timeRuns(std::max(3, repetitions / 2), [&] { runReference(mesh, strategy, samples, 1); }));
+    const double perIteration = strategy == 4 ? 2.0 : 1.0; // MIS draws a BRDF and a light sample
+    std::printf("slRadianceReference %-7s: %lld points x %d: median %.3f s = %.2f M samples/s\n", names[strategy],
+      static_cast<long long>(mesh->GetNumberOfPoints()), samples, seconds,
+      mesh->GetNumberOfPoints() * samples * perIteration / seconds * 1e-6);
+  }
+}
+
+/// RMSE of the green channel against a 16384-sample MIS estimate, over the
+/// points of a small sphere and 4 seeds, for N = 4 ... 1024.
+void rmseTable(bool lights)
+{
+  vtkSmartPointer<vtkPolyData> mesh = sphereMesh(16);
+  vtkSmartPointer<vtkPolyData> truth = runReference(mesh, 4, 16384, 12345, lights);
+  vtkDataArray* t = truth->GetPointData()->GetArray("Radiance");
+  std::printf("\nRMSE, %s, %lld points x 4 seeds\n", lights ? "environment + 2 spherical lights" : "environment only",
+    static_cast<long long>(mesh->GetNumberOfPoints()));
+  std::printf("| N | uniform | cosine | brdf | light | mis |\n|---|---|---|---|---|---|\n");
+  for (int n = 4; n <= 1024; n *= 4)
+  {
+    std::printf("| %d |", n);
+    for (int strategy = 0; strategy <= 4; ++strategy)
+    {
+      double sum = 0.0;
+      vtkIdType count = 0;
+      for (int seed = 1; seed <= 4; ++seed)
+      {
+        vtkSmartPointer<vtkPolyData> out = runReference(mesh, strategy, n, seed, lights);
+        vtkDataArray* r = out->GetPointData()->GetArray("Radiance");
+        for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+        {
+          const double d = r->GetComponent(i, 1) - t->GetComponent(i, 1);
+          sum += d * d;
+          ++count;
+        }
+      }
+      std::printf(" %.4g |", std::sqrt(sum / count));
+    }
+    std::printf("\n");
+  }
+}
 } // namespace
 
 int main(int argc, char** argv)
 {
   int grid = 1000, repetitions = 7;
-  bool numpy = true;
+  bool numpy = true, table = false;
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -142,9 +239,13 @@ int main(int argc, char** argv)
     {
       numpy = false;
     }
+    else if (a == "--rmse-table")
+    {
+      table = true;
+    }
     else
     {
-      std::cerr << "usage: shadelab_bench_lighting [--grid N] [--repetitions R] [--no-numpy]\n";
+      std::cerr << "usage: shadelab_bench_lighting [--grid N] [--repetitions R] [--no-numpy] [--rmse-table]\n";
       return 2;
     }
   }
@@ -191,5 +292,15 @@ int main(int argc, char** argv)
     std::printf("  first vertex Radiance: %s", first.c_str());
     std::printf("ratio slRadianceFilter / numpy: %.1fx (target >= 25)\n", py / cpp);
   }
+  monteCarloThroughput(repetitions);
+  if (table)
+  {
+    rmseTable(false);
+    rmseTable(true);
+  }
+  std::ifstream load("/proc/loadavg");
+  std::string loadavg;
+  std::getline(load, loadavg);
+  std::printf("load average at the end (other processes share the 2 cores): %s\n", loadavg.c_str());
   return 0;
 }

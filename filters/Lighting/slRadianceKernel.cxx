@@ -48,6 +48,8 @@ struct Block
   float terms[3][3][kBlock];
   float lightTotal[3][kBlock];
   float kd[3][kBlock];
+  float position[3][kBlock];
+  float normal[3][kBlock];
 };
 
 glm::vec3 load(const float* a, long long i)
@@ -65,18 +67,18 @@ void store(float* a, long long i, const glm::vec3& v)
 /// One light over one block, MODEL and TYPE known at compile time.
 template <int MODEL, int TYPE>
 __attribute__((always_inline)) inline void shadeLightBlock(const glslv::slLight& light0,
-  const glslv::slMaterial& material, const RadianceKernelInput& in, long long first, int count, Block& block)
+  const glslv::slMaterial& material, const RadianceKernelInput& in, int count, Block& block)
 {
   glslv::slLight light = light0;
   light.type = TYPE;
   const glm::vec3 eye = in.eye;
-  const float* points = in.points + 3 * first;
-  const float* normals = in.normals + 3 * first;
   for (int i = 0; i < count; ++i)
   {
     glslv::slMaterial m = material;
     m.diffuse = glm::vec3(block.kd[0][i], block.kd[1][i], block.kd[2][i]);
-    const glslv::slTerms t = glslv::slShadeLight(light, m, MODEL, load(points, i), load(normals, i), eye);
+    const glm::vec3 P(block.position[0][i], block.position[1][i], block.position[2][i]);
+    const glm::vec3 N(block.normal[0][i], block.normal[1][i], block.normal[2][i]);
+    const glslv::slTerms t = glslv::slShadeLight(light, m, MODEL, P, N, eye);
     const glm::vec3 terms[3] = { t.ambient, t.diffuse, t.specular };
     for (int k = 0; k < 3; ++k)
     {
@@ -100,25 +102,29 @@ __attribute__((always_inline)) inline void shadeBlock(const RadianceKernelInput&
   for (int i = 0; i < count; ++i)
   {
     const glm::vec3 kd = in.diffuse ? load(in.diffuse, first + i) : material.diffuse;
-    block.kd[0][i] = kd.x;
-    block.kd[1][i] = kd.y;
-    block.kd[2][i] = kd.z;
+    const glm::vec3 P = load(in.points, first + i), N = load(in.normals, first + i);
+    for (int c = 0; c < 3; ++c)
+    {
+      block.kd[c][i] = kd[c];
+      block.position[c][i] = P[c];
+      block.normal[c][i] = N[c];
+    }
   }
   for (size_t l = 0; l < lights.size(); ++l)
   {
     switch (lights[l].type)
     {
       case glsl::SL_LIGHT_DIRECTIONAL:
-        shadeLightBlock<MODEL, glsl::SL_LIGHT_DIRECTIONAL>(lights[l], material, in, first, count, block);
+        shadeLightBlock<MODEL, glsl::SL_LIGHT_DIRECTIONAL>(lights[l], material, in, count, block);
         break;
       case glsl::SL_LIGHT_POINT:
-        shadeLightBlock<MODEL, glsl::SL_LIGHT_POINT>(lights[l], material, in, first, count, block);
+        shadeLightBlock<MODEL, glsl::SL_LIGHT_POINT>(lights[l], material, in, count, block);
         break;
       case glsl::SL_LIGHT_SPOT:
-        shadeLightBlock<MODEL, glsl::SL_LIGHT_SPOT>(lights[l], material, in, first, count, block);
+        shadeLightBlock<MODEL, glsl::SL_LIGHT_SPOT>(lights[l], material, in, count, block);
         break;
       default:
-        shadeLightBlock<MODEL, glsl::SL_LIGHT_AMBIENT>(lights[l], material, in, first, count, block);
+        shadeLightBlock<MODEL, glsl::SL_LIGHT_AMBIENT>(lights[l], material, in, count, block);
         break;
     }
     if (!out.perLight.empty())
