@@ -1,9 +1,8 @@
 #include "NormalsOptions.h"
 
-#include "slErrorCapture.h"
+#include "slPolyDataFilter.h"
 #include "slPolyDataNormals.h"
 
-#include <vtkAlgorithm.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
 
@@ -49,14 +48,12 @@ void applyNormalsOptions(const CommandLine& cl, slPolyDataNormals* filter)
   filter->SetWeldCoincidentPoints(cl.has("weld"));
 }
 
-vtkSmartPointer<vtkPolyData> runMeshFilter(vtkAlgorithm* filter, const std::string& meshPath)
+vtkSmartPointer<vtkPolyData> runMeshFilter(slPolyDataFilter* filter, const std::string& meshPath)
 {
-  vtkNew<slErrorCapture> errors;
-  errors->Watch(filter);
   filter->Update();
-  if (errors->HasError())
+  if (*filter->GetErrorMessage())
   {
-    throw JobError(meshPath + ": " + errors->GetLastError());
+    throw JobError(meshPath + ": " + filter->GetErrorMessage());
   }
   auto out = vtkSmartPointer<vtkPolyData>::New();
   out->ShallowCopy(vtkPolyData::SafeDownCast(filter->GetOutputDataObject(0)));

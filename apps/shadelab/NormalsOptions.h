@@ -14,7 +14,7 @@
 #include <vector>
 
 class slPolyDataNormals;
-class vtkAlgorithm;
+class slPolyDataFilter;
 class vtkPolyData;
 
 namespace shadelab
@@ -30,7 +30,7 @@ void applyNormalsOptions(const CommandLine& cl, slPolyDataNormals* filter);
 
 /// Updates @p filter (fed with the mesh read from @p meshPath) and returns a
 /// copy of its output. Throws JobError("MESH: problem") if it reports an error.
-vtkSmartPointer<vtkPolyData> runMeshFilter(vtkAlgorithm* filter, const std::string& meshPath);
+vtkSmartPointer<vtkPolyData> runMeshFilter(slPolyDataFilter* filter, const std::string& meshPath);
 
 /// Prints "shadelab CMD: note: ..." when @p mesh has vertex or line cells.
 void noteNonPolygonCells(vtkPolyData* mesh, const std::string& command, const std::string& meshPath);

@@ -22,13 +22,13 @@ int slBumpMapFilter::RequestData(vtkInformation*, vtkInformationVector** inputVe
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   output->Initialize();
+  this->ClearError();
   slSurfaceFrames frames;
   slnormals::Texture height;
   const std::string problem = slPrepareDetail(input, this->FileName, true, frames, height);
   if (!problem.empty())
   {
-    vtkErrorMacro(<< problem);
-    return 0;
+    return this->Fail(problem, output);
   }
   // 1 − h has the gradient of h negated: invert through the scale's sign.
   const double scale = this->InvertHeight ? -this->Scale : this->Scale;

@@ -22,13 +22,13 @@
 
 #include "ShadeLabNormalsModule.h"
 
-#include <vtkPolyDataAlgorithm.h>
+#include "slPolyDataFilter.h"
 
-class SHADELABNORMALS_EXPORT slBumpMapFilter : public vtkPolyDataAlgorithm
+class SHADELABNORMALS_EXPORT slBumpMapFilter : public slPolyDataFilter
 {
 public:
   static slBumpMapFilter* New();
-  vtkTypeMacro(slBumpMapFilter, vtkPolyDataAlgorithm);
+  vtkTypeMacro(slBumpMapFilter, slPolyDataFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{

@@ -78,12 +78,10 @@ std::string slGetSurfaceFrames(vtkPolyData* input, bool needTangents, slSurfaceF
   {
     vtkNew<slPolyDataTangents> tangents;
     tangents->SetInputData(mesh);
-    vtkNew<slErrorCapture> errors;
-    errors->Watch(tangents);
     tangents->Update();
-    if (errors->HasError())
+    if (*tangents->GetErrorMessage())
     {
-      return errors->GetLastError();
+      return tangents->GetErrorMessage();
     }
     mesh = tangents->GetOutput();
   }

@@ -26,13 +26,13 @@ int slDisplacementFilter::RequestData(vtkInformation*, vtkInformationVector** in
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   output->Initialize();
+  this->ClearError();
   slSurfaceFrames frames;
   slnormals::Texture height;
   const std::string problem = slPrepareDetail(input, this->FileName, false, frames, height);
   if (!problem.empty())
   {
-    vtkErrorMacro(<< problem);
-    return 0;
+    return this->Fail(problem, output);
   }
   vtkPoints* in = frames.mesh->GetPoints();
   vtkNew<vtkPoints> moved;

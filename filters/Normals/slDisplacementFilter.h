@@ -21,13 +21,13 @@
 
 #include "ShadeLabNormalsModule.h"
 
-#include <vtkPolyDataAlgorithm.h>
+#include "slPolyDataFilter.h"
 
-class SHADELABNORMALS_EXPORT slDisplacementFilter : public vtkPolyDataAlgorithm
+class SHADELABNORMALS_EXPORT slDisplacementFilter : public slPolyDataFilter
 {
 public:
   static slDisplacementFilter* New();
-  vtkTypeMacro(slDisplacementFilter, vtkPolyDataAlgorithm);
+  vtkTypeMacro(slDisplacementFilter, slPolyDataFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{

@@ -22,18 +22,17 @@ int slNormalMapFilter::RequestData(vtkInformation*, vtkInformationVector** input
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   output->Initialize();
+  this->ClearError();
   slSurfaceFrames frames;
   slnormals::Texture map;
   const std::string problem = slPrepareDetail(input, this->FileName, true, frames, map);
   if (!problem.empty())
   {
-    vtkErrorMacro(<< problem);
-    return 0;
+    return this->Fail(problem, output);
   }
   if (map.channels < 3)
   {
-    vtkErrorMacro(<< this->FileName << ": a normal map needs 3 channels (RGB), the image has " << map.channels);
-    return 0;
+    return this->Fail(std::string(this->FileName) + ": a normal map needs 3 channels (RGB), the image has " + std::to_string(map.channels), output);
   }
   std::vector<glm::dvec3> normals(frames.normal.size());
   vtkSMPTools::For(0, static_cast<vtkIdType>(normals.size()), 4096, [&](vtkIdType b, vtkIdType e) {

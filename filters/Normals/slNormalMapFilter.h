@@ -26,13 +26,13 @@
 
 #include "ShadeLabNormalsModule.h"
 
-#include <vtkPolyDataAlgorithm.h>
+#include "slPolyDataFilter.h"
 
-class SHADELABNORMALS_EXPORT slNormalMapFilter : public vtkPolyDataAlgorithm
+class SHADELABNORMALS_EXPORT slNormalMapFilter : public slPolyDataFilter
 {
 public:
   static slNormalMapFilter* New();
-  vtkTypeMacro(slNormalMapFilter, vtkPolyDataAlgorithm);
+  vtkTypeMacro(slNormalMapFilter, slPolyDataFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{

@@ -448,6 +448,7 @@ int slPolyDataNormals::RequestData(vtkInformation*, vtkInformationVector** input
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   output->Initialize();
+  this->ClearError();
   this->NumberOfFlippedPolygons = 0;
   if (!input || input->GetNumberOfPoints() == 0)
   {
@@ -456,8 +457,7 @@ int slPolyDataNormals::RequestData(vtkInformation*, vtkInformationVector** input
   const vtkIdType bad = slFirstNonFinitePoint(input->GetPoints());
   if (bad >= 0)
   {
-    vtkErrorMacro(<< "point " << bad << " has a NaN or infinite coordinate");
-    return 0;
+    return this->Fail("point " + std::to_string(bad) + " has a NaN or infinite coordinate", output);
   }
   const vtkIdType others = input->GetNumberOfVerts() + input->GetNumberOfLines();
   if (others > 0)
@@ -502,8 +502,7 @@ int slPolyDataNormals::RequestData(vtkInformation*, vtkInformationVector** input
   if (!problem.empty())
   {
     output->Initialize();
-    vtkErrorMacro(<< problem);
-    return 0;
+    return this->Fail(problem, output);
   }
   this->NumberOfFlippedPolygons = flipped;
   output->GetFieldData()->PassData(input->GetFieldData());

@@ -51,13 +51,13 @@
 
 #include "ShadeLabNormalsModule.h"
 
-#include <vtkPolyDataAlgorithm.h>
+#include "slPolyDataFilter.h"
 
-class SHADELABNORMALS_EXPORT slPolyDataNormals : public vtkPolyDataAlgorithm
+class SHADELABNORMALS_EXPORT slPolyDataNormals : public slPolyDataFilter
 {
 public:
   static slPolyDataNormals* New();
-  vtkTypeMacro(slPolyDataNormals, vtkPolyDataAlgorithm);
+  vtkTypeMacro(slPolyDataNormals, slPolyDataFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum WeightingType

@@ -29,6 +29,7 @@ int slPolyDataTangents::RequestData(vtkInformation*, vtkInformationVector** inpu
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   output->Initialize();
+  this->ClearError();
   this->NumberOfSplitPoints = 0;
   if (!input || input->GetNumberOfPoints() == 0)
   {
@@ -37,14 +38,12 @@ int slPolyDataTangents::RequestData(vtkInformation*, vtkInformationVector** inpu
   const vtkIdType bad = slFirstNonFinitePoint(input->GetPoints());
   if (bad >= 0)
   {
-    vtkErrorMacro(<< "point " << bad << " has a NaN or infinite coordinate");
-    return 0;
+    return this->Fail("point " + std::to_string(bad) + " has a NaN or infinite coordinate", output);
   }
   vtkDataArray* tcoords = input->GetPointData()->GetTCoords();
   if (!tcoords || tcoords->GetNumberOfComponents() < 2)
   {
-    vtkErrorMacro(<< "no texture coordinates (UVs): tangents need a 2-component point TCoords array");
-    return 0;
+    return this->Fail("no texture coordinates (UVs): tangents need a 2-component point TCoords array", output);
   }
   if (input->GetNumberOfVerts() + input->GetNumberOfLines() > 0)
   {

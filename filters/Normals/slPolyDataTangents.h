@@ -35,13 +35,13 @@
 
 #include "ShadeLabNormalsModule.h"
 
-#include <vtkPolyDataAlgorithm.h>
+#include "slPolyDataFilter.h"
 
-class SHADELABNORMALS_EXPORT slPolyDataTangents : public vtkPolyDataAlgorithm
+class SHADELABNORMALS_EXPORT slPolyDataTangents : public slPolyDataFilter
 {
 public:
   static slPolyDataTangents* New();
-  vtkTypeMacro(slPolyDataTangents, vtkPolyDataAlgorithm);
+  vtkTypeMacro(slPolyDataTangents, slPolyDataFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// Points duplicated along mirror seams by the last update.

@@ -60,5 +60,48 @@ class NormalsCommandTest(unittest.TestCase):
             self.assertFalse(os.path.exists(out))
 
 
+class TangentsAndDetailCommandTest(unittest.TestCase):
+    SPOT = os.path.join(SHARED, "meshes", "spot.obj")
+    NORMAL_MAP = os.path.join(SHARED, "textures", "bevy_parallax_cube_normal.png")
+    DEPTH_MAP = os.path.join(SHARED, "textures", "bevy_parallax_cube_depth.png")
+
+    def setUp(self):
+        self.folder = tempfile.TemporaryDirectory()
+        self.out = os.path.join(self.folder.name, "out.vtp")
+
+    def tearDown(self):
+        self.folder.cleanup()
+
+    def test_tangents_and_each_detail_mode_write_their_arrays(self):
+        self.assertEqual(run("tangents", self.SPOT, "-o", self.out).returncode, 0)
+        t = read_vtp(self.out).GetPointData().GetArray("Tangents")
+        self.assertEqual(t.GetNumberOfComponents(), 4)
+        for args in (("--normal-map", self.NORMAL_MAP, "--directx"), ("--bump-map", self.DEPTH_MAP, "--invert"),
+                     ("--displace", self.DEPTH_MAP, "--scale", "0.02")):
+            r = run("detail", self.SPOT, "-o", self.out, *args)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertIsNotNone(read_vtp(self.out).GetPointData().GetNormals())
+            os.remove(self.out)
+
+    def test_bad_input_gives_one_line_and_no_output(self):
+        bad = os.path.join(self.folder.name, "bad.png")
+        with open(bad, "w") as f:
+            f.write("not a png")
+        cases = [
+            (("tangents", FANDISK, "-o", self.out), 1, "no texture coordinates"),
+            (("detail", FANDISK, "-o", self.out, "--bump-map", self.DEPTH_MAP), 1, "no texture coordinates"),
+            (("detail", self.SPOT, "-o", self.out, "--normal-map", bad), 1, bad),
+            (("detail", self.SPOT, "-o", self.out, "--displace", "/nonexistent/h.png"), 1, "/nonexistent/h.png"),
+            (("detail", self.SPOT, "-o", self.out), 2, "exactly one of"),
+            (("detail", self.SPOT, "-o", self.out, "--normal-map", self.NORMAL_MAP, "--strength", "11"), 2, "strength"),
+        ]
+        for args, status, text in cases:
+            r = run(*args)
+            self.assertEqual(r.returncode, status, args)
+            self.assertEqual(r.stderr.count("\n"), 1, r.stderr)
+            self.assertIn(text, r.stderr)
+            self.assertFalse(os.path.exists(self.out))
+
+
 if __name__ == "__main__":
     unittest.main()

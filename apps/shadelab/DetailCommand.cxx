@@ -1,0 +1,101 @@
+// shadelab detail MESH -o OUT (--normal-map IMG | --bump-map IMG | --displace IMG) [...]
+#include "CommandLine.h"
+#include "Commands.h"
+#include "Inputs.h"
+#include "NormalsOptions.h"
+
+#include "slBumpMapFilter.h"
+#include "slDisplacementFilter.h"
+#include "slNormalMapFilter.h"
+
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <iostream>
+
+namespace shadelab
+{
+namespace app
+{
+
+namespace
+{
+int runDetail(const std::vector<std::string>& args)
+{
+  const std::vector<OptionSpec> specs{
+    { "output", "o", "FILE", "mesh to write (.vtp, .vtk, .ply, .obj, .stl)" },
+    { "normal-map", "", "IMG", "tangent-space normal map (OpenGL, green up)" },
+    { "directx", "", "", "the normal map is DirectX (green down)" },
+    { "strength", "", "S", "normal-map strength, 0-10 (default 1)" },
+    { "bump-map", "", "IMG", "height image: normals from its gradient" },
+    { "displace", "", "IMG", "height image: move points along their normals" },
+    { "scale", "", "S", "height scale for --bump-map / --displace (default 0.05)" },
+    { "invert", "", "", "height = 1 - value (depth maps, e.g. Bevy's)" },
+    { "help", "h", "", "show this help" },
+  };
+  const CommandLine cl(args, specs);
+  if (cl.has("help"))
+  {
+    std::cout << "usage: shadelab detail MESH -o OUT (--normal-map IMG | --bump-map IMG | --displace IMG)\n\n"
+                 "Adds surface detail to MESH ("
+              << meshFormatsText()
+              << ") through its texture coordinates: perturbed point normals\n"
+                 "from a normal map or a bump (height) map, or points displaced by a height map.\n\noptions:\n"
+              << CommandLine::describe(specs);
+    return 0;
+  }
+  if (cl.positional().size() != 1)
+  {
+    throw UsageError("expected one MESH argument, got " + std::to_string(cl.positional().size()));
+  }
+  if (!cl.has("output"))
+  {
+    throw UsageError("missing -o/--output FILE");
+  }
+  const int modes = cl.has("normal-map") + cl.has("bump-map") + cl.has("displace");
+  if (modes != 1)
+  {
+    throw UsageError("give exactly one of --normal-map, --bump-map, --displace");
+  }
+  vtkSmartPointer<slPolyDataFilter> filter;
+  if (cl.has("normal-map"))
+  {
+    auto f = vtkSmartPointer<slNormalMapFilter>::New();
+    f->SetFileName(cl.get("normal-map").c_str());
+    f->SetGreenDown(cl.has("directx"));
+    f->SetStrength(cl.getNumber("strength", 1.0, 0.0, 10.0));
+    filter = f;
+  }
+  else if (cl.has("bump-map"))
+  {
+    auto f = vtkSmartPointer<slBumpMapFilter>::New();
+    f->SetFileName(cl.get("bump-map").c_str());
+    f->SetScale(cl.getNumber("scale", 0.05, -100.0, 100.0));
+    f->SetInvertHeight(cl.has("invert"));
+    filter = f;
+  }
+  else
+  {
+    auto f = vtkSmartPointer<slDisplacementFilter>::New();
+    f->SetFileName(cl.get("displace").c_str());
+    f->SetScale(cl.getNumber("scale", 0.05, -1e6, 1e6));
+    f->SetInvertHeight(cl.has("invert"));
+    filter = f;
+  }
+  const std::string path = cl.positional()[0];
+  vtkSmartPointer<vtkPolyData> mesh = loadMesh(path);
+  noteNonPolygonCells(mesh, "detail", path);
+  filter->SetInputData(mesh);
+  vtkSmartPointer<vtkPolyData> out = runMeshFilter(filter, path);
+  writeMesh(out, cl.get("output"));
+  std::cout << "wrote " << cl.get("output") << ": " << out->GetNumberOfPoints() << " points\n";
+  return 0;
+}
+
+const CommandRegistration registration{ { 22, "detail",
+  "normal maps, bump maps and displacement through a mesh's UVs", &runDetail } };
+} // namespace
+
+} // namespace app
+} // namespace shadelab

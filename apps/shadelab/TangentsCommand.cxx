@@ -1,0 +1,75 @@
+// shadelab tangents MESH -o OUT [normals options]
+#include "CommandLine.h"
+#include "Commands.h"
+#include "Inputs.h"
+#include "NormalsOptions.h"
+
+#include "slPolyDataNormals.h"
+#include "slPolyDataTangents.h"
+
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+
+#include <iostream>
+
+namespace shadelab
+{
+namespace app
+{
+
+namespace
+{
+int runTangents(const std::vector<std::string>& args)
+{
+  std::vector<OptionSpec> specs{ { "output", "o", "FILE", "mesh to write (.vtp or .vtk keep the Tangents array)" } };
+  for (const OptionSpec& s : normalsOptionSpecs())
+  {
+    specs.push_back(s);
+  }
+  specs.push_back({ "help", "h", "", "show this help" });
+  const CommandLine cl(args, specs);
+  if (cl.has("help"))
+  {
+    std::cout << "usage: shadelab tangents MESH -o OUT [options]\n\n"
+                 "Computes MikkTSpace-style tangent frames of MESH ("
+              << meshFormatsText()
+              << ") from its texture coordinates:\n"
+                 "point array \"Tangents\" (xyz and handedness w = +-1, bitangent = w N x T).\n"
+                 "When MESH has no normals they are computed first (the normals options apply).\n\noptions:\n"
+              << CommandLine::describe(specs);
+    return 0;
+  }
+  if (cl.positional().size() != 1)
+  {
+    throw UsageError("expected one MESH argument, got " + std::to_string(cl.positional().size()));
+  }
+  if (!cl.has("output"))
+  {
+    throw UsageError("missing -o/--output FILE");
+  }
+  vtkNew<slPolyDataNormals> normals;
+  applyNormalsOptions(cl, normals);
+  const std::string path = cl.positional()[0];
+  vtkSmartPointer<vtkPolyData> mesh = loadMesh(path);
+  noteNonPolygonCells(mesh, "tangents", path);
+  if (!mesh->GetPointData()->GetNormals())
+  {
+    normals->SetInputData(mesh);
+    mesh = runMeshFilter(normals, path);
+  }
+  vtkNew<slPolyDataTangents> tangents;
+  tangents->SetInputData(mesh);
+  vtkSmartPointer<vtkPolyData> out = runMeshFilter(tangents, path);
+  writeMesh(out, cl.get("output"));
+  std::cout << "wrote " << cl.get("output") << ": " << out->GetNumberOfPoints() << " points ("
+            << tangents->GetNumberOfSplitPoints() << " split along mirror seams)\n";
+  return 0;
+}
+
+const CommandRegistration registration{ { 21, "tangents",
+  "compute tangent frames (MikkTSpace-style, with handedness) from UVs", &runTangents } };
+} // namespace
+
+} // namespace app
+} // namespace shadelab
