@@ -25,11 +25,14 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <memory>
 #include <string>
 #include <vector>
+
+#include <sys/resource.h>
 
 namespace
 {
@@ -39,15 +42,29 @@ double median(std::vector<double> v)
   return v[v.size() / 2];
 }
 
+/// CPU seconds (user + system, all threads) this process has used so far.
+double cpuSeconds()
+{
+  rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_utime.tv_sec + usage.ru_stime.tv_sec + 1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
+/// Wall-clock seconds of each run; @p cpu (optional) gets each run's CPU seconds.
 template <typename F>
-std::vector<double> timeRuns(int repetitions, F&& run)
+std::vector<double> timeRuns(int repetitions, F&& run, std::vector<double>* cpu = nullptr)
 {
   std::vector<double> seconds;
   for (int r = 0; r < repetitions; ++r)
   {
+    const double cpuStart = cpuSeconds();
     const auto start = std::chrono::steady_clock::now();
     run();
     seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    if (cpu)
+    {
+      cpu->push_back(cpuSeconds() - cpuStart);
+    }
   }
   return seconds;
 }
@@ -103,8 +120,9 @@ std::string numpySetup(const shadelab::Scene& s, int grid, int repetitions)
     ", \"emission\": " + jsonVec(m.emission) + ", \"shininess\": " + std::to_string(m.shininess) + "}}";
 }
 
-/// Runs the numpy version; returns its median seconds (or -1) and its first radiance.
-double runNumpy(const std::string& setup, std::string& firstRadiance)
+/// Runs the numpy version; returns its median wall seconds (or -1), its median
+/// CPU seconds in @p cpu, and its first radiance.
+double runNumpy(const std::string& setup, std::string& firstRadiance, double& cpu)
 {
   const std::string path = "/tmp/shadelab-bench-lighting.json";
   std::ofstream(path) << setup;
@@ -119,6 +137,8 @@ double runNumpy(const std::string& setup, std::string& firstRadiance)
   if (std::fgets(line, sizeof line, pipe.get()))
   {
     seconds = std::atof(line);
+    const char* space = std::strchr(line, ' ');
+    cpu = space ? std::atof(space + 1) : -1.0;
   }
   if (std::fgets(line, sizeof line, pipe.get()))
   {
@@ -269,19 +289,27 @@ int main(int argc, char** argv)
     static_cast<long long>(mesh->GetNumberOfPoints()), scene.lights.size(), vtkSMPTools::GetBackend(),
     vtkSMPTools::GetEstimatedNumberOfThreads());
   filter->Update(); // warm-up
-  const double cpp = median(timeRuns(repetitions, [&] {
-    filter->Modified();
-    filter->Update();
-  }));
+  std::vector<double> cpuRuns;
+  const double cpp = median(timeRuns(
+    repetitions,
+    [&] {
+      filter->Modified();
+      filter->Update();
+    },
+    &cpuRuns));
+  const double cppCpu = median(cpuRuns);
   std::printf("slRadianceFilter: median %.4f s over %d runs = %.1f M vertex.lights/s (target >= 300)\n", cpp,
     repetitions, vertexLights / cpp * 1e-6);
+  std::printf("  CPU time: median %.4f s (both threads) = %.1f M vertex.lights per CPU second\n", cppCpu,
+    vertexLights / cppCpu * 1e-6);
   const float* r = vtkFloatArray::SafeDownCast(filter->GetOutput()->GetPointData()->GetArray("Radiance"))->GetPointer(0);
   std::printf("  first vertex Radiance: %.6g %.6g %.6g\n", r[0], r[1], r[2]);
 
   if (numpy)
   {
     std::string first;
-    const double py = runNumpy(numpySetup(scene, grid, repetitions), first);
+    double pyCpu = -1.0;
+    const double py = runNumpy(numpySetup(scene, grid, repetitions), first, pyCpu);
     if (py <= 0.0)
     {
       std::printf("numpy: could not run %s %s\n", SHADELAB_BENCH_PYTHON, SHADELAB_BENCH_NUMPY_SCRIPT);
@@ -291,6 +319,12 @@ int main(int argc, char** argv)
       vertexLights / py * 1e-6);
     std::printf("  first vertex Radiance: %s", first.c_str());
     std::printf("ratio slRadianceFilter / numpy: %.1fx (target >= 25)\n", py / cpp);
+    if (pyCpu > 0.0)
+    {
+      std::printf("  numpy CPU time: median %.4f s; wall-clock ratio on an idle machine would be about\n"
+                  "  %.1fx (numpy's CPU time / half the filter's CPU time over 2 threads)\n",
+        pyCpu, pyCpu / (0.5 * cppCpu));
+    }
   }
   monteCarloThroughput(repetitions);
   if (table)
@@ -299,6 +333,8 @@ int main(int argc, char** argv)
     rmseTable(true);
   }
   std::ifstream load("/proc/loadavg");
+  // The numbers above are wall-clock medians; other processes on the same
+  // cores slow them down, so the load average is printed with them.
   std::string loadavg;
   std::getline(load, loadavg);
   std::printf("load average at the end (other processes share the 2 cores): %s\n", loadavg.c_str());

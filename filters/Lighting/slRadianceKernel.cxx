@@ -49,7 +49,8 @@ struct Block
   float lightTotal[3][kBlock];
   float kd[3][kBlock];
   float position[3][kBlock];
-  float normal[3][kBlock];
+  float normal[3][kBlock]; ///< unit (or zero)
+  float view[3][kBlock];   ///< unit direction toward the eye (or zero)
 };
 
 glm::vec3 load(const float* a, long long i)
@@ -67,18 +68,18 @@ void store(float* a, long long i, const glm::vec3& v)
 /// One light over one block, MODEL and TYPE known at compile time.
 template <int MODEL, int TYPE>
 __attribute__((always_inline)) inline void shadeLightBlock(const glslv::slLight& light0,
-  const glslv::slMaterial& material, const RadianceKernelInput& in, int count, Block& block)
+  const glslv::slMaterial& material, int count, Block& block)
 {
   glslv::slLight light = light0;
   light.type = TYPE;
-  const glm::vec3 eye = in.eye;
   for (int i = 0; i < count; ++i)
   {
     glslv::slMaterial m = material;
     m.diffuse = glm::vec3(block.kd[0][i], block.kd[1][i], block.kd[2][i]);
     const glm::vec3 P(block.position[0][i], block.position[1][i], block.position[2][i]);
-    const glm::vec3 N(block.normal[0][i], block.normal[1][i], block.normal[2][i]);
-    const glslv::slTerms t = glslv::slShadeLight(light, m, MODEL, P, N, eye);
+    const glm::vec3 n(block.normal[0][i], block.normal[1][i], block.normal[2][i]);
+    const glm::vec3 v(block.view[0][i], block.view[1][i], block.view[2][i]);
+    const glslv::slTerms t = glslv::slShadeLightUnit(light, m, MODEL, P, n, v);
     const glm::vec3 terms[3] = { t.ambient, t.diffuse, t.specular };
     for (int k = 0; k < 3; ++k)
     {
@@ -102,12 +103,16 @@ __attribute__((always_inline)) inline void shadeBlock(const RadianceKernelInput&
   for (int i = 0; i < count; ++i)
   {
     const glm::vec3 kd = in.diffuse ? load(in.diffuse, first + i) : material.diffuse;
-    const glm::vec3 P = load(in.points, first + i), N = load(in.normals, first + i);
+    // Normalised once per point, not once per light (slShadeLight does the same).
+    const glm::vec3 P = load(in.points, first + i);
+    const glm::vec3 n = glslv::slSafeNormalize(load(in.normals, first + i));
+    const glm::vec3 v = glslv::slSafeNormalize(in.eye - P);
     for (int c = 0; c < 3; ++c)
     {
       block.kd[c][i] = kd[c];
       block.position[c][i] = P[c];
-      block.normal[c][i] = N[c];
+      block.normal[c][i] = n[c];
+      block.view[c][i] = v[c];
     }
   }
   for (size_t l = 0; l < lights.size(); ++l)
@@ -115,16 +120,16 @@ __attribute__((always_inline)) inline void shadeBlock(const RadianceKernelInput&
     switch (lights[l].type)
     {
       case glsl::SL_LIGHT_DIRECTIONAL:
-        shadeLightBlock<MODEL, glsl::SL_LIGHT_DIRECTIONAL>(lights[l], material, in, count, block);
+        shadeLightBlock<MODEL, glsl::SL_LIGHT_DIRECTIONAL>(lights[l], material, count, block);
         break;
       case glsl::SL_LIGHT_POINT:
-        shadeLightBlock<MODEL, glsl::SL_LIGHT_POINT>(lights[l], material, in, count, block);
+        shadeLightBlock<MODEL, glsl::SL_LIGHT_POINT>(lights[l], material, count, block);
         break;
       case glsl::SL_LIGHT_SPOT:
-        shadeLightBlock<MODEL, glsl::SL_LIGHT_SPOT>(lights[l], material, in, count, block);
+        shadeLightBlock<MODEL, glsl::SL_LIGHT_SPOT>(lights[l], material, count, block);
         break;
       default:
-        shadeLightBlock<MODEL, glsl::SL_LIGHT_AMBIENT>(lights[l], material, in, count, block);
+        shadeLightBlock<MODEL, glsl::SL_LIGHT_AMBIENT>(lights[l], material, count, block);
         break;
     }
     if (!out.perLight.empty())

@@ -5,7 +5,8 @@
  * @brief Internal: the per-point lighting loop of slRadianceFilter, in a
  * vectorisable form. Not wrapped.
  *
- * It evaluates slShadeLight() of slLighting.glsl through
+ * It evaluates slShadeLightUnit() of slLighting.glsl (slShadeLight() with
+ * the normal and view direction normalised once per point) through
  * shadelab/LightingGLSLVectorizable.h, for blocks of points, light by light,
  * with the lighting model and each light's type fixed at compile time so that
  * GCC vectorises the loop over points (AVX2 + FMA where the CPU has them,

@@ -215,10 +215,10 @@ SL_FUNC slTerms slZeroTerms()
   return t;
 }
 
-// What one light contributes at surface point P with normal N, seen from the
-// eye at E: ambient, diffuse and specular; emission stays zero (it belongs to
-// the material, see slAddEmission). N need not be unit length.
-SL_FUNC slTerms slShadeLight(slLight light, slMaterial m, int model, vec3 P, vec3 N, vec3 E)
+// slShadeLight for a unit (or zero) normal n and a unit (or zero) direction v
+// toward the eye, so that a caller shading one point under many lights
+// normalises them once.
+SL_FUNC slTerms slShadeLightUnit(slLight light, slMaterial m, int model, vec3 P, vec3 n, vec3 v)
 {
   slTerms t = slZeroTerms();
   if (light.type == SL_LIGHT_AMBIENT)
@@ -226,14 +226,20 @@ SL_FUNC slTerms slShadeLight(slLight light, slMaterial m, int model, vec3 P, vec
     t.ambient = light.intensity * light.ambient * m.ambient;
     return t;
   }
-  vec3 n = slSafeNormalize(N);
-  vec3 v = slSafeNormalize(E - P);
   vec3 L = slDirectionToLight(light, P);
   float reach = light.intensity * slLightReach(light, P, L);
   t.ambient = reach * light.ambient * m.ambient;
   t.diffuse = reach * slDiffuseFactor(model, n, L) * light.diffuse * m.diffuse;
   t.specular = reach * slSpecularFactor(model, n, L, v, m.shininess) * light.specular * m.specular;
   return t;
+}
+
+// What one light contributes at surface point P with normal N, seen from the
+// eye at E: ambient, diffuse and specular; emission stays zero (it belongs to
+// the material, see slAddEmission). N need not be unit length.
+SL_FUNC slTerms slShadeLight(slLight light, slMaterial m, int model, vec3 P, vec3 N, vec3 E)
+{
+  return slShadeLightUnit(light, m, model, P, slSafeNormalize(N), slSafeNormalize(E - P));
 }
 
 SL_FUNC slTerms slAddTerms(slTerms a, slTerms b)
