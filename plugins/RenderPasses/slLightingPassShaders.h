@@ -1,0 +1,50 @@
+#ifndef slLightingPassShaders_h
+#define slLightingPassShaders_h
+/**
+ * @file slLightingPassShaders.h
+ * @brief The GLSL that slLightingPass splices into VTK's polydata shaders.
+ *
+ * Every lighting formula comes from slLighting.glsl (the lighting core's
+ * single copy, see LightingShaderSource.h); what is here only loops over the
+ * uniform lights, picks normals and positions for each shading frequency, and
+ * composes the terms with the base colour. Internal to ShadeLab::RenderPasses.
+ */
+
+#include <string>
+
+namespace slLightingPassShaders
+{
+
+/// How many lights the shaders hold (uniform array size).
+constexpr int MaximumLights = 16;
+
+/// Frequencies, as in shadelab::ShadingFrequency.
+enum Frequency
+{
+  Flat = 0,
+  Gouraud = 1,
+  Phong = 2
+};
+
+/// What the fragment shader has to work with, as found in VTK's shaders.
+struct FragmentInputs
+{
+  bool scalarColors = false;    ///< diffuseColor carries point or cell scalars
+  bool texture = false;         ///< actortexture and tcoordVCVSOutput exist
+  bool mapperFaceNormal = false; ///< normalVCVSOutput is already per face (flat interpolation)
+};
+
+/// Declarations for either stage: the lighting core, the uniforms, helpers.
+std::string declarations();
+
+/// Vertex-shader declarations and code for a frequency ("" if none needed).
+std::string vertexDeclarations(Frequency frequency);
+std::string vertexImplementation(Frequency frequency);
+
+/// Fragment-shader declarations and the code that writes gl_FragData[0].
+std::string fragmentDeclarations(Frequency frequency);
+std::string fragmentImplementation(Frequency frequency, const FragmentInputs& inputs);
+
+} // namespace slLightingPassShaders
+
+#endif
