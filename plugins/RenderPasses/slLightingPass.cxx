@@ -223,6 +223,7 @@ void slLightingPass::PrepareLights(vtkRenderer* renderer)
       glm::vec3(static_cast<float>(out[0]), static_cast<float>(out[1]), static_cast<float>(out[2])));
   };
 
+  const size_t previousCount = this->Internal->LightsVC.size();
   this->Internal->LightsVC.clear();
   for (const shadelab::SceneLight& light : lights)
   {
@@ -232,6 +233,10 @@ void slLightingPass::PrepareLights(vtkRenderer* renderer)
     this->Internal->LightsVC.push_back(l);
   }
   this->Internal->Parallel = camera->GetParallelProjection() != 0;
+  if (this->Internal->LightsVC.size() != previousCount)
+  {
+    this->ShaderStageTime.Modified(); // the light count is compiled into the shaders
+  }
 }
 
 void slLightingPass::MatchInterpolation(const vtkRenderState* s)
@@ -346,10 +351,10 @@ bool slLightingPass::PostReplaceShaderValues(std::string& vertexShader, std::str
   inputs.texture = contains(fragmentShader, "actortexture") && contains(fragmentShader, "tcoordVCVSOutput");
   inputs.mapperFaceNormal = !vertexNormals && contains(fragmentShader, "normalVCVSOutput");
 
-  vtkShaderProgram::Substitute(vertexShader, kDeclarationTag, shaders::vertexDeclarations(frequency), false);
+  vtkShaderProgram::Substitute(vertexShader, kDeclarationTag, shaders::vertexDeclarations(frequency, this->GetNumberOfLightsUsed()), false);
   vtkShaderProgram::Substitute(
     vertexShader, "//VTK::Light::Impl", shaders::vertexImplementation(frequency) + "//VTK::Light::Impl", false);
-  vtkShaderProgram::Substitute(fragmentShader, kDeclarationTag, shaders::fragmentDeclarations(frequency), false);
+  vtkShaderProgram::Substitute(fragmentShader, kDeclarationTag, shaders::fragmentDeclarations(frequency, this->GetNumberOfLightsUsed()), false);
   vtkShaderProgram::Substitute(fragmentShader, kLightTag, shaders::fragmentImplementation(frequency, inputs), false);
   vtkShaderProgram::Substitute(fragmentShader, kTextureTag, "", false);
   return true;
@@ -358,12 +363,11 @@ bool slLightingPass::PostReplaceShaderValues(std::string& vertexShader, std::str
 bool slLightingPass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
-  if (!program->IsUniformUsed("slLightCount") && !program->IsUniformUsed("slModel"))
+  if (!program->IsUniformUsed("slModel") && !program->IsUniformUsed("slMat.emission"))
   {
     return true; // not one of our shaders, or everything was optimised away
   }
   const std::vector<shadelab::glsl::slLight>& lights = this->Internal->LightsVC;
-  program->SetUniformi("slLightCount", static_cast<int>(lights.size()));
   for (size_t i = 0; i < lights.size(); ++i)
   {
     const shadelab::glsl::slLight& l = lights[i];

@@ -5,7 +5,7 @@
 namespace slLightingPassShaders
 {
 
-std::string declarations()
+std::string declarations(int lightCount)
 {
   return "// ---- ShadeLab lighting (slLighting.glsl, the lighting core's single copy) ----\n" +
     shadelab::lightingShaderSource() +
@@ -14,7 +14,10 @@ std::string declarations()
     std::to_string(MaximumLights) +
     ";\n"
     "uniform slLight slLights[SL_MAX_LIGHTS];\n"
-    "uniform int slLightCount;\n"
+    "// The light count is compiled in: constant loop bounds let the compiler unroll.\n"
+    "const int slLightCount = " +
+    std::to_string(lightCount) +
+    ";\n"
     "uniform slMaterial slMat;\n"
     "uniform int slModel;\n"
     "uniform int slComponent;       // 0 total, 1 ambient, 2 diffuse, 3 specular, 4 emission, 5 cos theta\n"
@@ -35,12 +38,15 @@ std::string declarations()
     "  slMaterial white = slMat;\n"
     "  white.ambient = vec3(1.0f);\n"
     "  white.diffuse = vec3(1.0f);\n"
+    "  vec3 n = slSafeNormalize(N);\n"
+    "  vec3 v = slSafeNormalize(slEye(P) - P);\n"
     "  slTerms t = slZeroTerms();\n"
-    "  for (int i = 0; i < SL_MAX_LIGHTS; ++i)\n"
+    "  for (int i = 0; i < slLightCount; ++i)\n"
     "  {\n"
-    "    if (i >= slLightCount) { break; }\n"
-    "    if (slComponentLight >= 0 && i != slComponentLight) { continue; }\n"
-    "    t = slAddTerms(t, slShadeLight(slLights[i], white, slModel, P, N, slEye(P)));\n"
+    "    if (slComponentLight < 0 || i == slComponentLight)\n"
+    "    {\n"
+    "      t = slAddTerms(t, slShadeLightUnit(slLights[i], white, slModel, P, n, v));\n"
+    "    }\n"
     "  }\n"
     "  return t;\n"
     "}\n"
@@ -54,14 +60,14 @@ std::string declarations()
     "}\n";
 }
 
-std::string vertexDeclarations(Frequency frequency)
+std::string vertexDeclarations(Frequency frequency, int lightCount)
 {
   switch (frequency)
   {
     case Flat:
       return "flat out vec4 slFlatVertexVC;\n";
     case Gouraud:
-      return declarations() +
+      return declarations(lightCount) +
         "out vec3 slAmbientVS;\nout vec3 slDiffuseVS;\nout vec3 slSpecularVS;\nout float slCosThetaVS;\n"
         "out vec3 slAmbientBackVS;\nout vec3 slDiffuseBackVS;\nout vec3 slSpecularBackVS;\n";
     case Phong:
@@ -89,7 +95,7 @@ std::string vertexImplementation(Frequency frequency)
              "    slAmbientBackVS = slBack.ambient;\n"
              "    slDiffuseBackVS = slBack.diffuse;\n"
              "    slSpecularBackVS = slBack.specular;\n"
-             "    slCosThetaVS = slCosTheta(slP, slN);\n"
+             "    slCosThetaVS = slComponent == 5 ? slCosTheta(slP, slN) : 0.0f;\n"
              "  }\n";
     case Phong:
       break;
@@ -97,9 +103,9 @@ std::string vertexImplementation(Frequency frequency)
   return std::string();
 }
 
-std::string fragmentDeclarations(Frequency frequency)
+std::string fragmentDeclarations(Frequency frequency, int lightCount)
 {
-  std::string out = declarations();
+  std::string out = declarations(lightCount);
   if (frequency == Flat)
   {
     out += "flat in vec4 slFlatVertexVC;\n";
@@ -175,7 +181,7 @@ std::string fragmentImplementation(Frequency frequency, const FragmentInputs& in
                "    if (dot(slN, slEye(vertexVC.xyz) - vertexVC.xyz) < 0.0f) { slN = -slN; }\n";
       }
       out += "    slT = slLightAll(slFlatVertexVC.xyz, slN);\n"
-             "    slCos = slCosTheta(slFlatVertexVC.xyz, slN);\n";
+             "    slCos = slComponent == 5 ? slCosTheta(slFlatVertexVC.xyz, slN) : 0.0f;\n";
       break;
     case Gouraud:
       out += "    slT = slZeroTerms();\n"
@@ -186,7 +192,7 @@ std::string fragmentImplementation(Frequency frequency, const FragmentInputs& in
       break;
     case Phong:
       out += "    slT = slLightAll(vertexVC.xyz, normalVCVSOutput);\n"
-             "    slCos = slCosTheta(vertexVC.xyz, normalVCVSOutput);\n";
+             "    slCos = slComponent == 5 ? slCosTheta(vertexVC.xyz, normalVCVSOutput) : 0.0f;\n";
       break;
   }
   out += "    gl_FragData[0] = vec4(slCompose(slT, slCos, slBase), opacity);\n  }\n";

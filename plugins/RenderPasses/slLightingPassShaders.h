@@ -34,15 +34,16 @@ struct FragmentInputs
   bool mapperFaceNormal = false; ///< normalVCVSOutput is already per face (flat interpolation)
 };
 
-/// Declarations for either stage: the lighting core, the uniforms, helpers.
-std::string declarations();
+/// Declarations for either stage: the lighting core, the uniforms, helpers,
+/// for @p lightCount lights (compiled in, so that loops unroll).
+std::string declarations(int lightCount);
 
 /// Vertex-shader declarations and code for a frequency ("" if none needed).
-std::string vertexDeclarations(Frequency frequency);
+std::string vertexDeclarations(Frequency frequency, int lightCount);
 std::string vertexImplementation(Frequency frequency);
 
 /// Fragment-shader declarations and the code that writes gl_FragData[0].
-std::string fragmentDeclarations(Frequency frequency);
+std::string fragmentDeclarations(Frequency frequency, int lightCount);
 std::string fragmentImplementation(Frequency frequency, const FragmentInputs& inputs);
 
 } // namespace slLightingPassShaders
