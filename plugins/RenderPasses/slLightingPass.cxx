@@ -13,6 +13,9 @@
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkDataArray.h>
 #include <vtkOpenGLPolyDataMapper.h>
 #include <vtkProp.h>
 #include <vtkProperty.h>
@@ -21,6 +24,7 @@
 #include <vtkRenderer.h>
 #include <vtkShaderProgram.h>
 
+#include <set>
 #include <vector>
 
 vtkStandardNewMacro(slLightingPass);
@@ -77,6 +81,17 @@ shadelab::glsl::slMaterial materialOf(vtkProperty* p)
   return m;
 }
 
+/// True if the mapper draws a point array "Tangents" with 4 components (xyz,
+/// handedness). VTK's TANGENTS attribute only takes 3 components, so the
+/// array is found by name.
+bool hasTangentsWithHandedness(vtkAbstractMapper* mapper)
+{
+  auto* polyMapper = vtkOpenGLPolyDataMapper::SafeDownCast(mapper);
+  vtkPolyData* input = polyMapper ? polyMapper->GetInput() : nullptr;
+  vtkDataArray* tangents = input ? input->GetPointData()->GetArray("Tangents") : nullptr;
+  return tangents && tangents->GetNumberOfComponents() == 4;
+}
+
 bool isOurs(vtkAbstractMapper* mapper, vtkProp* prop)
 {
   vtkActor* actor = vtkActor::SafeDownCast(prop);
@@ -91,6 +106,7 @@ struct slLightingPass::Internals
   bool Parallel = false;
   bool WarnedTooManyLights = false;
   bool WarnedNoNormals = false;
+  std::set<vtkMapper*> TangentMappers; // mappers given the slTangentMC attribute
 };
 
 slLightingPass::slLightingPass()
@@ -239,6 +255,21 @@ void slLightingPass::PrepareLights(vtkRenderer* renderer)
   }
 }
 
+void slLightingPass::MapTangents(const vtkRenderState* s)
+{
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkActor* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
+    auto* mapper = actor ? vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper()) : nullptr;
+    if (mapper && hasTangentsWithHandedness(mapper) && !this->Internal->TangentMappers.count(mapper))
+    {
+      // Once per mapper: mapping an attribute marks the mapper modified.
+      mapper->MapDataArrayToVertexAttribute("slTangentMC", "Tangents", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+      this->Internal->TangentMappers.insert(mapper);
+    }
+  }
+}
+
 void slLightingPass::MatchInterpolation(const vtkRenderState* s)
 {
   // VTK's mapper supplies per-face normals under flat interpolation and
@@ -274,6 +305,7 @@ void slLightingPass::Render(const vtkRenderState* s)
   vtkRenderer* renderer = s->GetRenderer();
   this->PrepareLights(renderer);
   this->MatchInterpolation(s);
+  this->MapTangents(s);
 
   // Without a light switched on, VTK's mapper passes no normals at all.
   bool anyLightOn = false;
@@ -323,6 +355,11 @@ bool slLightingPass::PreReplaceShaderValues(
     vtkShaderProgram::Substitute(vertexShader, "//VTK::Light::Dec", declarations, false);
     vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Dec", declarations, false);
     vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Impl", kLightTag, false);
+    if (hasTangentsWithHandedness(mapper))
+    {
+      vtkShaderProgram::Substitute(vertexShader, "//VTK::Light::Dec", "//SL::Tangent::Dec\n//VTK::Light::Dec", false);
+      vtkShaderProgram::Substitute(vertexShader, "//VTK::Light::Impl", "//SL::Tangent::Impl\n//VTK::Light::Impl", false);
+    }
     vtkShaderProgram::Substitute(fragmentShader, "//VTK::TCoord::Impl", kTextureTag, false);
   }
   return true;
@@ -335,6 +372,7 @@ bool slLightingPass::PostReplaceShaderValues(std::string& vertexShader, std::str
   {
     return true;
   }
+
   auto frequency = static_cast<shaders::Frequency>(this->Frequency);
   const bool vertexNormals = contains(vertexShader, "out vec3 normalVCVSOutput");
   if (frequency != shaders::Flat && !vertexNormals)
@@ -350,11 +388,21 @@ bool slLightingPass::PostReplaceShaderValues(std::string& vertexShader, std::str
   inputs.scalarColors = contains(fragmentShader, "vertexColorVSOutput") || contains(fragmentShader, "textureC");
   inputs.texture = contains(fragmentShader, "actortexture") && contains(fragmentShader, "tcoordVCVSOutput");
   inputs.mapperFaceNormal = !vertexNormals && contains(fragmentShader, "normalVCVSOutput");
+  // VTK maps normals itself only for 3-component tangents; 4-component
+  // (MikkTSpace) ones reach the shader as slTangentMC, mapped in Render().
+  inputs.tangentNormalMap = frequency == shaders::Phong && contains(fragmentShader, "sampler2D normalTex") &&
+    contains(fragmentShader, "tcoordVCVSOutput") && !contains(fragmentShader, "tangentVCVSOutput") &&
+    contains(vertexShader, "//SL::Tangent");
+  if (inputs.tangentNormalMap)
+  {
+    vtkShaderProgram::Substitute(vertexShader, "//SL::Tangent::Dec", shaders::tangentVertexDeclarations(), false);
+    vtkShaderProgram::Substitute(vertexShader, "//SL::Tangent::Impl", shaders::tangentVertexImplementation(), false);
+  }
 
   vtkShaderProgram::Substitute(vertexShader, kDeclarationTag, shaders::vertexDeclarations(frequency, this->GetNumberOfLightsUsed()), false);
   vtkShaderProgram::Substitute(
     vertexShader, "//VTK::Light::Impl", shaders::vertexImplementation(frequency) + "//VTK::Light::Impl", false);
-  vtkShaderProgram::Substitute(fragmentShader, kDeclarationTag, shaders::fragmentDeclarations(frequency, this->GetNumberOfLightsUsed()), false);
+  vtkShaderProgram::Substitute(fragmentShader, kDeclarationTag, shaders::fragmentDeclarations(frequency, this->GetNumberOfLightsUsed(), inputs.tangentNormalMap), false);
   vtkShaderProgram::Substitute(fragmentShader, kLightTag, shaders::fragmentImplementation(frequency, inputs), false);
   vtkShaderProgram::Substitute(fragmentShader, kTextureTag, "", false);
   return true;
@@ -405,6 +453,7 @@ bool slLightingPass::SetShaderParameters(
   program->SetUniformi("slComponentLight", this->ComponentLight);
   program->SetUniformi("slFalseColor", this->FalseColor ? 1 : 0);
   program->SetUniformi("slParallel", this->Internal->Parallel ? 1 : 0);
+  program->SetUniformf("slNormalScale", actor ? static_cast<float>(actor->GetProperty()->GetNormalScale()) : 1.0f);
   return true;
 }
 

@@ -25,6 +25,12 @@
  *   camera), otherwise from the renderer's vtkLights. The material comes from
  *   the scene (UseSceneMaterial) or from each actor's vtkProperty. Point or
  *   cell scalar colours and the actor's texture multiply k_a and k_d.
+ * - Normal maps (Phong frequency): the property's normal texture
+ *   (vtkProperty::SetNormalTexture, tangent space, OpenGL green-up) perturbs
+ *   the normal using the mesh's point Tangents. 3-component tangents go
+ *   through VTK's own normal mapping; 4-component ones (xyz and handedness
+ *   w = +-1, as slPolyDataTangents-style MikkTSpace output) through ShadeLab's,
+ *   which honours w.
  * - Component views show only the ambient, diffuse, specular or emission term
  *   (of all lights or of light k), or N.L of light k, in grey or false colour.
  *
@@ -163,6 +169,7 @@ private:
 
   void PrepareLights(vtkRenderer* renderer);
   void MatchInterpolation(const vtkRenderState* s);
+  void MapTangents(const vtkRenderState* s);
 
   vtkSmartPointer<vtkRenderPass> DelegatePass;
   vtkSmartPointer<slScene> Scene;

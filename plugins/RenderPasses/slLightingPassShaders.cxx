@@ -103,9 +103,23 @@ std::string vertexImplementation(Frequency frequency)
   return std::string();
 }
 
-std::string fragmentDeclarations(Frequency frequency, int lightCount)
+std::string tangentVertexDeclarations()
+{
+  return "in vec4 slTangentMC;\nout vec4 slTangentVC;\n";
+}
+
+std::string tangentVertexImplementation()
+{
+  return "  slTangentVC = vec4(normalMatrix * slTangentMC.xyz, slTangentMC.w);\n";
+}
+
+std::string fragmentDeclarations(Frequency frequency, int lightCount, bool tangentNormalMap)
 {
   std::string out = declarations(lightCount);
+  if (tangentNormalMap)
+  {
+    out += "in vec4 slTangentVC;\nuniform float slNormalScale;\n";
+  }
   if (frequency == Flat)
   {
     out += "flat in vec4 slFlatVertexVC;\n";
@@ -191,6 +205,16 @@ std::string fragmentImplementation(Frequency frequency, const FragmentInputs& in
              "    slCos = gl_FrontFacing ? slCosThetaVS : -slCosThetaVS;\n";
       break;
     case Phong:
+      if (inputs.tangentNormalMap)
+      {
+        // Tangent-space normal map (OpenGL, green up) with MikkTSpace
+        // handedness: bitangent = w (N x T).
+        out += "    vec3 slTan = normalize(slTangentVC.xyz - dot(slTangentVC.xyz, normalVCVSOutput) * normalVCVSOutput);\n"
+               "    vec3 slBit = (slTangentVC.w < 0.0f ? -1.0f : 1.0f) * cross(normalVCVSOutput, slTan);\n"
+               "    vec3 slNts = texture(normalTex, tcoordVCVSOutput).xyz * 2.0f - 1.0f;\n"
+               "    slNts = normalize(slNts * vec3(slNormalScale, slNormalScale, 1.0f));\n"
+               "    normalVCVSOutput = normalize(mat3(slTan, slBit, normalVCVSOutput) * slNts);\n";
+      }
       out += "    slT = slLightAll(vertexVC.xyz, normalVCVSOutput);\n"
              "    slCos = slComponent == 5 ? slCosTheta(vertexVC.xyz, normalVCVSOutput) : 0.0f;\n";
       break;

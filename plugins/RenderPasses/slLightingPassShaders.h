@@ -32,7 +32,13 @@ struct FragmentInputs
   bool scalarColors = false;    ///< diffuseColor carries point or cell scalars
   bool texture = false;         ///< actortexture and tcoordVCVSOutput exist
   bool mapperFaceNormal = false; ///< normalVCVSOutput is already per face (flat interpolation)
+  bool tangentNormalMap = false; ///< normalTex + 4-component Tangents: ShadeLab maps the normal
 };
+
+/// Vertex-shader declarations and code passing 4-component tangents
+/// (xyz, handedness w) to the fragment shader as slTangentVC.
+std::string tangentVertexDeclarations();
+std::string tangentVertexImplementation();
 
 /// Declarations for either stage: the lighting core, the uniforms, helpers,
 /// for @p lightCount lights (compiled in, so that loops unroll).
@@ -43,7 +49,7 @@ std::string vertexDeclarations(Frequency frequency, int lightCount);
 std::string vertexImplementation(Frequency frequency);
 
 /// Fragment-shader declarations and the code that writes gl_FragData[0].
-std::string fragmentDeclarations(Frequency frequency, int lightCount);
+std::string fragmentDeclarations(Frequency frequency, int lightCount, bool tangentNormalMap);
 std::string fragmentImplementation(Frequency frequency, const FragmentInputs& inputs);
 
 } // namespace slLightingPassShaders
