@@ -5,6 +5,7 @@
 #include "ImageComparison.h"
 
 #include "shadelab/Scene.h"
+#include "slComparisonRenderer.h"
 #include "slLightingPass.h"
 #include "slMeshReader.h"
 #include "slScene.h"
@@ -71,6 +72,23 @@ std::vector<Case> allCases()
   return cases;
 }
 
+/// Compares with data/baselines/NAME.png, or rewrites that baseline when
+/// SHADELAB_UPDATE_BASELINES=1.
+void checkAgainstBaseline(vtkImageData* image, const std::string& name)
+{
+  const std::string baseline = projectData("baselines/" + name + ".png");
+  const char* update = std::getenv("SHADELAB_UPDATE_BASELINES");
+  if (update && std::string(update) == "1")
+  {
+    EXPECT_EQ(regression::writeBaseline(image, baseline), "");
+    return;
+  }
+  const std::string failures = std::string(SHADELAB_TEST_OUTPUT_DIR);
+  mkdir(failures.c_str(), 0755);
+  const regression::Verdict verdict = regression::compareWithBaseline(image, baseline, failures, name);
+  EXPECT_TRUE(verdict.passed) << verdict.message;
+}
+
 class ImageRegression : public ::testing::TestWithParam<Case>
 {
 };
@@ -95,18 +113,27 @@ TEST_P(ImageRegression, MatchesBaseline)
   renderer->GetLightingPass()->SetFalseColor(c.falseColor);
   ASSERT_TRUE(renderer->Render()) << renderer->GetErrorMessage();
 
-  const std::string baseline = projectData("baselines/" + c.name + ".png");
-  const char* update = std::getenv("SHADELAB_UPDATE_BASELINES");
-  if (update && std::string(update) == "1")
-  {
-    EXPECT_EQ(regression::writeBaseline(renderer->GetImage(), baseline), "");
-    return;
-  }
-  const std::string failures = std::string(SHADELAB_TEST_OUTPUT_DIR);
-  mkdir(failures.c_str(), 0755);
-  const regression::Verdict verdict =
-    regression::compareWithBaseline(renderer->GetImage(), baseline, failures, c.name);
-  EXPECT_TRUE(verdict.passed) << verdict.message;
+  checkAgainstBaseline(renderer->GetImage(), c.name);
+}
+
+TEST(ImageRegressionCompare, FrequenciesSideBySideWithDifference)
+{
+  vtkNew<slMeshReader> reader;
+  reader->SetFileName(projectData("meshes/spot.obj").c_str());
+  reader->Update();
+  vtkNew<slScene> scene;
+  ASSERT_TRUE(scene->ReadFile(projectData("scenes/regression/all-lights.json").c_str()));
+  vtkNew<slComparisonRenderer> comparison;
+  comparison->SetScene(scene);
+  comparison->SetMesh(reader->GetOutput());
+  comparison->SetPanelWidth(160);
+  comparison->SetPanelHeight(120);
+  comparison->AddPanel("flat", "blinn-phong", "flat");
+  comparison->AddPanel("Gouraud", "blinn-phong", "gouraud");
+  comparison->AddPanel("Phong", "blinn-phong", "phong");
+  comparison->SetDifference(1, 2, 8.0);
+  ASSERT_TRUE(comparison->Render()) << comparison->GetErrorMessage();
+  checkAgainstBaseline(comparison->GetImage(), "compare-frequencies-diff");
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, ImageRegression, ::testing::ValuesIn(allCases()),
