@@ -50,12 +50,11 @@ glm::vec3 toVec3(const double v[3])
 /// Uniform names of light i, built once.
 struct LightUniformNames
 {
-  std::string type, position, direction, ambient, diffuse, specular, intensity, attenuation, cosCutoff,
+  std::string position, direction, ambient, diffuse, specular, intensity, attenuation, cosCutoff,
     cosInner, exponent;
   explicit LightUniformNames(int i)
   {
     const std::string base = "slLights[" + std::to_string(i) + "].";
-    type = base + "type";
     position = base + "position";
     direction = base + "direction";
     ambient = base + "ambient";
@@ -107,6 +106,16 @@ struct slLightingPass::Internals
   bool WarnedTooManyLights = false;
   bool WarnedNoNormals = false;
   std::set<vtkMapper*> TangentMappers; // mappers given the slTangentMC attribute
+
+  std::vector<int> LightTypes() const
+  {
+    std::vector<int> types;
+    for (const shadelab::glsl::slLight& l : this->LightsVC)
+    {
+      types.push_back(l.type);
+    }
+    return types;
+  }
 };
 
 slLightingPass::slLightingPass()
@@ -239,7 +248,7 @@ void slLightingPass::PrepareLights(vtkRenderer* renderer)
       glm::vec3(static_cast<float>(out[0]), static_cast<float>(out[1]), static_cast<float>(out[2])));
   };
 
-  const size_t previousCount = this->Internal->LightsVC.size();
+  const std::vector<int> previousTypes = this->Internal->LightTypes();
   this->Internal->LightsVC.clear();
   for (const shadelab::SceneLight& light : lights)
   {
@@ -249,9 +258,9 @@ void slLightingPass::PrepareLights(vtkRenderer* renderer)
     this->Internal->LightsVC.push_back(l);
   }
   this->Internal->Parallel = camera->GetParallelProjection() != 0;
-  if (this->Internal->LightsVC.size() != previousCount)
+  if (this->Internal->LightTypes() != previousTypes)
   {
-    this->ShaderStageTime.Modified(); // the light count is compiled into the shaders
+    this->ShaderStageTime.Modified(); // light count and types are compiled into the shaders
   }
 }
 
@@ -399,10 +408,10 @@ bool slLightingPass::PostReplaceShaderValues(std::string& vertexShader, std::str
     vtkShaderProgram::Substitute(vertexShader, "//SL::Tangent::Impl", shaders::tangentVertexImplementation(), false);
   }
 
-  vtkShaderProgram::Substitute(vertexShader, kDeclarationTag, shaders::vertexDeclarations(frequency, this->GetNumberOfLightsUsed()), false);
+  vtkShaderProgram::Substitute(vertexShader, kDeclarationTag, shaders::vertexDeclarations(frequency, this->Internal->LightTypes()), false);
   vtkShaderProgram::Substitute(
     vertexShader, "//VTK::Light::Impl", shaders::vertexImplementation(frequency) + "//VTK::Light::Impl", false);
-  vtkShaderProgram::Substitute(fragmentShader, kDeclarationTag, shaders::fragmentDeclarations(frequency, this->GetNumberOfLightsUsed(), inputs.tangentNormalMap), false);
+  vtkShaderProgram::Substitute(fragmentShader, kDeclarationTag, shaders::fragmentDeclarations(frequency, this->Internal->LightTypes(), inputs.tangentNormalMap), false);
   vtkShaderProgram::Substitute(fragmentShader, kLightTag, shaders::fragmentImplementation(frequency, inputs), false);
   vtkShaderProgram::Substitute(fragmentShader, kTextureTag, "", false);
   return true;
@@ -420,7 +429,6 @@ bool slLightingPass::SetShaderParameters(
   {
     const shadelab::glsl::slLight& l = lights[i];
     const LightUniformNames& n = this->Internal->Names[i];
-    program->SetUniformi(n.type.c_str(), l.type);
     program->SetUniform3f(n.position.c_str(), &l.position[0]);
     program->SetUniform3f(n.direction.c_str(), &l.direction[0]);
     program->SetUniform3f(n.ambient.c_str(), &l.ambient[0]);

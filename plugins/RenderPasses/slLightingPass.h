@@ -36,7 +36,9 @@
  *
  * Parameters other than the frequency are uniforms: changing them costs no
  * shader rebuild. Changing the frequency changes the shader; VTK's shader
- * cache keeps earlier variants, so switching back is cheap.
+ * cache keeps earlier variants, so switching back is cheap. The number and
+ * types of the lights are compiled in as well (loops unroll, type tests fold
+ * away); positions, colours and every other light parameter are uniforms.
  *
  * @warning The mapper supplies normals only when the renderer has at least
  * one light switched on; the pass adds a zero-intensity headlight for the

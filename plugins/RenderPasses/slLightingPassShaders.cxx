@@ -5,7 +5,22 @@
 namespace slLightingPassShaders
 {
 
-std::string declarations(int lightCount)
+namespace
+{
+/// GLSL returning the compiled-in type of light i: after the constant-bound
+/// loop unrolls, every test of a light's type folds away.
+std::string lightTypeFunction(const std::vector<int>& types)
+{
+  std::string body = "0";
+  for (size_t i = types.size(); i-- > 0;)
+  {
+    body = "i == " + std::to_string(i) + " ? " + std::to_string(types[i]) + " : (" + body + ")";
+  }
+  return "int slLightTypeOf(int i)\n{\n  return " + body + ";\n}\n";
+}
+} // namespace
+
+std::string declarations(const std::vector<int>& lightTypes)
 {
   return "// ---- ShadeLab lighting (slLighting.glsl, the lighting core's single copy) ----\n" +
     shadelab::lightingShaderSource() +
@@ -14,10 +29,9 @@ std::string declarations(int lightCount)
     std::to_string(MaximumLights) +
     ";\n"
     "uniform slLight slLights[SL_MAX_LIGHTS];\n"
-    "// The light count is compiled in: constant loop bounds let the compiler unroll.\n"
+    "// The light count and types are compiled in: the loop unrolls and type tests fold.\n"
     "const int slLightCount = " +
-    std::to_string(lightCount) +
-    ";\n"
+    std::to_string(lightTypes.size()) + ";\n" + lightTypeFunction(lightTypes) +
     "uniform slMaterial slMat;\n"
     "uniform int slModel;\n"
     "uniform int slComponent;       // 0 total, 1 ambient, 2 diffuse, 3 specular, 4 emission, 5 cos theta\n"
@@ -45,7 +59,9 @@ std::string declarations(int lightCount)
     "  {\n"
     "    if (slComponentLight < 0 || i == slComponentLight)\n"
     "    {\n"
-    "      t = slAddTerms(t, slShadeLightUnit(slLights[i], white, slModel, P, n, v));\n"
+    "      slLight light = slLights[i];\n"
+    "      light.type = slLightTypeOf(i);\n"
+    "      t = slAddTerms(t, slShadeLightUnit(light, white, slModel, P, n, v));\n"
     "    }\n"
     "  }\n"
     "  return t;\n"
@@ -60,14 +76,14 @@ std::string declarations(int lightCount)
     "}\n";
 }
 
-std::string vertexDeclarations(Frequency frequency, int lightCount)
+std::string vertexDeclarations(Frequency frequency, const std::vector<int>& lightTypes)
 {
   switch (frequency)
   {
     case Flat:
       return "flat out vec4 slFlatVertexVC;\n";
     case Gouraud:
-      return declarations(lightCount) +
+      return declarations(lightTypes) +
         "out vec3 slAmbientVS;\nout vec3 slDiffuseVS;\nout vec3 slSpecularVS;\nout float slCosThetaVS;\n"
         "out vec3 slAmbientBackVS;\nout vec3 slDiffuseBackVS;\nout vec3 slSpecularBackVS;\n";
     case Phong:
@@ -113,9 +129,9 @@ std::string tangentVertexImplementation()
   return "  slTangentVC = vec4(normalMatrix * slTangentMC.xyz, slTangentMC.w);\n";
 }
 
-std::string fragmentDeclarations(Frequency frequency, int lightCount, bool tangentNormalMap)
+std::string fragmentDeclarations(Frequency frequency, const std::vector<int>& lightTypes, bool tangentNormalMap)
 {
-  std::string out = declarations(lightCount);
+  std::string out = declarations(lightTypes);
   if (tangentNormalMap)
   {
     out += "in vec4 slTangentVC;\nuniform float slNormalScale;\n";

@@ -11,6 +11,7 @@
  */
 
 #include <string>
+#include <vector>
 
 namespace slLightingPassShaders
 {
@@ -41,15 +42,16 @@ std::string tangentVertexDeclarations();
 std::string tangentVertexImplementation();
 
 /// Declarations for either stage: the lighting core, the uniforms, helpers,
-/// for @p lightCount lights (compiled in, so that loops unroll).
-std::string declarations(int lightCount);
+/// for lights of @p lightTypes (SL_LIGHT_*; compiled in, so that loops unroll
+/// and type tests fold).
+std::string declarations(const std::vector<int>& lightTypes);
 
 /// Vertex-shader declarations and code for a frequency ("" if none needed).
-std::string vertexDeclarations(Frequency frequency, int lightCount);
+std::string vertexDeclarations(Frequency frequency, const std::vector<int>& lightTypes);
 std::string vertexImplementation(Frequency frequency);
 
 /// Fragment-shader declarations and the code that writes gl_FragData[0].
-std::string fragmentDeclarations(Frequency frequency, int lightCount, bool tangentNormalMap);
+std::string fragmentDeclarations(Frequency frequency, const std::vector<int>& lightTypes, bool tangentNormalMap);
 std::string fragmentImplementation(Frequency frequency, const FragmentInputs& inputs);
 
 } // namespace slLightingPassShaders
