@@ -4,6 +4,7 @@
 #include "Inputs.h"
 
 #include "slImageWriter.h"
+#include "slLightingPass.h"
 #include "slScene.h"
 #include "slSceneRenderer.h"
 
@@ -20,6 +21,31 @@ namespace app
 
 namespace
 {
+void applyComponentOptions(const CommandLine& cl, slLightingPass* pass)
+{
+  static const char* const names[] = { "total", "ambient", "diffuse", "specular", "emission", "cos" };
+  if (cl.has("component"))
+  {
+    const std::string name = cl.get("component");
+    int component = -1;
+    for (int i = 0; i < 6; ++i)
+    {
+      component = name == names[i] ? i : component;
+    }
+    if (component < 0)
+    {
+      throw UsageError("--component: \"" + name + "\" is not one of total, ambient, diffuse, specular, emission, cos");
+    }
+    pass->SetComponent(component);
+  }
+  if (cl.has("light"))
+  {
+    pass->SetComponentLight(
+      static_cast<int>(cl.getNumber("light", 0, 0, slLightingPass::GetMaximumNumberOfLights() - 1)));
+  }
+  pass->SetFalseColor(cl.has("false-color"));
+}
+
 int runRender(const std::vector<std::string>& args)
 {
   const std::vector<OptionSpec> specs{
@@ -28,15 +54,20 @@ int runRender(const std::vector<std::string>& args)
     { "size", "", "WxH", "image size in pixels (default: the scene's imageSize)" },
     { "model", "", "NAME", "override the scene's lighting model" },
     { "frequency", "", "NAME", "override the scene's shading frequency: flat, gouraud, phong" },
-    { "quiet", "q", "", "do not print notes about what VTK's lighting cannot show" },
+    { "component", "", "NAME", "show only: ambient, diffuse, specular, emission or cos (N.L)" },
+    { "light", "", "K", "with --component: only light K (0-based; cos uses light 0 by default)" },
+    { "false-color", "", "", "with --component: false colour instead of grey/RGB" },
+    { "vtk-lighting", "", "", "use VTK's built-in lighting instead of ShadeLab's pass (prints what it lacks)" },
+    { "quiet", "q", "", "with --vtk-lighting: do not print what VTK's lighting cannot show" },
     { "help", "h", "", "show this help" },
   };
   const CommandLine cl(args, specs);
   if (cl.has("help"))
   {
     std::cout << "usage: shadelab render MESH [--scene S.json] -o OUT.png\n\n"
-                 "Renders MESH (" << meshFormatsText() << ") offscreen with VTK's standard lighting\n"
-                 "configured from the scene, and writes the image through OpenImageIO.\n"
+                 "Renders MESH (" << meshFormatsText() << ") offscreen with ShadeLab's lighting pass\n"
+                 "(the scene's model, lights and shading frequency) and writes the image through\n"
+                 "OpenImageIO.\n"
                  "Needs an X display: run under xvfb-run on a headless machine.\n\noptions:\n"
               << CommandLine::describe(specs);
     return 0;
@@ -60,6 +91,8 @@ int runRender(const std::vector<std::string>& args)
   vtkSmartPointer<vtkPolyData> mesh = loadMesh(cl.positional()[0]);
 
   vtkNew<slSceneRenderer> renderer;
+  renderer->SetUseShadeLabLighting(!cl.has("vtk-lighting"));
+  applyComponentOptions(cl, renderer->GetLightingPass());
   renderer->SetScene(scene);
   renderer->SetMesh(mesh);
   renderer->SetWidth(width);
@@ -68,7 +101,7 @@ int runRender(const std::vector<std::string>& args)
   {
     throw JobError(renderer->GetErrorMessage());
   }
-  if (!cl.has("quiet"))
+  if (cl.has("vtk-lighting") && !cl.has("quiet"))
   {
     std::istringstream notes(scene->GetConversionNotes());
     for (std::string line; std::getline(notes, line);)

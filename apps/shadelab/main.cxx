@@ -42,7 +42,8 @@ namespace
 void printUsage(std::ostream& out)
 {
   out << "usage: shadelab <subcommand> [options]   (shadelab <subcommand> --help for details)\n\n"
-         "ShadeLab: local lighting (Lambert, Phong, Blinn-Phong) for VTK meshes.\n\nsubcommands:\n";
+         "ShadeLab: local lighting (Lambert, Phong, Blinn-Phong) for VTK meshes.\n"
+         "Any subcommand also takes --verbose: show VTK's own warnings and errors.\n\nsubcommands:\n";
   for (const auto& command : shadelab::app::commands())
   {
     std::string name = command.name;
@@ -66,8 +67,16 @@ int main(int argc, char** argv)
     return 0;
   }
   // ShadeLab reports every problem itself, as one line; VTK's own multi-line
-  // reports (with source file names) would only repeat it.
-  vtkObject::GlobalWarningDisplayOff();
+  // reports (with source file names) would only repeat it. --verbose shows them.
+  const auto verbose = std::find(args.begin(), args.end(), "--verbose");
+  if (verbose != args.end())
+  {
+    args.erase(verbose);
+  }
+  else
+  {
+    vtkObject::GlobalWarningDisplayOff();
+  }
 
   const std::string name = args[0];
   for (const auto& command : shadelab::app::commands())

@@ -122,5 +122,25 @@ class RenderTest(unittest.TestCase):
         self.assertFalse(os.path.exists(self.out))
 
 
+class CompareTest(unittest.TestCase):
+    def test_frequencies_with_difference_panel(self):
+        with tempfile.TemporaryDirectory() as folder:
+            out = os.path.join(folder, "compare.png")
+            r = run("compare", SPOT, "--diff", "--size", "100x80", "-o", out)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertEqual(png_size(out), (400, 80))
+            r = run("compare", SPOT, "--models", "--size", "100x80", "-o", out)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertEqual(png_size(out), (300, 80))
+
+    def test_bad_input(self):
+        r = run("compare", "/nonexistent/m.stl", "-o", "/tmp/never.png")
+        self.assertEqual(r.returncode, 1)
+        self.assertEqual(r.stderr, "shadelab compare: /nonexistent/m.stl: cannot open file\n")
+        r = run("compare", SPOT, "-o", "/tmp/never.png", "--amplify", "0")
+        self.assertEqual(r.returncode, 2)
+        self.assertEqual(r.stderr, "shadelab compare: option --amplify: 0 is out of range [1, 1000]\n")
+
+
 if __name__ == "__main__":
     unittest.main(verbosity=2)

@@ -129,22 +129,44 @@ SL_FUNC float slSpotFactor(slLight light, vec3 L)
   return edge * slPow(cosAngle, light.exponent);
 }
 
-// Unit vector from the surface point P toward the light (zero for ambient
-// lights and for a light sitting exactly at P).
-SL_FUNC vec3 slDirectionToLight(slLight light, vec3 P)
+// What arrives at P from one light: the unit vector L toward it (zero for
+// ambient lights and for a light sitting exactly at P) and its reach, the
+// attenuation times the spot factor. The distance is computed once.
+struct slIncidence
 {
+  vec3 L;
+  float reach;
+};
+
+SL_FUNC slIncidence slIncidenceAt(slLight light, vec3 P)
+{
+  slIncidence inc;
+  inc.reach = 1.0f;
   if (light.type == SL_LIGHT_DIRECTIONAL)
   {
-    return slSafeNormalize(-light.direction);
+    inc.L = slSafeNormalize(-light.direction);
+    return inc;
   }
   if (light.type == SL_LIGHT_AMBIENT)
   {
-    return vec3(0.0f);
+    inc.L = vec3(0.0f);
+    return inc;
   }
-  return slSafeNormalize(light.position - P);
+  vec3 toLight = light.position - P;
+  float d = length(toLight);
+  inc.L = (d > SL_TINY_LENGTH && d < 3.0e38f) ? toLight / d : vec3(0.0f);
+  inc.reach = slAttenuation(light.attenuation, d) * slSpotFactor(light, inc.L);
+  return inc;
 }
 
-// Attenuation times spot factor: how much of the light reaches P.
+// Unit vector from the surface point P toward the light.
+SL_FUNC vec3 slDirectionToLight(slLight light, vec3 P)
+{
+  return slIncidenceAt(light, P).L;
+}
+
+// Attenuation times spot factor for the unit vector L toward the light: how
+// much of the light reaches P (1 for directional and ambient lights).
 SL_FUNC float slLightReach(slLight light, vec3 P, vec3 L)
 {
   if (light.type == SL_LIGHT_DIRECTIONAL || light.type == SL_LIGHT_AMBIENT)
@@ -215,9 +237,10 @@ SL_FUNC slTerms slZeroTerms()
   return t;
 }
 
-// slShadeLight for a unit (or zero) normal n and a unit (or zero) direction v
-// toward the eye, so that a caller shading one point under many lights
-// normalises them once.
+// What one light contributes at surface point P with unit normal n and unit
+// direction v toward the eye (either may be zero: no direction): ambient,
+// diffuse and specular; emission stays zero (it belongs to the material, see
+// slAddEmission). Shaders normalise n and v once for all lights.
 SL_FUNC slTerms slShadeLightUnit(slLight light, slMaterial m, int model, vec3 P, vec3 n, vec3 v)
 {
   slTerms t = slZeroTerms();
@@ -226,17 +249,15 @@ SL_FUNC slTerms slShadeLightUnit(slLight light, slMaterial m, int model, vec3 P,
     t.ambient = light.intensity * light.ambient * m.ambient;
     return t;
   }
-  vec3 L = slDirectionToLight(light, P);
-  float reach = light.intensity * slLightReach(light, P, L);
+  slIncidence inc = slIncidenceAt(light, P);
+  float reach = light.intensity * inc.reach;
   t.ambient = reach * light.ambient * m.ambient;
-  t.diffuse = reach * slDiffuseFactor(model, n, L) * light.diffuse * m.diffuse;
-  t.specular = reach * slSpecularFactor(model, n, L, v, m.shininess) * light.specular * m.specular;
+  t.diffuse = reach * slDiffuseFactor(model, n, inc.L) * light.diffuse * m.diffuse;
+  t.specular = reach * slSpecularFactor(model, n, inc.L, v, m.shininess) * light.specular * m.specular;
   return t;
 }
 
-// What one light contributes at surface point P with normal N, seen from the
-// eye at E: ambient, diffuse and specular; emission stays zero (it belongs to
-// the material, see slAddEmission). N need not be unit length.
+// slShadeLightUnit for any normal N (need not be unit length) and the eye at E.
 SL_FUNC slTerms slShadeLight(slLight light, slMaterial m, int model, vec3 P, vec3 N, vec3 E)
 {
   return slShadeLightUnit(light, m, model, P, slSafeNormalize(N), slSafeNormalize(E - P));

@@ -1,5 +1,6 @@
 #include "slSceneRenderer.h"
 
+#include "slLightingPass.h"
 #include "slScene.h"
 
 #include <vtkActor.h>
@@ -23,7 +24,10 @@ VTK_MODULE_INIT(vtkRenderingOpenGL2);
 
 vtkStandardNewMacro(slSceneRenderer);
 
-slSceneRenderer::slSceneRenderer() = default;
+slSceneRenderer::slSceneRenderer()
+  : LightingPass(vtkSmartPointer<slLightingPass>::New())
+{
+}
 slSceneRenderer::~slSceneRenderer() = default;
 
 void slSceneRenderer::SetScene(slScene* scene)
@@ -44,6 +48,11 @@ vtkPolyData* slSceneRenderer::GetMesh()
 {
   return this->Mesh;
 }
+slLightingPass* slSceneRenderer::GetLightingPass()
+{
+  return this->LightingPass;
+}
+
 vtkImageData* slSceneRenderer::GetImage()
 {
   return this->Image;
@@ -108,6 +117,12 @@ bool slSceneRenderer::Render()
   this->Renderer = vtkSmartPointer<vtkRenderer>::New();
   this->Renderer->AddActor(this->Actor);
   this->Scene->ApplyToRenderer(this->Renderer);
+  if (this->UseShadeLabLighting)
+  {
+    // The pass reads the scene's model and frequency each time it is given the scene.
+    this->LightingPass->SetScene(this->Scene);
+    this->Renderer->SetPass(this->LightingPass);
+  }
 
   this->Window = vtkSmartPointer<vtkRenderWindow>::New();
   this->Window->SetOffScreenRendering(1);
@@ -129,6 +144,7 @@ bool slSceneRenderer::Render()
 void slSceneRenderer::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "UseShadeLabLighting: " << this->UseShadeLabLighting << "\n";
   os << indent << "Width: " << this->Width << "\n";
   os << indent << "Height: " << this->Height << "\n";
   os << indent << "Scene: " << (this->Scene ? "set" : "(none)") << "\n";

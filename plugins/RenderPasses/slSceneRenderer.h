@@ -4,10 +4,13 @@
  * @class   slSceneRenderer
  * @brief   Renders one mesh with an slScene offscreen and returns the image.
  *
- * slSceneRenderer builds VTK's standard pipeline (mapper, actor, renderer,
- * offscreen render window) configured by an slScene, renders one frame at the
- * scene's image size and captures it as an RGB vtkImageData. It is what
- * `shadelab render` and the image regression tests use.
+ * slSceneRenderer builds a VTK pipeline (mapper, actor, renderer, offscreen
+ * render window) configured by an slScene, renders one frame at the scene's
+ * image size and captures it as an RGB vtkImageData. By default the renderer
+ * draws through an slLightingPass, so the scene's lighting model, lights and
+ * shading frequency are shown exactly; UseShadeLabLightingOff() shows VTK's
+ * built-in lighting instead (see slScene's conversion notes for what it
+ * lacks). It is what `shadelab render` and the image regression tests use.
  *
  * Rendering is deterministic: fixed window size, multisampling off, and the
  * camera fixed by the scene (or fitted to the mesh the same way each time).
@@ -21,13 +24,14 @@
  * @sa slScene vtkWindowToImageFilter
  */
 
-#include "ShadeLabSceneModule.h"
+#include "ShadeLabRenderPassesModule.h"
 
 #include <vtkObject.h>
 #include <vtkSmartPointer.h>
 
 #include <string>
 
+class slLightingPass;
 class slScene;
 class vtkActor;
 class vtkImageData;
@@ -35,7 +39,7 @@ class vtkPolyData;
 class vtkRenderWindow;
 class vtkRenderer;
 
-class SHADELABSCENE_EXPORT slSceneRenderer : public vtkObject
+class SHADELABRENDERPASSES_EXPORT slSceneRenderer : public vtkObject
 {
 public:
   static slSceneRenderer* New();
@@ -57,6 +61,16 @@ public:
   vtkSetClampMacro(Height, int, 0, 8192);
   vtkGetMacro(Height, int);
   ///@}
+
+  ///@{
+  /// Draw through an slLightingPass (default) or with VTK's own lighting.
+  vtkSetMacro(UseShadeLabLighting, bool);
+  vtkGetMacro(UseShadeLabLighting, bool);
+  vtkBooleanMacro(UseShadeLabLighting, bool);
+  ///@}
+
+  /// The lighting pass used by Render(), to set component views before it.
+  slLightingPass* GetLightingPass();
 
   /// Renders one frame. Returns false and sets GetErrorMessage() on failure.
   bool Render();
@@ -88,6 +102,8 @@ private:
   vtkSmartPointer<vtkRenderWindow> Window;
   vtkSmartPointer<vtkActor> Actor;
   vtkSmartPointer<vtkImageData> Image;
+  vtkSmartPointer<slLightingPass> LightingPass;
+  bool UseShadeLabLighting = true;
   int Width = 0;
   int Height = 0;
   std::string ErrorMessage;

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Regenerates the pictures in docs/images with ShadeLab's own commands.
+#   bash docs/make-images.sh        (after scripts/build.sh)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+shadelab=build/bin/shadelab
+run() { bash scripts/with-display.sh "$shadelab" "$@" > /dev/null; }
+spot=data/meshes/spot.obj
+scene=data/scenes/default.json
+out=docs/images
+mkdir -p "$out"
+
+run render "$spot" --scene "$scene" -o "$out/default-scene.png"
+for frequency in flat gouraud phong; do
+  run render "$spot" --scene "$scene" --frequency "$frequency" --size 400x300 -o "$out/pass-frequency-$frequency.png"
+done
+for model in lambert phong blinn-phong; do
+  run render "$spot" --scene "$scene" --model "$model" --size 400x300 -o "$out/pass-model-$model.png"
+done
+for component in ambient diffuse specular emission; do
+  run render "$spot" --scene "$scene" --component "$component" --size 400x300 -o "$out/pass-component-$component.png"
+done
+run render "$spot" --scene "$scene" --component cos --light 0 --false-color --size 400x300 -o "$out/pass-component-cos.png"
+run render "$spot" --scene "$scene" --vtk-lighting --quiet --size 400x300 -o "$out/pass-vtk-builtin.png"
+echo "images written to $out/"

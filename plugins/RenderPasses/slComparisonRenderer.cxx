@@ -1,0 +1,239 @@
+#include "slComparisonRenderer.h"
+
+#include "slLightingPass.h"
+#include "slScene.h"
+#include "slSceneRenderer.h"
+
+#include "shadelab/Scene.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkPolyDataNormals.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+vtkStandardNewMacro(slComparisonRenderer);
+
+namespace
+{
+vtkSmartPointer<vtkTextActor> label(const std::string& text, int panelHeight)
+{
+  auto actor = vtkSmartPointer<vtkTextActor>::New();
+  actor->SetInput(text.c_str());
+  vtkTextProperty* p = actor->GetTextProperty();
+  p->SetFontSize(std::max(12, panelHeight / 16));
+  p->SetColor(1.0, 1.0, 1.0);
+  p->SetJustificationToCentered();
+  p->SetVerticalJustificationToTop();
+  actor->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  actor->SetPosition(0.5, 0.97);
+  return actor;
+}
+} // namespace
+
+slComparisonRenderer::slComparisonRenderer() = default;
+slComparisonRenderer::~slComparisonRenderer() = default;
+
+void slComparisonRenderer::SetScene(slScene* scene)
+{
+  this->Scene = scene;
+  this->Modified();
+}
+
+void slComparisonRenderer::SetMesh(vtkPolyData* mesh)
+{
+  this->Mesh = mesh;
+  this->Modified();
+}
+
+bool slComparisonRenderer::AddPanel(const char* text, const char* model, const char* frequency)
+{
+  shadelab::ShadingModel m;
+  shadelab::ShadingFrequency f;
+  if (!model || !frequency || !shadelab::parseModelName(model, m) || !shadelab::parseFrequencyName(frequency, f))
+  {
+    return false;
+  }
+  this->Panels.push_back({ text ? text : "", static_cast<int>(m), static_cast<int>(f) });
+  this->Modified();
+  return true;
+}
+
+void slComparisonRenderer::RemoveAllPanels()
+{
+  this->Panels.clear();
+  this->Modified();
+}
+
+void slComparisonRenderer::SetDifference(int a, int b, double amplification)
+{
+  this->DifferenceA = a;
+  this->DifferenceB = b;
+  this->Amplification = amplification;
+  this->Modified();
+}
+
+vtkImageData* slComparisonRenderer::GetImage()
+{
+  return this->Image;
+}
+
+bool slComparisonRenderer::Render()
+{
+  this->ErrorMessage.clear();
+  const int n = static_cast<int>(this->Panels.size());
+  const bool difference = this->DifferenceA >= 0;
+  if (!this->Scene || !this->Mesh || n == 0)
+  {
+    this->ErrorMessage = "slComparisonRenderer needs a scene, a mesh and at least one panel";
+    return false;
+  }
+  if (difference && (this->DifferenceA >= n || this->DifferenceB < 0 || this->DifferenceB >= n))
+  {
+    this->ErrorMessage = "difference panels " + std::to_string(this->DifferenceA) + " and " +
+      std::to_string(this->DifferenceB) + " do not exist";
+    return false;
+  }
+  if (!slSceneRenderer::HasDisplay())
+  {
+    this->ErrorMessage = "no X display (DISPLAY is unset): Debian's VTK renders through X11; run under xvfb-run";
+    return false;
+  }
+
+  vtkSmartPointer<vtkPolyData> mesh = this->Mesh;
+  if (!mesh->GetPointData()->GetNormals())
+  {
+    vtkNew<vtkPolyDataNormals> normals;
+    normals->SetInputData(mesh);
+    normals->SplittingOff();
+    normals->Update();
+    mesh = normals->GetOutput();
+  }
+
+  const int columns = n + (difference ? 1 : 0);
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(columns * this->PanelWidth, this->PanelHeight);
+  vtkNew<vtkCamera> camera; // linked: every panel shows this one camera
+  std::vector<vtkSmartPointer<vtkTextActor>> labels;
+
+  for (int i = 0; i < n; ++i)
+  {
+    const Panel& panel = this->Panels[static_cast<size_t>(i)];
+    vtkNew<vtkPolyDataMapper> mapper; // one mapper per panel: each keeps its own shaders
+    mapper->SetInputData(mesh);
+    mapper->ScalarVisibilityOff();
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    if (!this->Scene->ApplyToActor(actor))
+    {
+      this->ErrorMessage = this->Scene->GetErrorMessage();
+      return false;
+    }
+    vtkNew<vtkRenderer> renderer;
+    renderer->SetViewport(static_cast<double>(i) / columns, 0.0, static_cast<double>(i + 1) / columns, 1.0);
+    renderer->SetActiveCamera(camera);
+    renderer->AddActor(actor);
+    labels.push_back(label(panel.label, this->PanelHeight));
+    renderer->AddActor2D(labels.back());
+    this->Scene->ApplyToRenderer(renderer); // the first call places the shared camera
+    vtkNew<slLightingPass> pass;
+    pass->SetScene(this->Scene);
+    pass->SetModel(panel.model);
+    pass->SetFrequency(panel.frequency);
+    renderer->SetPass(pass);
+    window->AddRenderer(renderer);
+  }
+  if (difference)
+  {
+    vtkNew<vtkRenderer> renderer;
+    renderer->SetViewport(static_cast<double>(n) / columns, 0.0, 1.0, 1.0);
+    renderer->SetBackground(0.0, 0.0, 0.0);
+    std::ostringstream text;
+    text << "|" << this->Panels[static_cast<size_t>(this->DifferenceA)].label << " - "
+         << this->Panels[static_cast<size_t>(this->DifferenceB)].label << "| x " << this->Amplification;
+    labels.push_back(label(text.str(), this->PanelHeight));
+    renderer->AddActor2D(labels.back());
+    window->AddRenderer(renderer);
+  }
+
+  // Once without labels (the difference must not see them), once with.
+  auto capture = [&window](bool withLabels, std::vector<vtkSmartPointer<vtkTextActor>>& texts) {
+    for (auto& t : texts)
+    {
+      t->SetVisibility(withLabels);
+    }
+    window->Render();
+    vtkNew<vtkWindowToImageFilter> grab;
+    grab->SetInput(window);
+    grab->SetInputBufferTypeToRGB();
+    grab->ReadFrontBufferOff();
+    grab->Update();
+    auto image = vtkSmartPointer<vtkImageData>::New();
+    image->DeepCopy(grab->GetOutput());
+    return image;
+  };
+  vtkSmartPointer<vtkImageData> plain = difference ? capture(false, labels) : nullptr;
+  this->Image = capture(true, labels);
+  if (difference)
+  {
+    this->FillDifference(plain, this->Image);
+  }
+  return true;
+}
+
+void slComparisonRenderer::FillDifference(vtkImageData* plain, vtkImageData* image) const
+{
+  // The difference panel so far holds only its label (white on black); the
+  // amplified difference of the unlabelled panels goes underneath it.
+  auto* source = vtkUnsignedCharArray::SafeDownCast(plain->GetPointData()->GetScalars());
+  auto* pixels = vtkUnsignedCharArray::SafeDownCast(image->GetPointData()->GetScalars());
+  int dims[3];
+  image->GetDimensions(dims);
+  const int n = static_cast<int>(this->Panels.size());
+  const int w = dims[0] / (n + 1);
+  for (int y = 0; y < dims[1]; ++y)
+  {
+    for (int x = 0; x < w; ++x)
+    {
+      const vtkIdType target = static_cast<vtkIdType>(y) * dims[0] + n * w + x;
+      const vtkIdType a = static_cast<vtkIdType>(y) * dims[0] + this->DifferenceA * w + x;
+      const vtkIdType b = static_cast<vtkIdType>(y) * dims[0] + this->DifferenceB * w + x;
+      for (int c = 0; c < 3; ++c)
+      {
+        const double d = std::abs(source->GetValue(3 * a + c) - source->GetValue(3 * b + c)) * this->Amplification;
+        const unsigned char labelValue = pixels->GetValue(3 * target + c);
+        pixels->SetValue(3 * target + c, std::max(labelValue, static_cast<unsigned char>(std::min(255.0, d))));
+      }
+    }
+  }
+}
+
+void slComparisonRenderer::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Panels: " << this->Panels.size() << "\n";
+  for (const Panel& p : this->Panels)
+  {
+    os << indent << "  " << p.label << ": " << shadelab::modelName(static_cast<shadelab::ShadingModel>(p.model))
+       << ", " << shadelab::frequencyName(static_cast<shadelab::ShadingFrequency>(p.frequency)) << "\n";
+  }
+  os << indent << "Difference: " << this->DifferenceA << " - " << this->DifferenceB << " x " << this->Amplification
+     << "\n";
+  os << indent << "PanelSize: " << this->PanelWidth << " x " << this->PanelHeight << "\n";
+}

@@ -1,0 +1,479 @@
+#include "slLightingPass.h"
+
+#include "slLightingPassShaders.h"
+#include "slScene.h"
+
+#include "shadelab/LightingGLSL.h"
+#include "shadelab/Scene.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkLight.h>
+#include <vtkLightCollection.h>
+#include <vtkMatrix4x4.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkDataArray.h>
+#include <vtkOpenGLPolyDataMapper.h>
+#include <vtkProp.h>
+#include <vtkProperty.h>
+#include <vtkRenderState.h>
+#include <vtkRenderStepsPass.h>
+#include <vtkRenderer.h>
+#include <vtkShaderProgram.h>
+
+#include <set>
+#include <vector>
+
+vtkStandardNewMacro(slLightingPass);
+
+namespace shaders = slLightingPassShaders;
+
+namespace
+{
+const char* const kLightTag = "//SL::Light::Impl";
+const char* const kTextureTag = "//SL::TCoord::Impl";
+const char* const kDeclarationTag = "//SL::Light::Dec";
+
+bool contains(const std::string& text, const char* what)
+{
+  return text.find(what) != std::string::npos;
+}
+
+glm::vec3 toVec3(const double v[3])
+{
+  return glm::vec3(static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]));
+}
+
+/// Uniform names of light i, built once.
+struct LightUniformNames
+{
+  std::string position, direction, ambient, diffuse, specular, intensity, attenuation, cosCutoff,
+    cosInner, exponent;
+  explicit LightUniformNames(int i)
+  {
+    const std::string base = "slLights[" + std::to_string(i) + "].";
+    position = base + "position";
+    direction = base + "direction";
+    ambient = base + "ambient";
+    diffuse = base + "diffuse";
+    specular = base + "specular";
+    intensity = base + "intensity";
+    attenuation = base + "attenuation";
+    cosCutoff = base + "cosCutoff";
+    cosInner = base + "cosInner";
+    exponent = base + "exponent";
+  }
+};
+
+/// The material of an actor's vtkProperty, as VTK's own lighting reads it.
+shadelab::glsl::slMaterial materialOf(vtkProperty* p)
+{
+  shadelab::glsl::slMaterial m;
+  m.ambient = static_cast<float>(p->GetAmbient()) * toVec3(p->GetAmbientColor());
+  m.diffuse = static_cast<float>(p->GetDiffuse()) * toVec3(p->GetDiffuseColor());
+  m.specular = static_cast<float>(p->GetSpecular()) * toVec3(p->GetSpecularColor());
+  m.emission = glm::vec3(0.0f);
+  m.shininess = static_cast<float>(p->GetSpecularPower());
+  return m;
+}
+
+/// True if the mapper draws a point array "Tangents" with 4 components (xyz,
+/// handedness). VTK's TANGENTS attribute only takes 3 components, so the
+/// array is found by name.
+bool hasTangentsWithHandedness(vtkAbstractMapper* mapper)
+{
+  auto* polyMapper = vtkOpenGLPolyDataMapper::SafeDownCast(mapper);
+  vtkPolyData* input = polyMapper ? polyMapper->GetInput() : nullptr;
+  vtkDataArray* tangents = input ? input->GetPointData()->GetArray("Tangents") : nullptr;
+  return tangents && tangents->GetNumberOfComponents() == 4;
+}
+
+bool isOurs(vtkAbstractMapper* mapper, vtkProp* prop)
+{
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  return vtkOpenGLPolyDataMapper::SafeDownCast(mapper) && actor && !actor->HasTranslucentPolygonalGeometry();
+}
+} // namespace
+
+struct slLightingPass::Internals
+{
+  std::vector<shadelab::glsl::slLight> LightsVC; // view coordinates
+  std::vector<LightUniformNames> Names;
+  bool Parallel = false;
+  bool WarnedTooManyLights = false;
+  bool WarnedNoNormals = false;
+  std::set<vtkMapper*> TangentMappers; // mappers given the slTangentMC attribute
+
+  std::vector<int> LightTypes() const
+  {
+    std::vector<int> types;
+    for (const shadelab::glsl::slLight& l : this->LightsVC)
+    {
+      types.push_back(l.type);
+    }
+    return types;
+  }
+};
+
+slLightingPass::slLightingPass()
+  : DelegatePass(vtkSmartPointer<vtkRenderStepsPass>::New())
+  , Internal(new Internals)
+{
+  for (int i = 0; i < shaders::MaximumLights; ++i)
+  {
+    this->Internal->Names.emplace_back(i);
+  }
+  this->ShaderStageTime.Modified();
+}
+
+slLightingPass::~slLightingPass() = default;
+
+int slLightingPass::GetMaximumNumberOfLights()
+{
+  return shaders::MaximumLights;
+}
+
+int slLightingPass::GetNumberOfLightsUsed() const
+{
+  return static_cast<int>(this->Internal->LightsVC.size());
+}
+
+void slLightingPass::SetDelegatePass(vtkRenderPass* delegate)
+{
+  this->DelegatePass = delegate;
+  this->Modified();
+}
+
+vtkRenderPass* slLightingPass::GetDelegatePass()
+{
+  return this->DelegatePass;
+}
+
+void slLightingPass::SetScene(slScene* scene)
+{
+  this->Scene = scene;
+  if (scene)
+  {
+    this->SetModel(static_cast<int>(scene->GetScene().model));
+    this->SetFrequency(static_cast<int>(scene->GetScene().frequency));
+  }
+  this->Modified();
+}
+
+slScene* slLightingPass::GetScene()
+{
+  return this->Scene;
+}
+
+bool slLightingPass::SetModelName(const char* name)
+{
+  shadelab::ShadingModel model;
+  if (!name || !shadelab::parseModelName(name, model))
+  {
+    return false;
+  }
+  this->SetModel(static_cast<int>(model));
+  return true;
+}
+
+void slLightingPass::SetFrequency(int frequency)
+{
+  frequency = frequency < FLAT ? FLAT : (frequency > PHONG ? PHONG : frequency);
+  if (frequency != this->Frequency)
+  {
+    this->Frequency = frequency;
+    this->ShaderStageTime.Modified(); // the only parameter that changes shader code
+    this->Modified();
+  }
+}
+
+bool slLightingPass::SetFrequencyName(const char* name)
+{
+  shadelab::ShadingFrequency frequency;
+  if (!name || !shadelab::parseFrequencyName(name, frequency))
+  {
+    return false;
+  }
+  this->SetFrequency(static_cast<int>(frequency));
+  return true;
+}
+
+vtkMTimeType slLightingPass::GetShaderStageMTime()
+{
+  return this->ShaderStageTime.GetMTime();
+}
+
+void slLightingPass::PrepareLights(vtkRenderer* renderer)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  std::vector<shadelab::SceneLight> lights;
+  if (this->Scene)
+  {
+    lights = this->Scene->GetScene().lights;
+  }
+  else
+  {
+    vtkNew<slScene> fromVTK;
+    fromVTK->SetLightsFromVTK(renderer->GetLights());
+    lights = fromVTK->GetScene().lights;
+  }
+  if (lights.size() > static_cast<size_t>(shaders::MaximumLights))
+  {
+    if (!this->Internal->WarnedTooManyLights)
+    {
+      vtkWarningMacro(<< lights.size() << " lights given; the pass uses the first " << shaders::MaximumLights);
+      this->Internal->WarnedTooManyLights = true;
+    }
+    lights.resize(shaders::MaximumLights);
+  }
+
+  const glm::vec3 eye = toVec3(camera->GetPosition());
+  const glm::vec3 focal = toVec3(camera->GetFocalPoint());
+  const glm::vec3 up = toVec3(camera->GetViewUp());
+  vtkMatrix4x4* view = camera->GetModelViewTransformMatrix();
+  auto transformPoint = [view](const glm::vec3& p) {
+    const double in[4] = { p.x, p.y, p.z, 1.0 };
+    double out[4];
+    view->MultiplyPoint(in, out);
+    return glm::vec3(static_cast<float>(out[0]), static_cast<float>(out[1]), static_cast<float>(out[2]));
+  };
+  auto transformDirection = [view](const glm::vec3& d) {
+    const double in[4] = { d.x, d.y, d.z, 0.0 };
+    double out[4];
+    view->MultiplyPoint(in, out);
+    return shadelab::glsl::slSafeNormalize(
+      glm::vec3(static_cast<float>(out[0]), static_cast<float>(out[1]), static_cast<float>(out[2])));
+  };
+
+  const std::vector<int> previousTypes = this->Internal->LightTypes();
+  this->Internal->LightsVC.clear();
+  for (const shadelab::SceneLight& light : lights)
+  {
+    shadelab::glsl::slLight l = shadelab::toEvaluationLight(shadelab::lightInWorldSpace(light, eye, focal, up));
+    l.position = transformPoint(l.position);
+    l.direction = transformDirection(l.direction);
+    this->Internal->LightsVC.push_back(l);
+  }
+  this->Internal->Parallel = camera->GetParallelProjection() != 0;
+  if (this->Internal->LightTypes() != previousTypes)
+  {
+    this->ShaderStageTime.Modified(); // light count and types are compiled into the shaders
+  }
+}
+
+void slLightingPass::MapTangents(const vtkRenderState* s)
+{
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkActor* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
+    auto* mapper = actor ? vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper()) : nullptr;
+    if (mapper && hasTangentsWithHandedness(mapper) && !this->Internal->TangentMappers.count(mapper))
+    {
+      // Once per mapper: mapping an attribute marks the mapper modified.
+      mapper->MapDataArrayToVertexAttribute("slTangentMC", "Tangents", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+      this->Internal->TangentMappers.insert(mapper);
+    }
+  }
+}
+
+void slLightingPass::MatchInterpolation(const vtkRenderState* s)
+{
+  // VTK's mapper supplies per-face normals under flat interpolation and
+  // interpolated point normals otherwise: make it supply what we need.
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkActor* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
+    if (!actor)
+    {
+      continue;
+    }
+    vtkProperty* property = actor->GetProperty();
+    const bool flat = property->GetInterpolation() == VTK_FLAT;
+    if (this->Frequency == FLAT && !flat)
+    {
+      property->SetInterpolationToFlat();
+    }
+    else if (this->Frequency != FLAT && flat)
+    {
+      property->SetInterpolationToPhong();
+    }
+  }
+}
+
+void slLightingPass::Render(const vtkRenderState* s)
+{
+  this->NumberOfRenderedProps = 0;
+  if (!this->DelegatePass)
+  {
+    vtkWarningMacro(<< "no delegate pass");
+    return;
+  }
+  vtkRenderer* renderer = s->GetRenderer();
+  this->PrepareLights(renderer);
+  this->MatchInterpolation(s);
+  this->MapTangents(s);
+
+  // Without a light switched on, VTK's mapper passes no normals at all.
+  bool anyLightOn = false;
+  vtkLightCollection* lights = renderer->GetLights();
+  lights->InitTraversal();
+  while (vtkLight* light = lights->GetNextItem())
+  {
+    anyLightOn = anyLightOn || light->GetSwitch();
+  }
+  vtkSmartPointer<vtkLight> placeholder;
+  if (!anyLightOn)
+  {
+    placeholder = vtkSmartPointer<vtkLight>::New();
+    placeholder->SetLightTypeToHeadlight();
+    placeholder->SetIntensity(0.0);
+    renderer->AddLight(placeholder);
+  }
+
+  this->PreRender(s);
+  this->DelegatePass->Render(s);
+  this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
+  this->PostRender(s);
+
+  if (placeholder)
+  {
+    renderer->RemoveLight(placeholder);
+  }
+}
+
+void slLightingPass::ReleaseGraphicsResources(vtkWindow* window)
+{
+  if (this->DelegatePass)
+  {
+    this->DelegatePass->ReleaseGraphicsResources(window);
+  }
+}
+
+bool slLightingPass::PreReplaceShaderValues(
+  std::string& vertexShader, std::string&, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop)
+{
+  if (isOurs(mapper, prop))
+  {
+    // Mark where our declarations go (VTK consumes its own tags), and keep
+    // VTK from writing its own lighting and texture modulation; our code goes
+    // in these places in PostReplaceShaderValues().
+    const std::string declarations = std::string(kDeclarationTag) + "\n//VTK::Light::Dec";
+    vtkShaderProgram::Substitute(vertexShader, "//VTK::Light::Dec", declarations, false);
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Dec", declarations, false);
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Impl", kLightTag, false);
+    if (hasTangentsWithHandedness(mapper))
+    {
+      vtkShaderProgram::Substitute(vertexShader, "//VTK::Light::Dec", "//SL::Tangent::Dec\n//VTK::Light::Dec", false);
+      vtkShaderProgram::Substitute(vertexShader, "//VTK::Light::Impl", "//SL::Tangent::Impl\n//VTK::Light::Impl", false);
+    }
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::TCoord::Impl", kTextureTag, false);
+  }
+  return true;
+}
+
+bool slLightingPass::PostReplaceShaderValues(std::string& vertexShader, std::string&,
+  std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+{
+  if (!contains(fragmentShader, kLightTag))
+  {
+    return true;
+  }
+
+  auto frequency = static_cast<shaders::Frequency>(this->Frequency);
+  const bool vertexNormals = contains(vertexShader, "out vec3 normalVCVSOutput");
+  if (frequency != shaders::Flat && !vertexNormals)
+  {
+    if (!this->Internal->WarnedNoNormals)
+    {
+      vtkWarningMacro(<< "a mesh without point normals is shaded flat (Gouraud and Phong need point normals)");
+      this->Internal->WarnedNoNormals = true;
+    }
+    frequency = shaders::Flat;
+  }
+  shaders::FragmentInputs inputs;
+  inputs.scalarColors = contains(fragmentShader, "vertexColorVSOutput") || contains(fragmentShader, "textureC");
+  inputs.texture = contains(fragmentShader, "actortexture") && contains(fragmentShader, "tcoordVCVSOutput");
+  inputs.mapperFaceNormal = !vertexNormals && contains(fragmentShader, "normalVCVSOutput");
+  // VTK maps normals itself only for 3-component tangents; 4-component
+  // (MikkTSpace) ones reach the shader as slTangentMC, mapped in Render().
+  inputs.tangentNormalMap = frequency == shaders::Phong && contains(fragmentShader, "sampler2D normalTex") &&
+    contains(fragmentShader, "tcoordVCVSOutput") && !contains(fragmentShader, "tangentVCVSOutput") &&
+    contains(vertexShader, "//SL::Tangent");
+  if (inputs.tangentNormalMap)
+  {
+    vtkShaderProgram::Substitute(vertexShader, "//SL::Tangent::Dec", shaders::tangentVertexDeclarations(), false);
+    vtkShaderProgram::Substitute(vertexShader, "//SL::Tangent::Impl", shaders::tangentVertexImplementation(), false);
+  }
+
+  vtkShaderProgram::Substitute(vertexShader, kDeclarationTag, shaders::vertexDeclarations(frequency, this->Internal->LightTypes()), false);
+  vtkShaderProgram::Substitute(
+    vertexShader, "//VTK::Light::Impl", shaders::vertexImplementation(frequency) + "//VTK::Light::Impl", false);
+  vtkShaderProgram::Substitute(fragmentShader, kDeclarationTag, shaders::fragmentDeclarations(frequency, this->Internal->LightTypes(), inputs.tangentNormalMap), false);
+  vtkShaderProgram::Substitute(fragmentShader, kLightTag, shaders::fragmentImplementation(frequency, inputs), false);
+  vtkShaderProgram::Substitute(fragmentShader, kTextureTag, "", false);
+  return true;
+}
+
+bool slLightingPass::SetShaderParameters(
+  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
+{
+  if (!program->IsUniformUsed("slModel") && !program->IsUniformUsed("slMat.emission"))
+  {
+    return true; // not one of our shaders, or everything was optimised away
+  }
+  const std::vector<shadelab::glsl::slLight>& lights = this->Internal->LightsVC;
+  for (size_t i = 0; i < lights.size(); ++i)
+  {
+    const shadelab::glsl::slLight& l = lights[i];
+    const LightUniformNames& n = this->Internal->Names[i];
+    program->SetUniform3f(n.position.c_str(), &l.position[0]);
+    program->SetUniform3f(n.direction.c_str(), &l.direction[0]);
+    program->SetUniform3f(n.ambient.c_str(), &l.ambient[0]);
+    program->SetUniform3f(n.diffuse.c_str(), &l.diffuse[0]);
+    program->SetUniform3f(n.specular.c_str(), &l.specular[0]);
+    program->SetUniformf(n.intensity.c_str(), l.intensity);
+    program->SetUniform3f(n.attenuation.c_str(), &l.attenuation[0]);
+    program->SetUniformf(n.cosCutoff.c_str(), l.cosCutoff);
+    program->SetUniformf(n.cosInner.c_str(), l.cosInner);
+    program->SetUniformf(n.exponent.c_str(), l.exponent);
+  }
+
+  shadelab::glsl::slMaterial m;
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  if (this->UseSceneMaterial && this->Scene)
+  {
+    m = shadelab::toEvaluationMaterial(this->Scene->GetScene().material);
+  }
+  else
+  {
+    m = actor ? materialOf(actor->GetProperty()) : shadelab::toEvaluationMaterial(shadelab::SceneMaterial());
+  }
+  program->SetUniform3f("slMat.ambient", &m.ambient[0]);
+  program->SetUniform3f("slMat.diffuse", &m.diffuse[0]);
+  program->SetUniform3f("slMat.specular", &m.specular[0]);
+  program->SetUniform3f("slMat.emission", &m.emission[0]);
+  program->SetUniformf("slMat.shininess", m.shininess);
+  program->SetUniformi("slModel", this->Model);
+  program->SetUniformi("slComponent", this->Component);
+  program->SetUniformi("slComponentLight", this->ComponentLight);
+  program->SetUniformi("slFalseColor", this->FalseColor ? 1 : 0);
+  program->SetUniformi("slParallel", this->Internal->Parallel ? 1 : 0);
+  program->SetUniformf("slNormalScale", actor ? static_cast<float>(actor->GetProperty()->GetNormalScale()) : 1.0f);
+  return true;
+}
+
+void slLightingPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Model: " << shadelab::modelName(static_cast<shadelab::ShadingModel>(this->Model)) << "\n";
+  os << indent << "Frequency: " << shadelab::frequencyName(static_cast<shadelab::ShadingFrequency>(this->Frequency))
+     << "\n";
+  os << indent << "UseSceneMaterial: " << this->UseSceneMaterial << "\n";
+  os << indent << "Component: " << this->Component << " (light " << this->ComponentLight << ")\n";
+  os << indent << "FalseColor: " << this->FalseColor << "\n";
+  os << indent << "Scene: " << (this->Scene ? "set" : "(none: the renderer's lights)") << "\n";
+  os << indent << "DelegatePass: " << this->DelegatePass.GetPointer() << "\n";
+}

@@ -1,0 +1,245 @@
+#include "slLightingPassShaders.h"
+
+#include "shadelab/LightingShaderSource.h"
+
+namespace slLightingPassShaders
+{
+
+namespace
+{
+/// GLSL returning the compiled-in type of light i: after the constant-bound
+/// loop unrolls, every test of a light's type folds away.
+std::string lightTypeFunction(const std::vector<int>& types)
+{
+  std::string body = "0";
+  for (size_t i = types.size(); i-- > 0;)
+  {
+    body = "i == " + std::to_string(i) + " ? " + std::to_string(types[i]) + " : (" + body + ")";
+  }
+  return "int slLightTypeOf(int i)\n{\n  return " + body + ";\n}\n";
+}
+} // namespace
+
+std::string declarations(const std::vector<int>& lightTypes)
+{
+  return "// ---- ShadeLab lighting (slLighting.glsl, the lighting core's single copy) ----\n" +
+    shadelab::lightingShaderSource() +
+    "// ---- ShadeLab lighting pass ----\n"
+    "const int SL_MAX_LIGHTS = " +
+    std::to_string(MaximumLights) +
+    ";\n"
+    "uniform slLight slLights[SL_MAX_LIGHTS];\n"
+    "// The light count and types are compiled in: the loop unrolls and type tests fold.\n"
+    "const int slLightCount = " +
+    std::to_string(lightTypes.size()) + ";\n" + lightTypeFunction(lightTypes) +
+    "uniform slMaterial slMat;\n"
+    "uniform int slModel;\n"
+    "uniform int slComponent;       // 0 total, 1 ambient, 2 diffuse, 3 specular, 4 emission, 5 cos theta\n"
+    "uniform int slComponentLight;  // -1: all lights, else only this one\n"
+    "uniform int slFalseColor;\n"
+    "uniform int slParallel;\n"
+    "\n"
+    "// The eye for a view-coordinate point: the origin, or straight back for parallel projection.\n"
+    "vec3 slEye(vec3 P)\n"
+    "{\n"
+    "  return slParallel == 1 ? P + vec3(0.0f, 0.0f, 1.0f) : vec3(0.0f);\n"
+    "}\n"
+    "\n"
+    "// All lights (or the chosen one) at P, with k_a = k_d = 1 so that the base\n"
+    "// colour (scalars, texture) can multiply them afterwards; k_s is applied.\n"
+    "slTerms slLightAll(vec3 P, vec3 N)\n"
+    "{\n"
+    "  slMaterial white = slMat;\n"
+    "  white.ambient = vec3(1.0f);\n"
+    "  white.diffuse = vec3(1.0f);\n"
+    "  vec3 n = slSafeNormalize(N);\n"
+    "  vec3 v = slSafeNormalize(slEye(P) - P);\n"
+    "  slTerms t = slZeroTerms();\n"
+    "  for (int i = 0; i < slLightCount; ++i)\n"
+    "  {\n"
+    "    if (slComponentLight < 0 || i == slComponentLight)\n"
+    "    {\n"
+    "      slLight light = slLights[i];\n"
+    "      light.type = slLightTypeOf(i);\n"
+    "      t = slAddTerms(t, slShadeLightUnit(light, white, slModel, P, n, v));\n"
+    "    }\n"
+    "  }\n"
+    "  return t;\n"
+    "}\n"
+    "\n"
+    "// Raw N.L (slCosTheta of the lighting core) of the chosen light, light 0\n"
+    "// when all are chosen; negative: the surface shadows itself.\n"
+    "float slChosenCosTheta(vec3 P, vec3 N)\n"
+    "{\n"
+    "  int k = max(slComponentLight, 0);\n"
+    "  if (k >= slLightCount) { return 0.0f; }\n"
+    "  slLight light = slLights[k];\n"
+    "  light.type = slLightTypeOf(k);\n"
+    "  return slCosTheta(light, P, N);\n"
+    "}\n";
+}
+
+std::string vertexDeclarations(Frequency frequency, const std::vector<int>& lightTypes)
+{
+  switch (frequency)
+  {
+    case Flat:
+      return "flat out vec4 slFlatVertexVC;\n";
+    case Gouraud:
+      return declarations(lightTypes) +
+        "out vec3 slAmbientVS;\nout vec3 slDiffuseVS;\nout vec3 slSpecularVS;\nout float slCosThetaVS;\n"
+        "out vec3 slAmbientBackVS;\nout vec3 slDiffuseBackVS;\nout vec3 slSpecularBackVS;\n";
+    case Phong:
+      break;
+  }
+  return std::string();
+}
+
+std::string vertexImplementation(Frequency frequency)
+{
+  switch (frequency)
+  {
+    case Flat:
+      return "  slFlatVertexVC = vertexVCVSOutput; // the provoking vertex lights the whole face\n";
+    case Gouraud:
+      // True Gouraud: light once per vertex, for the front and the back side.
+      return "  {\n"
+             "    vec3 slP = vertexVCVSOutput.xyz;\n"
+             "    vec3 slN = normalVCVSOutput;\n"
+             "    slTerms slFront = slLightAll(slP, slN);\n"
+             "    slTerms slBack = slLightAll(slP, -slN);\n"
+             "    slAmbientVS = slFront.ambient;\n"
+             "    slDiffuseVS = slFront.diffuse;\n"
+             "    slSpecularVS = slFront.specular;\n"
+             "    slAmbientBackVS = slBack.ambient;\n"
+             "    slDiffuseBackVS = slBack.diffuse;\n"
+             "    slSpecularBackVS = slBack.specular;\n"
+             "    slCosThetaVS = slComponent == 5 ? slChosenCosTheta(slP, slN) : 0.0f;\n"
+             "  }\n";
+    case Phong:
+      break;
+  }
+  return std::string();
+}
+
+std::string tangentVertexDeclarations()
+{
+  return "in vec4 slTangentMC;\nout vec4 slTangentVC;\n";
+}
+
+std::string tangentVertexImplementation()
+{
+  return "  slTangentVC = vec4(normalMatrix * slTangentMC.xyz, slTangentMC.w);\n";
+}
+
+std::string fragmentDeclarations(Frequency frequency, const std::vector<int>& lightTypes, bool tangentNormalMap)
+{
+  std::string out = declarations(lightTypes);
+  if (tangentNormalMap)
+  {
+    out += "in vec4 slTangentVC;\nuniform float slNormalScale;\n";
+  }
+  if (frequency == Flat)
+  {
+    out += "flat in vec4 slFlatVertexVC;\n";
+  }
+  if (frequency == Gouraud)
+  {
+    out += "in vec3 slAmbientVS;\nin vec3 slDiffuseVS;\nin vec3 slSpecularVS;\nin float slCosThetaVS;\n"
+           "in vec3 slAmbientBackVS;\nin vec3 slDiffuseBackVS;\nin vec3 slSpecularBackVS;\n";
+  }
+  out += "\n"
+         "// A perceptually ordered ramp (dark blue to yellow) for false colour.\n"
+         "vec3 slRamp(float s)\n"
+         "{\n"
+         "  s = clamp(s, 0.0f, 1.0f);\n"
+         "  vec3 a = vec3(0.267f, 0.005f, 0.329f);\n"
+         "  vec3 b = vec3(0.128f, 0.567f, 0.551f);\n"
+         "  vec3 c = vec3(0.993f, 0.906f, 0.144f);\n"
+         "  return s < 0.5f ? mix(a, b, 2.0f * s) : mix(b, c, 2.0f * s - 1.0f);\n"
+         "}\n"
+         "\n"
+         "// Blue for -1, white for 0, red for +1.\n"
+         "vec3 slDiverging(float s)\n"
+         "{\n"
+         "  s = clamp(s, -1.0f, 1.0f);\n"
+         "  return s < 0.0f ? mix(vec3(1.0f), vec3(0.23f, 0.30f, 0.75f), -s) : mix(vec3(1.0f), vec3(0.71f, 0.02f, 0.15f), s);\n"
+         "}\n"
+         "\n"
+         "vec3 slShowScalar(float s)\n"
+         "{\n"
+         "  return slFalseColor == 1 ? slRamp(s) : vec3(clamp(s, 0.0f, 1.0f));\n"
+         "}\n"
+         "\n"
+         "// The picture: the total, or one component for teaching and debugging.\n"
+         "vec3 slCompose(slTerms t, float cosTheta, vec3 base)\n"
+         "{\n"
+         "  vec3 ambient = t.ambient * slMat.ambient * base;\n"
+         "  vec3 diffuse = t.diffuse * slMat.diffuse * base;\n"
+         "  vec3 specular = t.specular;\n"
+         "  vec3 emission = slMat.emission;\n"
+         "  vec3 luma = vec3(0.2126f, 0.7152f, 0.0722f);\n"
+         "  if (slComponent == 1) { return slFalseColor == 1 ? slRamp(dot(luma, ambient)) : ambient; }\n"
+         "  if (slComponent == 2) { return slFalseColor == 1 ? slRamp(dot(luma, diffuse)) : diffuse; }\n"
+         "  if (slComponent == 3) { return slFalseColor == 1 ? slRamp(dot(luma, specular)) : specular; }\n"
+         "  if (slComponent == 4) { return slFalseColor == 1 ? slRamp(dot(luma, emission)) : emission; }\n"
+         "  if (slComponent == 5) { return slFalseColor == 1 ? slDiverging(cosTheta) : slShowScalar(cosTheta); }\n"
+         "  return ambient + diffuse + specular + emission;\n"
+         "}\n";
+  return out;
+}
+
+std::string fragmentImplementation(Frequency frequency, const FragmentInputs& inputs)
+{
+  std::string out = "  {\n    vec3 slBase = vec3(1.0f);\n";
+  if (inputs.scalarColors)
+  {
+    out += "    slBase = diffuseIntensity > 0.0f ? diffuseColor / diffuseIntensity : vec3(1.0f);\n";
+  }
+  if (inputs.texture)
+  {
+    out += "    slBase = slBase * texture(actortexture, tcoordVCVSOutput).rgb;\n";
+  }
+  out += "    slTerms slT;\n    float slCos;\n";
+  switch (frequency)
+  {
+    case Flat:
+      if (inputs.mapperFaceNormal)
+      {
+        out += "    vec3 slN = normalVCVSOutput; // cell normals, or VTK's own face normal\n";
+      }
+      else
+      {
+        out += "    vec3 slN = cross(dFdx(vertexVC.xyz), dFdy(vertexVC.xyz));\n"
+               "    if (dot(slN, slEye(vertexVC.xyz) - vertexVC.xyz) < 0.0f) { slN = -slN; }\n";
+      }
+      out += "    slT = slLightAll(slFlatVertexVC.xyz, slN);\n"
+             "    slCos = slComponent == 5 ? slChosenCosTheta(slFlatVertexVC.xyz, slN) : 0.0f;\n";
+      break;
+    case Gouraud:
+      out += "    slT = slZeroTerms();\n"
+             "    slT.ambient = gl_FrontFacing ? slAmbientVS : slAmbientBackVS;\n"
+             "    slT.diffuse = gl_FrontFacing ? slDiffuseVS : slDiffuseBackVS;\n"
+             "    slT.specular = gl_FrontFacing ? slSpecularVS : slSpecularBackVS;\n"
+             "    slCos = gl_FrontFacing ? slCosThetaVS : -slCosThetaVS;\n";
+      break;
+    case Phong:
+      if (inputs.tangentNormalMap)
+      {
+        // Tangent-space normal map (OpenGL, green up) with MikkTSpace
+        // handedness: bitangent = w (N x T).
+        out += "    vec3 slTan = normalize(slTangentVC.xyz - dot(slTangentVC.xyz, normalVCVSOutput) * normalVCVSOutput);\n"
+               "    vec3 slBit = (slTangentVC.w < 0.0f ? -1.0f : 1.0f) * cross(normalVCVSOutput, slTan);\n"
+               "    vec3 slNts = texture(normalTex, tcoordVCVSOutput).xyz * 2.0f - 1.0f;\n"
+               "    slNts = normalize(slNts * vec3(slNormalScale, slNormalScale, 1.0f));\n"
+               "    normalVCVSOutput = normalize(mat3(slTan, slBit, normalVCVSOutput) * slNts);\n";
+      }
+      out += "    slT = slLightAll(vertexVC.xyz, normalVCVSOutput);\n"
+             "    slCos = slComponent == 5 ? slChosenCosTheta(vertexVC.xyz, normalVCVSOutput) : 0.0f;\n";
+      break;
+  }
+  out += "    gl_FragData[0] = vec4(slCompose(slT, slCos, slBase), opacity);\n  }\n";
+  return out;
+}
+
+} // namespace slLightingPassShaders

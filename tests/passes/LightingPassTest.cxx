@@ -1,0 +1,448 @@
+// slLightingPass: agreement with the CPU, the differences between flat,
+// Gouraud and Phong, component views, and parameter updates.
+#include "PassTestUtilities.h"
+
+#include "shadelab/LightingGLSL.h"
+#include "shadelab/Scene.h"
+#include "slLightingPass.h"
+
+#include <vtkActor.h>
+#include <vtkCellData.h>
+#include <vtkNew.h>
+#include <vtkPlaneSource.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataNormals.h>
+#include <vtkSphereSource.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <glm/gtc/constants.hpp>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+using passtest::Image;
+
+namespace
+{
+const glm::vec3 kMagenta(1.0f, 0.0f, 1.0f); // a background no lit grey surface reaches
+
+vtkSmartPointer<vtkPolyData> sphere(int resolution)
+{
+  vtkNew<vtkSphereSource> source;
+  source->SetThetaResolution(resolution);
+  source->SetPhiResolution(resolution);
+  source->SetRadius(1.0);
+  vtkNew<vtkPolyDataNormals> normals; // point and cell normals, no splitting
+  normals->SetInputConnection(source->GetOutputPort());
+  normals->SplittingOff();
+  normals->ComputeCellNormalsOn();
+  normals->Update();
+  vtkSmartPointer<vtkPolyData> out = normals->GetOutput();
+  return out;
+}
+
+/// Every light type, colours kept below saturation.
+shadelab::Scene sphereScene(shadelab::ShadingModel model)
+{
+  shadelab::Scene s;
+  s.model = model;
+  s.frequency = shadelab::ShadingFrequency::Gouraud;
+  s.background = kMagenta;
+  s.camera.hasPosition = true;
+  s.camera.position = glm::vec3(0.3f, 0.5f, 4.0f);
+  s.camera.focalPoint = glm::vec3(0.0f);
+  s.material.ambient = glm::vec3(0.3f);
+  s.material.diffuse = glm::vec3(0.45f, 0.4f, 0.35f);
+  s.material.specular = glm::vec3(0.25f);
+  s.material.emission = glm::vec3(0.02f, 0.0f, 0.03f);
+  s.material.shininess = 20.0f;
+
+  shadelab::SceneLight key;
+  key.direction = glm::vec3(-0.4f, -0.5f, -1.0f);
+  key.diffuse = glm::vec3(0.8f);
+  key.specular = glm::vec3(0.6f);
+  s.lights.push_back(key);
+
+  shadelab::SceneLight point;
+  point.type = shadelab::LightType::Point;
+  point.position = glm::vec3(2.0f, 1.0f, 1.5f);
+  point.attenuation = glm::vec3(0.5f, 0.0f, 0.1f);
+  point.diffuse = glm::vec3(0.3f, 0.2f, 0.1f);
+  point.specular = glm::vec3(0.2f);
+  point.ambient = glm::vec3(0.05f);
+  s.lights.push_back(point);
+
+  shadelab::SceneLight spot;
+  spot.type = shadelab::LightType::Spot;
+  spot.space = shadelab::LightSpace::Camera;
+  spot.position = glm::vec3(0.0f, 1.0f, 1.0f);
+  spot.direction = glm::vec3(0.0f, -1.0f, -1.0f);
+  spot.cutoffDegrees = 40.0f;
+  spot.edgeDegrees = 10.0f;
+  spot.exponent = 2.0f;
+  spot.diffuse = glm::vec3(0.1f, 0.2f, 0.3f);
+  spot.specular = glm::vec3(0.1f);
+  s.lights.push_back(spot);
+
+  shadelab::SceneLight ambient;
+  ambient.type = shadelab::LightType::Ambient;
+  ambient.ambient = glm::vec3(0.15f);
+  ambient.diffuse = ambient.specular = glm::vec3(0.0f);
+  s.lights.push_back(ambient);
+  if (model >= shadelab::ShadingModel::LambertNormalized)
+  {
+    // Normalised BRDFs divide by pi: give the lights irradiance pi for
+    // comparable brightness (see docs/lighting-core.md).
+    for (shadelab::SceneLight& l : s.lights)
+    {
+      l.intensity = l.type == shadelab::LightType::Ambient ? 1.0f : glm::pi<float>();
+    }
+    s.material.diffuse *= 0.8f;
+    s.material.specular *= 0.3f; // (n+2)/2 = 11 times brighter highlights: stay unsaturated
+  }
+  return s;
+}
+
+float maxChannelDifference(const Image& a, const Image& b, int x, int y)
+{
+  const float* p = a.at(x, y);
+  const float* q = b.at(x, y);
+  return std::max({ std::abs(p[0] - q[0]), std::abs(p[1] - q[1]), std::abs(p[2] - q[2]) });
+}
+} // namespace
+
+class GouraudAgreesWithCPU : public ::testing::TestWithParam<int>
+{
+};
+
+TEST_P(GouraudAgreesWithCPU, Within2Of255OnInteriorPixels)
+{
+  // (a) the pass in Gouraud mode; (b) the lighting core evaluated per vertex
+  // on the CPU and drawn unlit as vertex colours. Same mesh, camera, window.
+  const shadelab::Scene scene = sphereScene(static_cast<shadelab::ShadingModel>(GetParam()));
+  vtkSmartPointer<vtkPolyData> mesh = sphere(48);
+  passtest::Stage gpu = passtest::litStage(mesh, scene, 240, 240);
+  const Image lit = gpu.render();
+
+  vtkSmartPointer<vtkPolyData> coloured = vtkSmartPointer<vtkPolyData>::New();
+  coloured->DeepCopy(mesh);
+  passtest::colourPointsOnCPU(coloured, scene);
+  passtest::Stage cpu = passtest::unlitStage(coloured, scene, 240, 240, false);
+  const Image reference = cpu.render();
+
+  const std::vector<bool> mask = passtest::interiorMask(reference, kMagenta);
+  long covered = 0, agreeing = 0;
+  float worst = 0.0f;
+  for (int y = 0; y < lit.height; ++y)
+  {
+    for (int x = 0; x < lit.width; ++x)
+    {
+      if (!mask[static_cast<size_t>(y) * lit.width + x])
+      {
+        continue;
+      }
+      ++covered;
+      const float d = maxChannelDifference(lit, reference, x, y);
+      worst = std::max(worst, d);
+      agreeing += d <= 2.0f / 255.0f + 1e-6f;
+    }
+  }
+  ASSERT_GT(covered, 20000) << "the sphere should cover much of the window";
+  EXPECT_GE(static_cast<double>(agreeing) / covered, 0.995)
+    << "model " << shadelab::modelName(scene.model) << ": worst difference " << worst * 255.0f << "/255";
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryModel, GouraudAgreesWithCPU, ::testing::Range(0, 6));
+
+TEST(PhongMode, PixelAtAVertexMatchesTheCPU)
+{
+  // A finely divided plane facing the camera; a point light above it.
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-1, -1, 0);
+  plane->SetPoint1(1, -1, 0);
+  plane->SetPoint2(-1, 1, 0);
+  plane->SetResolution(40, 40);
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputConnection(plane->GetOutputPort());
+  normals->Update();
+  vtkPolyData* mesh = normals->GetOutput();
+
+  shadelab::Scene scene = sphereScene(shadelab::ShadingModel::BlinnPhong);
+  scene.frequency = shadelab::ShadingFrequency::Phong;
+  scene.camera.position = glm::vec3(0.0f, 0.0f, 3.0f);
+  scene.lights.erase(scene.lights.begin() + 2); // keep the plane inside no spot edge
+  passtest::Stage gpu = passtest::litStage(mesh, scene, 300, 300);
+  const Image image = gpu.render();
+
+  vtkSmartPointer<vtkPolyData> coloured = vtkSmartPointer<vtkPolyData>::New();
+  coloured->DeepCopy(mesh);
+  passtest::colourPointsOnCPU(coloured, scene);
+  vtkUnsignedCharArray* cpu = vtkUnsignedCharArray::SafeDownCast(coloured->GetPointData()->GetScalars());
+  int checked = 0;
+  for (vtkIdType id = 0; id < mesh->GetNumberOfPoints(); id += 11)
+  {
+    double p[3], d[2];
+    mesh->GetPoint(id, p);
+    if (std::abs(p[0]) > 0.6 || std::abs(p[1]) > 0.6) // the view shows about +-0.8
+    {
+      continue;
+    }
+    gpu.toDisplay(p, d);
+    // Display coordinates put pixel centres at half-integers.
+    const int x = static_cast<int>(std::floor(d[0])), y = static_cast<int>(std::floor(d[1]));
+    ASSERT_TRUE(x >= 0 && y >= 0 && x < image.width && y < image.height) << x << "," << y;
+    for (int c = 0; c < 3; ++c)
+    {
+      EXPECT_NEAR(image.at(x, y)[c] * 255.0f, cpu->GetValue(3 * id + c), 2.0) << "vertex " << id << " channel " << c;
+    }
+    ++checked;
+  }
+  EXPECT_GT(checked, 20);
+}
+
+TEST(ModeDifferences, PhongShowsAHighlightInsideACoarseQuadAndGouraudDoesNot)
+{
+  // Two triangles, 4 m across; a point light just above the centre. The
+  // highlight falls between the vertices: only per-pixel lighting sees it.
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-2, -2, 0);
+  plane->SetPoint1(2, -2, 0);
+  plane->SetPoint2(-2, 2, 0);
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputConnection(plane->GetOutputPort());
+  normals->Update();
+
+  shadelab::Scene scene;
+  scene.background = kMagenta;
+  scene.model = shadelab::ShadingModel::BlinnPhong;
+  scene.camera.hasPosition = true;
+  scene.camera.position = glm::vec3(0.0f, 0.0f, 8.0f);
+  scene.material.ambient = glm::vec3(0.0f);
+  scene.material.diffuse = glm::vec3(0.2f);
+  scene.material.specular = glm::vec3(0.8f);
+  scene.material.shininess = 60.0f;
+  shadelab::SceneLight light;
+  light.type = shadelab::LightType::Point;
+  light.position = glm::vec3(0.0f, 0.0f, 0.5f);
+  scene.lights.push_back(light);
+
+  auto renderAs = [&](shadelab::ShadingFrequency frequency) {
+    scene.frequency = frequency;
+    return passtest::litStage(normals->GetOutput(), scene, 200, 200).render();
+  };
+  const Image phong = renderAs(shadelab::ShadingFrequency::Phong);
+  const Image gouraud = renderAs(shadelab::ShadingFrequency::Gouraud);
+
+  // Centre of the window = centre of the quad; corners of the quad project
+  // to about (13, 13) .. (187, 187) at this distance.
+  const float phongCentre = phong.luminance(100, 100);
+  const float gouraudCentre = gouraud.luminance(100, 100);
+  const float phongNearCorner = phong.luminance(20, 20);
+  const float gouraudNearCorner = gouraud.luminance(20, 20);
+  EXPECT_GT(phongCentre, 0.8f) << "Phong lights the pixel under the light: a highlight";
+  EXPECT_GT(phongCentre, phongNearCorner + 0.5f);
+  // Gouraud interpolates the vertex colours: its centre cannot outshine them.
+  float gouraudMax = 0.0f;
+  for (int y = 15; y < 185; ++y)
+  {
+    for (int x = 15; x < 185; ++x)
+    {
+      gouraudMax = std::max(gouraudMax, gouraud.luminance(x, y));
+    }
+  }
+  EXPECT_LT(gouraudCentre, 0.25f);
+  EXPECT_LT(gouraudMax, phongCentre - 0.5f);
+  EXPECT_NEAR(gouraudCentre, gouraudNearCorner, 0.1f);
+}
+
+TEST(ModeDifferences, FlatGivesOneColourPerFace)
+{
+  vtkSmartPointer<vtkPolyData> mesh = sphere(10);
+  shadelab::Scene scene = sphereScene(shadelab::ShadingModel::Phong);
+  scene.frequency = shadelab::ShadingFrequency::Flat;
+  const Image flat = passtest::litStage(mesh, scene, 240, 240).render();
+
+  // Which face covers each pixel: draw each face in its own colour, unlit.
+  vtkSmartPointer<vtkPolyData> ids = vtkSmartPointer<vtkPolyData>::New();
+  ids->DeepCopy(mesh);
+  vtkNew<vtkUnsignedCharArray> faceColours;
+  faceColours->SetNumberOfComponents(3);
+  for (vtkIdType c = 0; c < ids->GetNumberOfCells(); ++c)
+  {
+    const unsigned char rgb[3] = { static_cast<unsigned char>(c % 250), static_cast<unsigned char>(c / 250), 200 };
+    faceColours->InsertNextTypedTuple(rgb);
+  }
+  ids->GetPointData()->SetScalars(nullptr);
+  ids->GetCellData()->SetScalars(faceColours);
+  const Image faces = passtest::unlitStage(ids, scene, 240, 240, true).render();
+
+  const std::vector<bool> mask = passtest::interiorMask(faces, kMagenta);
+  std::map<int, std::pair<glm::vec3, glm::vec3>> range; // face -> (min, max) colour
+  for (int y = 1; y + 1 < faces.height; ++y)
+  {
+    for (int x = 1; x + 1 < faces.width; ++x)
+    {
+      const float* f = faces.at(x, y);
+      bool sameFaceAround = mask[static_cast<size_t>(y) * faces.width + x];
+      for (int d = -1; d <= 1 && sameFaceAround; d += 2)
+      {
+        sameFaceAround = faces.at(x + d, y)[0] == f[0] && faces.at(x + d, y)[1] == f[1] &&
+          faces.at(x, y + d)[0] == f[0] && faces.at(x, y + d)[1] == f[1];
+      }
+      if (!sameFaceAround)
+      {
+        continue;
+      }
+      const int face = static_cast<int>(std::lround(f[0] * 255.0f)) + 250 * static_cast<int>(std::lround(f[1] * 255.0f));
+      const glm::vec3 colour(flat.at(x, y)[0], flat.at(x, y)[1], flat.at(x, y)[2]);
+      auto it = range.find(face);
+      if (it == range.end())
+      {
+        range[face] = { colour, colour };
+      }
+      else
+      {
+        it->second.first = glm::min(it->second.first, colour);
+        it->second.second = glm::max(it->second.second, colour);
+      }
+    }
+  }
+  ASSERT_GT(range.size(), 40u) << "many faces visible";
+  for (const auto& face : range)
+  {
+    const glm::vec3 spread = face.second.second - face.second.first;
+    EXPECT_EQ(std::max({ spread.x, spread.y, spread.z }), 0.0f) << "face " << face.first;
+  }
+}
+
+TEST(ModeDifferences, FineSphereConverges)
+{
+  // On a finely tessellated sphere flat, Gouraud and Phong all approach the
+  // same picture. Tolerance: mean difference under 1/255 and 99% of interior
+  // pixels within 4/255 (flat keeps a faint facet pattern in the highlight).
+  vtkSmartPointer<vtkPolyData> mesh = sphere(256);
+  shadelab::Scene scene = sphereScene(shadelab::ShadingModel::BlinnPhong);
+  scene.material.shininess = 8.0f;
+  std::vector<Image> images;
+  for (auto f : { shadelab::ShadingFrequency::Flat, shadelab::ShadingFrequency::Gouraud,
+         shadelab::ShadingFrequency::Phong })
+  {
+    scene.frequency = f;
+    images.push_back(passtest::litStage(mesh, scene, 240, 240).render());
+  }
+  const std::vector<bool> mask = passtest::interiorMask(images[2], kMagenta);
+  for (int a = 0; a < 2; ++a)
+  {
+    double sum = 0.0;
+    long count = 0, within = 0;
+    for (int y = 0; y < 240; ++y)
+    {
+      for (int x = 0; x < 240; ++x)
+      {
+        if (!mask[static_cast<size_t>(y) * 240 + x])
+        {
+          continue;
+        }
+        const float d = maxChannelDifference(images[static_cast<size_t>(a)], images[2], x, y);
+        sum += d;
+        ++count;
+        within += d <= 4.0f / 255.0f + 1e-6f;
+      }
+    }
+    EXPECT_LT(sum / count * 255.0, 1.0) << (a == 0 ? "flat" : "gouraud") << " vs phong";
+    EXPECT_GE(static_cast<double>(within) / count, 0.99) << (a == 0 ? "flat" : "gouraud") << " vs phong";
+  }
+}
+
+TEST(ComponentViews, TermsAddUpToTheTotal)
+{
+  vtkSmartPointer<vtkPolyData> mesh = sphere(64);
+  shadelab::Scene scene = sphereScene(shadelab::ShadingModel::Phong);
+  scene.frequency = shadelab::ShadingFrequency::Phong;
+  passtest::Stage stage = passtest::litStage(mesh, scene, 160, 160);
+  const Image total = stage.render();
+  std::vector<Image> parts;
+  for (int component = slLightingPass::AMBIENT; component <= slLightingPass::EMISSION; ++component)
+  {
+    stage.pass->SetComponent(component);
+    parts.push_back(stage.render());
+  }
+  const std::vector<bool> mask = passtest::interiorMask(total, kMagenta);
+  long count = 0;
+  for (int y = 0; y < 160; ++y)
+  {
+    for (int x = 0; x < 160; ++x)
+    {
+      if (!mask[static_cast<size_t>(y) * 160 + x])
+      {
+        continue;
+      }
+      ++count;
+      for (int c = 0; c < 3; ++c)
+      {
+        float sum = 0.0f;
+        for (const Image& part : parts)
+        {
+          sum += part.at(x, y)[c];
+        }
+        ASSERT_NEAR(sum, total.at(x, y)[c], 2.5f / 255.0f) << x << "," << y;
+      }
+      // Emission alone is k_e everywhere.
+      EXPECT_NEAR(parts[3].at(x, y)[2], scene.material.emission.z, 0.6f / 255.0f);
+    }
+  }
+  EXPECT_GT(count, 5000);
+}
+
+TEST(ComponentViews, CosThetaOfADirectionalLight)
+{
+  // Grey N.L for a light shining along the view direction: at the pixel over
+  // the sphere's centre N.L = 1; toward the rim it falls as the sphere's
+  // analytic normal predicts.
+  vtkSmartPointer<vtkPolyData> mesh = sphere(128);
+  shadelab::Scene scene = sphereScene(shadelab::ShadingModel::Lambert);
+  scene.camera.position = glm::vec3(0.0f, 0.0f, 5.0f);
+  scene.lights.resize(1);
+  scene.lights[0].direction = glm::vec3(0.0f, 0.0f, -1.0f);
+  scene.frequency = shadelab::ShadingFrequency::Phong;
+  passtest::Stage stage = passtest::litStage(mesh, scene, 200, 200);
+  stage.pass->SetComponent(slLightingPass::COS_THETA);
+  stage.pass->SetComponentLight(0);
+  const Image image = stage.render();
+  EXPECT_NEAR(image.at(100, 100)[0], 1.0f, 1.5f / 255.0f);
+  // A point on the sphere at polar angle t from the view axis: N.L = cos t.
+  for (double t : { 0.3, 0.6, 0.9 })
+  {
+    const double p[3] = { std::sin(t), 0.0, std::cos(t) };
+    double d[2];
+    stage.toDisplay(p, d);
+    EXPECT_NEAR(image.at(static_cast<int>(d[0]), static_cast<int>(d[1]))[0], std::cos(t), 0.02) << t;
+  }
+}
+
+TEST(Parameters, ChangesUpdateTheImageAndVariantsComeBack)
+{
+  vtkSmartPointer<vtkPolyData> mesh = sphere(48);
+  shadelab::Scene scene = sphereScene(shadelab::ShadingModel::Phong);
+  scene.frequency = shadelab::ShadingFrequency::Phong;
+  passtest::Stage stage = passtest::litStage(mesh, scene, 120, 120);
+  const Image first = stage.render();
+  const vtkMTimeType stageTime = stage.pass->GetShaderStageMTime();
+
+  stage.pass->SetModel(shadelab::glsl::SL_MODEL_BLINN_PHONG);
+  const Image blinn = stage.render();
+  EXPECT_EQ(stage.pass->GetShaderStageMTime(), stageTime) << "a model change is a uniform change";
+  EXPECT_NE(first.rgb, blinn.rgb);
+
+  stage.pass->SetFrequency(slLightingPass::GOURAUD);
+  EXPECT_GT(stage.pass->GetShaderStageMTime(), stageTime) << "a frequency change is a shader change";
+  const Image gouraud = stage.render();
+  EXPECT_NE(gouraud.rgb, blinn.rgb);
+
+  stage.pass->SetFrequency(slLightingPass::PHONG);
+  stage.pass->SetModel(1);
+  EXPECT_EQ(stage.render().rgb, first.rgb) << "back to the first variant, same picture";
+}

@@ -1,0 +1,147 @@
+// Offscreen image regression tests: fixed scenes rendered at a fixed size
+// under Xvfb, compared with data/baselines/<case>.png (metric in
+// ImageComparison.h). Regenerate every baseline with
+//   SHADELAB_UPDATE_BASELINES=1 bash scripts/test.sh -L regression
+#include "ImageComparison.h"
+
+#include "shadelab/Scene.h"
+#include "slComparisonRenderer.h"
+#include "slLightingPass.h"
+#include "slMeshReader.h"
+#include "slScene.h"
+#include "slSceneRenderer.h"
+
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <sys/stat.h>
+
+namespace
+{
+struct Case
+{
+  std::string name;
+  std::string mesh;  ///< path
+  std::string scene; ///< path
+  std::string model;
+  std::string frequency;
+  int component = slLightingPass::TOTAL;
+  bool falseColor = false;
+};
+
+std::string projectData(const std::string& relative)
+{
+  return std::string(SHADELAB_DATA_DIR) + "/" + relative;
+}
+
+std::string sharedMesh(const std::string& name)
+{
+  return std::string(SHADELAB_SHARED_DATA_DIR) + "/meshes/" + name;
+}
+
+std::vector<Case> allCases()
+{
+  std::vector<Case> cases;
+  // Every model x frequency with every light type at once, on Spot.
+  for (const char* model : { "lambert", "phong", "blinn-phong", "lambert-normalized", "phong-normalized",
+         "blinn-phong-normalized" })
+  {
+    for (const char* frequency : { "flat", "gouraud", "phong" })
+    {
+      cases.push_back({ std::string("spot-") + model + "-" + frequency, projectData("meshes/spot.obj"),
+        projectData("scenes/regression/all-lights.json"), model, frequency });
+    }
+  }
+  // Each light type alone, on the shared reference meshes.
+  cases.push_back({ "bunny-directional-blinn-phong-phong", sharedMesh("stanford-bunny.obj"),
+    projectData("scenes/regression/directional.json"), "blinn-phong", "phong" });
+  cases.push_back({ "bunny-point-phong-gouraud", sharedMesh("stanford-bunny.obj"),
+    projectData("scenes/regression/point.json"), "phong", "gouraud" });
+  cases.push_back({ "fandisk-spot-blinn-phong-flat", sharedMesh("fandisk.obj"),
+    projectData("scenes/regression/spot.json"), "blinn-phong", "flat" });
+  cases.push_back({ "fandisk-ambient-lambert-phong", sharedMesh("fandisk.obj"),
+    projectData("scenes/regression/ambient.json"), "lambert", "phong" });
+  // Component views.
+  cases.push_back({ "spot-specular-grey", projectData("meshes/spot.obj"),
+    projectData("scenes/regression/all-lights.json"), "blinn-phong", "phong", slLightingPass::SPECULAR, false });
+  cases.push_back({ "spot-cos-false-colour", projectData("meshes/spot.obj"),
+    projectData("scenes/regression/all-lights.json"), "lambert", "gouraud", slLightingPass::COS_THETA, true });
+  return cases;
+}
+
+/// Compares with data/baselines/NAME.png, or rewrites that baseline when
+/// SHADELAB_UPDATE_BASELINES=1.
+void checkAgainstBaseline(vtkImageData* image, const std::string& name)
+{
+  const std::string baseline = projectData("baselines/" + name + ".png");
+  const char* update = std::getenv("SHADELAB_UPDATE_BASELINES");
+  if (update && std::string(update) == "1")
+  {
+    EXPECT_EQ(regression::writeBaseline(image, baseline), "");
+    return;
+  }
+  const std::string failures = std::string(SHADELAB_TEST_OUTPUT_DIR);
+  mkdir(failures.c_str(), 0755);
+  const regression::Verdict verdict = regression::compareWithBaseline(image, baseline, failures, name);
+  EXPECT_TRUE(verdict.passed) << verdict.message;
+}
+
+class ImageRegression : public ::testing::TestWithParam<Case>
+{
+};
+} // namespace
+
+TEST_P(ImageRegression, MatchesBaseline)
+{
+  const Case& c = GetParam();
+  vtkNew<slMeshReader> reader;
+  reader->SetFileName(c.mesh.c_str());
+  reader->Update();
+  ASSERT_STREQ(reader->GetErrorMessage(), "");
+  vtkNew<slScene> scene;
+  ASSERT_TRUE(scene->ReadFile(c.scene.c_str())) << scene->GetErrorMessage();
+  ASSERT_TRUE(scene->SetModelName(c.model.c_str()));
+  ASSERT_TRUE(scene->SetFrequencyName(c.frequency.c_str()));
+
+  vtkNew<slSceneRenderer> renderer;
+  renderer->SetScene(scene);
+  renderer->SetMesh(reader->GetOutput());
+  renderer->GetLightingPass()->SetComponent(c.component);
+  renderer->GetLightingPass()->SetFalseColor(c.falseColor);
+  ASSERT_TRUE(renderer->Render()) << renderer->GetErrorMessage();
+
+  checkAgainstBaseline(renderer->GetImage(), c.name);
+}
+
+TEST(ImageRegressionCompare, FrequenciesSideBySideWithDifference)
+{
+  vtkNew<slMeshReader> reader;
+  reader->SetFileName(projectData("meshes/spot.obj").c_str());
+  reader->Update();
+  vtkNew<slScene> scene;
+  ASSERT_TRUE(scene->ReadFile(projectData("scenes/regression/all-lights.json").c_str()));
+  vtkNew<slComparisonRenderer> comparison;
+  comparison->SetScene(scene);
+  comparison->SetMesh(reader->GetOutput());
+  comparison->SetPanelWidth(160);
+  comparison->SetPanelHeight(120);
+  comparison->AddPanel("flat", "blinn-phong", "flat");
+  comparison->AddPanel("Gouraud", "blinn-phong", "gouraud");
+  comparison->AddPanel("Phong", "blinn-phong", "phong");
+  comparison->SetDifference(1, 2, 8.0);
+  ASSERT_TRUE(comparison->Render()) << comparison->GetErrorMessage();
+  checkAgainstBaseline(comparison->GetImage(), "compare-frequencies-diff");
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, ImageRegression, ::testing::ValuesIn(allCases()),
+  [](const ::testing::TestParamInfo<Case>& info) {
+    std::string name = info.param.name;
+    for (char& ch : name)
+    {
+      ch = ch == '-' ? '_' : ch;
+    }
+    return name;
+  });
