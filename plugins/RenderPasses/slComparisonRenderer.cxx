@@ -1,6 +1,7 @@
 #include "slComparisonRenderer.h"
 
 #include "slLightingPass.h"
+#include "slRenderNormals.h"
 #include "slScene.h"
 #include "slSceneRenderer.h"
 
@@ -14,7 +15,6 @@
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
-#include <vtkPolyDataNormals.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkTextActor.h>
@@ -114,14 +114,10 @@ bool slComparisonRenderer::Render()
     return false;
   }
 
-  vtkSmartPointer<vtkPolyData> mesh = this->Mesh;
-  if (!mesh->GetPointData()->GetNormals())
+  vtkSmartPointer<vtkPolyData> mesh = slWithRenderNormals(this->Mesh, this->ErrorMessage);
+  if (!mesh)
   {
-    vtkNew<vtkPolyDataNormals> normals;
-    normals->SetInputData(mesh);
-    normals->SplittingOff();
-    normals->Update();
-    mesh = normals->GetOutput();
+    return false;
   }
 
   const int columns = n + (difference ? 1 : 0);

@@ -1,6 +1,7 @@
 #include "slSceneRenderer.h"
 
 #include "slLightingPass.h"
+#include "slRenderNormals.h"
 #include "slScene.h"
 
 #include <vtkActor.h>
@@ -9,7 +10,6 @@
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
-#include <vtkPolyDataNormals.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkWindowToImageFilter.h>
@@ -93,14 +93,13 @@ bool slSceneRenderer::Render()
   const shadelab::Scene& scene = this->Scene->GetScene();
 
   vtkSmartPointer<vtkPolyData> mesh = this->Mesh;
-  if (!mesh->GetPointData()->GetNormals() && scene.frequency != shadelab::ShadingFrequency::Flat)
+  if (scene.frequency != shadelab::ShadingFrequency::Flat)
   {
-    vtkNew<vtkPolyDataNormals> normals;
-    normals->SetInputData(mesh);
-    normals->SplittingOff();
-    normals->ConsistencyOn();
-    normals->Update();
-    mesh = normals->GetOutput();
+    mesh = slWithRenderNormals(this->Mesh, this->ErrorMessage);
+    if (!mesh)
+    {
+      return false;
+    }
   }
 
   vtkNew<vtkPolyDataMapper> mapper;

@@ -15,8 +15,9 @@
  * Rendering is deterministic: fixed window size, multisampling off, and the
  * camera fixed by the scene (or fitted to the mesh the same way each time).
  * If the mesh has no point normals and the scene's frequency is not flat,
- * smooth normals are computed (no feature splitting) so that Gouraud and
- * Phong shading have normals to interpolate.
+ * slPolyDataNormals computes them (angle weighting, feature edges over 30
+ * degrees kept sharp, coincident points welded so that texture seams do not
+ * show) so that Gouraud and Phong shading have normals to interpolate.
  *
  * @warning Debian's VTK renders through X11 only: an X server is needed
  * (run under xvfb-run). Render() fails cleanly when DISPLAY is not set.
