@@ -17,18 +17,22 @@
  * pair: normals are computed on the welded surface, but points that differed
  * in the input (texture seams) stay apart.
  *
- * Work is parallel over points in two passes: count (building the groups),
- * then write. Without welding the first pass keeps each corner's group.
+ * Work is parallel: unit polygon normals; a pass over points that builds
+ * the groups (keeping each corner's group, 16 bits); then, without welding,
+ * each corner's output point and a polygon-centric weighted sum as in
+ * slVertexNormalsCore.h; with welding, a second pass over points.
  */
 
 #include "slCornerWeights.h"
 #include "slFaceNormalsCore.h"
 #include "slNormalsParallel.h"
 #include "slVertexCorners.h"
+#include "slVertexNormalsCore.h"
 
 #include <glm/glm.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <numeric>
 #include <utility>
 #include <vector>
@@ -74,10 +78,10 @@ inline glm::vec<3, T> unitOf(const glm::vec<3, T>& n, T& len)
   return len > T(0) ? n / len : glm::vec<3, T>(0);
 }
 
-/// Builds the groups and slots of point @p v from the polygons' Newell
-/// vectors @p newell (3 per polygon); returns the number of slots.
+/// Builds the groups and slots of point @p v from the polygons' unit
+/// normals @p unit (3 per polygon, zero if degenerate); returns the number of slots.
 template <typename T, typename Id>
-int groupCorners(const Polygons<Id>& polys, const Id* original, const T* newell, const VertexCorners<Id>& vc,
+int groupCorners(const Polygons<Id>& polys, const Id* original, const T* unit, const VertexCorners<Id>& vc,
   int64_t v, T cosFeature, SplitScratch<T>& s)
 {
   const int32_t b = vc.offsets[static_cast<size_t>(v)];
@@ -117,11 +121,10 @@ int groupCorners(const Polygons<Id>& polys, const Id* original, const T* newell,
       {
         continue; // boundary, non-manifold, or already seen from the other side
       }
-      const glm::vec<3, T> ni(newell[3 * s.face[i]], newell[3 * s.face[i] + 1], newell[3 * s.face[i] + 2]);
-      const glm::vec<3, T> nj(newell[3 * s.face[other]], newell[3 * s.face[other] + 1], newell[3 * s.face[other] + 2]);
-      const T li = glm::length(ni), lj = glm::length(nj);
-      // A degenerate polygon joins any neighbour.
-      if (!(li > T(0)) || !(lj > T(0)) || glm::dot(ni, nj) >= cosFeature * li * lj)
+      const glm::vec<3, T> ni(unit[3 * s.face[i]], unit[3 * s.face[i] + 1], unit[3 * s.face[i] + 2]);
+      const glm::vec<3, T> nj(unit[3 * s.face[other]], unit[3 * s.face[other] + 1], unit[3 * s.face[other] + 2]);
+      // A degenerate polygon (zero normal) joins any neighbour.
+      if (glm::dot(ni, ni) == T(0) || glm::dot(nj, nj) == T(0) || glm::dot(ni, nj) >= cosFeature)
       {
         s.parent[s.find(i)] = s.find(other);
       }
@@ -172,8 +175,9 @@ int groupCorners(const Polygons<Id>& polys, const Id* original, const T* newell,
  * output point id of every corner. Returns the number of output points;
  * points used by no polygon are not output.
  *
- * Memory besides the output: the polygons' Newell vectors (3 T each) and,
- * without welding, one 16-bit group number per corner.
+ * Memory besides the output: the polygons' unit normals (3 T each), one
+ * 16-bit group number per corner (without welding), and the accumulators of
+ * slVertexNormalsCore.h.
  */
 template <typename T, typename Id, typename OutId, typename Allocate>
 int64_t splitVertexNormals(const Polygons<Id>& topology, const Id* original, const T* xyz, int64_t numPoints,
@@ -181,27 +185,30 @@ int64_t splitVertexNormals(const Polygons<Id>& topology, const Id* original, con
   const Parallel& parallel)
 {
   using V = glm::vec<3, T>;
-  std::vector<T> newell(static_cast<size_t>(3 * topology.numPolygons));
+  std::vector<T> unit(static_cast<size_t>(3 * topology.numPolygons));
   parallel.forRange(0, topology.numPolygons, 8192, [&](int64_t b, int64_t e) {
     for (int64_t f = b; f < e; ++f)
     {
-      const V n = newellVector(topology, xyz, f);
-      newell[3 * f] = n.x;
-      newell[3 * f + 1] = n.y;
-      newell[3 * f + 2] = n.z;
+      T len;
+      const V u = detail::unitOf(newellVector(topology, xyz, f), len);
+      unit[3 * f] = u.x;
+      unit[3 * f + 1] = u.y;
+      unit[3 * f + 2] = u.z;
     }
   });
   constexpr uint16_t recompute = 0xFFFF;
   std::vector<uint16_t> stored(original ? 0 : vc.corners.size());
   std::vector<int64_t> base(static_cast<size_t>(numPoints + 1), 0);
+  std::atomic<bool> overflow{ false };
   parallel.forRange(0, numPoints, 4096, [&](int64_t b, int64_t e) {
     detail::SplitScratch<T> s;
     for (int64_t v = b; v < e; ++v)
     {
-      const int slots = detail::groupCorners(topology, original, newell.data(), vc, v, cosFeature, s);
+      const int slots = detail::groupCorners(topology, original, unit.data(), vc, v, cosFeature, s);
       base[static_cast<size_t>(v + 1)] = slots;
       if (!original)
       {
+        overflow = overflow || slots >= recompute;
         const int32_t first = vc.offsets[static_cast<size_t>(v)];
         for (size_t i = 0; i < s.slot.size(); ++i)
         {
@@ -216,6 +223,27 @@ int64_t splitVertexNormals(const Polygons<Id>& topology, const Id* original, con
   }
   const int64_t total = base[static_cast<size_t>(numPoints)];
   SplitOutput out = allocate(total);
+
+  if (!original && !overflow)
+  {
+    // Each corner's output point, then a polygon-centric weighted sum.
+    parallel.forRange(0, numPoints, 8192, [&](int64_t b, int64_t e) {
+      for (int64_t v = b; v < e; ++v)
+      {
+        for (int32_t i = vc.offsets[static_cast<size_t>(v)]; i < vc.offsets[static_cast<size_t>(v) + 1]; ++i)
+        {
+          const int64_t id = base[static_cast<size_t>(v)] + stored[static_cast<size_t>(i)];
+          outConnectivity[vc.corners[static_cast<size_t>(i)]] = static_cast<OutId>(id);
+          out.source[id] = v;
+        }
+      }
+    });
+    std::vector<uint16_t>().swap(stored);
+    accumulateNormals(topology, outConnectivity, xyz, total, weighting, out.normals, parallel);
+    return total;
+  }
+
+  // Welded (or a point with 65535 groups): rebuild the groups point by point.
   parallel.forRange(0, numPoints, 4096, [&](int64_t b, int64_t e) {
     detail::SplitScratch<T> s;
     for (int64_t v = b; v < e; ++v)
@@ -226,37 +254,31 @@ int64_t splitVertexNormals(const Polygons<Id>& topology, const Id* original, con
       {
         continue;
       }
-      const bool fromTable = !original && stored[static_cast<size_t>(first)] != recompute;
-      if (!fromTable)
-      {
-        detail::groupCorners(topology, original, newell.data(), vc, v, cosFeature, s);
-      }
+      detail::groupCorners(topology, original, unit.data(), vc, v, cosFeature, s);
       s.sums.assign(static_cast<size_t>(k), V(0));
       const V p = point(xyz, v);
       for (int i = 0; i < k; ++i)
       {
         const int64_t c = vc.corners[static_cast<size_t>(first + i)];
         const int64_t f = vc.faceOf(c);
-        const int g = fromTable ? stored[static_cast<size_t>(first + i)] : s.group[i];
         T len;
-        const V u = detail::unitOf(V(newell[3 * f], newell[3 * f + 1], newell[3 * f + 2]), len);
+        const V u = detail::unitOf(newellVector(topology, xyz, f), len);
         const int64_t next = topology.connectivity[c + 1 == topology.end(f) ? topology.begin(f) : c + 1];
         const int64_t prev = topology.connectivity[c == topology.begin(f) ? topology.end(f) - 1 : c - 1];
-        s.sums[static_cast<size_t>(g)] +=
+        s.sums[static_cast<size_t>(s.group[i])] +=
           cornerContribution(weighting, point(xyz, prev), p, point(xyz, next), u, len);
       }
       for (int i = 0; i < k; ++i)
       {
-        const int g = fromTable ? stored[static_cast<size_t>(first + i)] : s.group[i];
-        const int slot = fromTable ? g : s.slot[i];
-        const int64_t id = base[static_cast<size_t>(v)] + slot;
+        const int64_t id = base[static_cast<size_t>(v)] + s.slot[i];
         T len;
-        const V n = detail::unitOf(s.sums[static_cast<size_t>(g)], len);
+        const V n = detail::unitOf(s.sums[static_cast<size_t>(s.group[i])], len);
         out.normals[3 * id] = static_cast<float>(n.x);
         out.normals[3 * id + 1] = static_cast<float>(n.y);
         out.normals[3 * id + 2] = static_cast<float>(n.z);
-        out.source[id] = original ? static_cast<int64_t>(original[vc.corners[static_cast<size_t>(first + i)]]) : v;
-        outConnectivity[vc.corners[static_cast<size_t>(first + i)]] = static_cast<OutId>(id);
+        const int64_t c = vc.corners[static_cast<size_t>(first + i)];
+        out.source[id] = original ? static_cast<int64_t>(original[c]) : v;
+        outConnectivity[c] = static_cast<OutId>(id);
       }
     }
   });

@@ -3,6 +3,7 @@
 #include "slFaceNormalsCore.h"
 #include "slFeatureSplitCore.h"
 #include "slNormalsVTKBridge.h"
+#include "slOwnedPolygons.h"
 #include "slOrientationCore.h"
 #include "slPointWeldCore.h"
 #include "slVertexCorners.h"
@@ -39,89 +40,6 @@ struct Settings
   bool split, orient, outward, weld, pointNormals, cellNormals;
 };
 
-/// Owned polygon storage as VTK arrays of ids of type Id.
-template <typename Id>
-struct OwnedPolygons
-{
-  vtkSmartPointer<slIdArray<Id>> offsets, connectivity;
-  slnormals::Polygons<Id> view() const
-  {
-    slnormals::Polygons<Id> p;
-    p.offsets = reinterpret_cast<const Id*>(this->offsets->GetPointer(0));
-    p.connectivity = reinterpret_cast<Id*>(this->connectivity->GetPointer(0));
-    p.numPolygons = this->offsets->GetNumberOfValues() - 1;
-    return p;
-  }
-  vtkSmartPointer<vtkCellArray> cells() const
-  {
-    auto c = vtkSmartPointer<vtkCellArray>::New();
-    c->SetData(this->offsets, this->connectivity);
-    return c;
-  }
-};
-
-/// Copies @p polys and appends every strip of @p strips as triangles.
-template <typename Id>
-OwnedPolygons<Id> copyPolygons(vtkCellArray* polys, vtkCellArray* strips)
-{
-  std::vector<Id> offsets{ 0 }, conn;
-  vtkIdType n;
-  const vtkIdType* ids;
-  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
-  {
-    conn.insert(conn.end(), ids, ids + n);
-    offsets.push_back(static_cast<Id>(conn.size()));
-  }
-  for (strips->InitTraversal(); strips->GetNextCell(n, ids);)
-  {
-    for (vtkIdType i = 0; i + 2 < n; ++i)
-    {
-      // Strips alternate orientation: even triangles (i, i+1, i+2), odd (i+1, i, i+2).
-      conn.push_back(static_cast<Id>(ids[i % 2 ? i + 1 : i]));
-      conn.push_back(static_cast<Id>(ids[i % 2 ? i : i + 1]));
-      conn.push_back(static_cast<Id>(ids[i + 2]));
-      offsets.push_back(static_cast<Id>(conn.size()));
-    }
-  }
-  OwnedPolygons<Id> o;
-  o.offsets = vtkSmartPointer<slIdArray<Id>>::New();
-  o.offsets->SetNumberOfValues(static_cast<vtkIdType>(offsets.size()));
-  std::memcpy(o.offsets->GetPointer(0), offsets.data(), offsets.size() * sizeof(Id));
-  o.connectivity = vtkSmartPointer<slIdArray<Id>>::New();
-  o.connectivity->SetNumberOfValues(static_cast<vtkIdType>(conn.size()));
-  if (!conn.empty())
-  {
-    std::memcpy(o.connectivity->GetPointer(0), conn.data(), conn.size() * sizeof(Id));
-  }
-  return o;
-}
-
-/// Replaces every id of @p cells by map[id].
-vtkSmartPointer<vtkCellArray> remapCells(vtkCellArray* cells, const std::vector<vtkIdType>& map)
-{
-  auto out = vtkSmartPointer<vtkCellArray>::New();
-  vtkNew<vtkIdList> ids;
-  for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c)
-  {
-    cells->GetCellAtId(c, ids);
-    for (vtkIdType i = 0; i < ids->GetNumberOfIds(); ++i)
-    {
-      ids->SetId(i, map[static_cast<size_t>(ids->GetId(i))]);
-    }
-    out->InsertNextCell(ids);
-  }
-  return out;
-}
-
-vtkSmartPointer<vtkFloatArray> makeNormals(vtkIdType tuples)
-{
-  auto a = vtkSmartPointer<vtkFloatArray>::New();
-  a->SetName("Normals");
-  a->SetNumberOfComponents(3);
-  a->SetNumberOfTuples(tuples);
-  return a;
-}
-
 /// The job on points of type T and polygon ids of type Id.
 template <typename T, typename Id>
 class NormalsJob
@@ -144,7 +62,7 @@ public:
     slnormals::Polygons<Id> polys;
     if (strips->GetNumberOfCells() > 0)
     {
-      this->Owned = copyPolygons<Id>(this->Input->GetPolys(), strips);
+      this->Owned = slCopyPolygons<Id>(this->Input->GetPolys(), strips);
       this->HasOwned = true;
       polys = this->Owned.view();
     }
@@ -191,7 +109,7 @@ public:
       {
         if (!this->HasOwned)
         {
-          this->Owned = copyPolygons<Id>(this->Input->GetPolys(), strips);
+          this->Owned = slCopyPolygons<Id>(this->Input->GetPolys(), strips);
           this->HasOwned = true;
           const bool welded = topology.connectivity != polys.connectivity;
           polys = this->Owned.view();
@@ -238,7 +156,7 @@ public:
       this->Output->SetPolys(this->HasOwned ? this->Owned.cells().GetPointer() : this->Input->GetPolys());
       if (this->S.pointNormals)
       {
-        auto normals = makeNormals(numPoints);
+        auto normals = slMakeNormalsArray(numPoints);
         float* n = normals->GetPointer(0);
         slnormals::computeVertexNormals(topology, this->XYZ, numPoints, this->S.weighting, n, this->Par);
         if (this->S.weld)
@@ -265,8 +183,8 @@ public:
     }
     else
     {
-      this->Output->SetVerts(remapCells(this->Input->GetVerts(), pointMap));
-      this->Output->SetLines(remapCells(this->Input->GetLines(), pointMap));
+      this->Output->SetVerts(slRemapCells(this->Input->GetVerts(), pointMap));
+      this->Output->SetLines(slRemapCells(this->Input->GetLines(), pointMap));
     }
 
     // Cell data: strips became triangles after the polygons, in order.
@@ -303,7 +221,7 @@ public:
     if (this->S.cellNormals)
     {
       const vtkIdType first = numVerts + numLines;
-      auto normals = makeNormals(first + polys.numPolygons);
+      auto normals = slMakeNormalsArray(first + polys.numPolygons);
       float* n = normals->GetPointer(0);
       std::fill(n, n + 3 * first, 0.0f);
       slnormals::computeUnitFaceNormals(topology, this->XYZ, n + 3 * first, this->Par);
@@ -329,7 +247,7 @@ private:
     vtkSmartPointer<vtkFloatArray> normals;
     std::vector<int64_t> source;
     auto allocate = [&](int64_t splitPoints) {
-      normals = makeNormals(splitPoints + unused);
+      normals = slMakeNormalsArray(splitPoints + unused);
       source.resize(static_cast<size_t>(splitPoints + unused));
       slnormals::SplitOutput out;
       out.normals = normals->GetPointer(0);
@@ -418,7 +336,7 @@ private:
   vtkPolyData* Output;
   const T* XYZ;
   slnormals::Parallel Par;
-  OwnedPolygons<Id> Owned;
+  slOwnedPolygons<Id> Owned;
   bool HasOwned = false;
 };
 } // namespace

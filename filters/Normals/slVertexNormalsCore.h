@@ -34,9 +34,10 @@ inline void add(T* acc, int64_t id, const glm::vec<3, T>& v)
   acc[3 * id + 2] += v.z;
 }
 
-/// Adds the corner contributions of polygons [b, e) into @p acc.
-template <Weighting W, typename T, typename Id>
-void scatter(const Polygons<Id>& polys, const T* xyz, int64_t b, int64_t e, T* acc)
+/// Adds the corner contributions of polygons [b, e) into @p acc, at the
+/// corners' entries of @p accIds (same layout as the connectivity).
+template <Weighting W, typename T, typename Id, typename AccId>
+void scatter(const Polygons<Id>& polys, const AccId* accIds, const T* xyz, int64_t b, int64_t e, T* acc)
 {
   using V = glm::vec<3, T>;
   for (int64_t f = b; f < e; ++f)
@@ -44,6 +45,7 @@ void scatter(const Polygons<Id>& polys, const T* xyz, int64_t b, int64_t e, T* a
     const int64_t o = polys.begin(f);
     const int64_t n = polys.size(f);
     const Id* ids = polys.connectivity + o;
+    const AccId* to = accIds + o;
     if (n == 3)
     {
       const V p0 = point(xyz, ids[0]), p1 = point(xyz, ids[1]), p2 = point(xyz, ids[2]);
@@ -55,17 +57,17 @@ void scatter(const Polygons<Id>& polys, const T* xyz, int64_t b, int64_t e, T* a
       }
       if (W == Weighting::Area)
       {
-        add(acc, ids[0], nv);
-        add(acc, ids[1], nv);
-        add(acc, ids[2], nv);
+        add(acc, to[0], nv);
+        add(acc, to[1], nv);
+        add(acc, to[2], nv);
         continue;
       }
       const V u = nv / len;
       if (W == Weighting::Uniform)
       {
-        add(acc, ids[0], u);
-        add(acc, ids[1], u);
-        add(acc, ids[2], u);
+        add(acc, to[0], u);
+        add(acc, to[1], u);
+        add(acc, to[2], u);
         continue;
       }
       if (W == Weighting::Angle)
@@ -76,17 +78,17 @@ void scatter(const Polygons<Id>& polys, const T* xyz, int64_t b, int64_t e, T* a
         const T t0 = fastAcos(-glm::dot(c, a) / std::sqrt(lc * la));
         const T t1 = fastAcos(-glm::dot(a, bb) / std::sqrt(la * lb));
         const T t2 = T(3.14159265358979323846) - t0 - t1;
-        add(acc, ids[0], u * t0);
-        add(acc, ids[1], u * t1);
-        add(acc, ids[2], u * (t2 > T(0) ? t2 : T(0)));
+        add(acc, to[0], u * t0);
+        add(acc, to[1], u * t1);
+        add(acc, to[2], u * (t2 > T(0) ? t2 : T(0)));
         continue;
       }
       // Max: |e1 x e2| / (|e1|^2 |e2|^2) at every corner; |e1 x e2| = len.
       const V a = p1 - p0, bb = p2 - p1, c = p0 - p2;
       const T la = glm::dot(a, a), lb = glm::dot(bb, bb), lc = glm::dot(c, c);
-      add(acc, ids[0], u * (len / (lc * la)));
-      add(acc, ids[1], u * (len / (la * lb)));
-      add(acc, ids[2], u * (len / (lb * lc)));
+      add(acc, to[0], u * (len / (lc * la)));
+      add(acc, to[1], u * (len / (la * lb)));
+      add(acc, to[2], u * (len / (lb * lc)));
       continue;
     }
     if (n < 3)
@@ -104,17 +106,18 @@ void scatter(const Polygons<Id>& polys, const T* xyz, int64_t b, int64_t e, T* a
     {
       const V prev = point(xyz, ids[(i + n - 1) % n]);
       const V next = point(xyz, ids[(i + 1) % n]);
-      add(acc, ids[i], cornerContribution(W, prev, point(xyz, ids[i]), next, u, len));
+      add(acc, to[i], cornerContribution(W, prev, point(xyz, ids[i]), next, u, len));
     }
   }
 }
 } // namespace detail
 
-/// Unit vertex normals of points [0, numPoints) into @p out (3 floats each).
-/// Points used by no non-degenerate polygon get (0, 0, 0).
-template <typename T, typename Id>
-void computeVertexNormals(const Polygons<Id>& polys, const T* xyz, int64_t numPoints, Weighting weighting,
-  float* out, const Parallel& parallel)
+/// Normalised sums of corner contributions, indexed by @p accIds (the
+/// connectivity's layout, values in [0, numPoints)), into @p out (3 floats
+/// each). Entries no non-degenerate corner reaches get (0, 0, 0).
+template <typename T, typename Id, typename AccId>
+void accumulateNormals(const Polygons<Id>& polys, const AccId* accIds, const T* xyz, int64_t numPoints,
+  Weighting weighting, float* out, const Parallel& parallel)
 {
   const int64_t chunks =
     polys.numPolygons < 65536 ? 1 : std::max<int64_t>(1, std::min<int64_t>(parallel.threads, 64));
@@ -142,16 +145,16 @@ void computeVertexNormals(const Polygons<Id>& polys, const T* xyz, int64_t numPo
       switch (weighting)
       {
         case Weighting::Uniform:
-          detail::scatter<Weighting::Uniform>(polys, xyz, b, e, a);
+          detail::scatter<Weighting::Uniform>(polys, accIds, xyz, b, e, a);
           break;
         case Weighting::Area:
-          detail::scatter<Weighting::Area>(polys, xyz, b, e, a);
+          detail::scatter<Weighting::Area>(polys, accIds, xyz, b, e, a);
           break;
         case Weighting::Angle:
-          detail::scatter<Weighting::Angle>(polys, xyz, b, e, a);
+          detail::scatter<Weighting::Angle>(polys, accIds, xyz, b, e, a);
           break;
         case Weighting::Max:
-          detail::scatter<Weighting::Max>(polys, xyz, b, e, a);
+          detail::scatter<Weighting::Max>(polys, accIds, xyz, b, e, a);
           break;
       }
     }
@@ -174,6 +177,15 @@ void computeVertexNormals(const Polygons<Id>& polys, const T* xyz, int64_t numPo
       out[3 * v + 2] = static_cast<float>(s.z);
     }
   });
+}
+
+/// Unit vertex normals of points [0, numPoints) into @p out (3 floats each).
+/// Points used by no non-degenerate polygon get (0, 0, 0).
+template <typename T, typename Id>
+void computeVertexNormals(const Polygons<Id>& polys, const T* xyz, int64_t numPoints, Weighting weighting,
+  float* out, const Parallel& parallel)
+{
+  accumulateNormals(polys, polys.connectivity, xyz, numPoints, weighting, out, parallel);
 }
 
 } // namespace slnormals
