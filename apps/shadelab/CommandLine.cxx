@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <iostream>
 #include <sstream>
 
 namespace shadelab
@@ -90,6 +91,30 @@ double CommandLine::getNumber(const std::string& name, double fallback, double l
     throw UsageError(s.str());
   }
   return value;
+}
+
+const std::string& CommandLine::meshWithOutput() const
+{
+  if (this->Positional.size() != 1)
+  {
+    throw UsageError("expected one MESH argument, got " + std::to_string(this->Positional.size()));
+  }
+  if (!this->has("output"))
+  {
+    throw UsageError("missing -o/--output FILE");
+  }
+  return this->Positional[0];
+}
+
+bool CommandLine::printHelpIfAsked(
+  const std::string& usage, const std::string& description, const std::vector<OptionSpec>& specs) const
+{
+  if (!this->has("help"))
+  {
+    return false;
+  }
+  std::cout << "usage: " << usage << "\n\n" << description << "\n\noptions:\n" << describe(specs);
+  return true;
 }
 
 std::string CommandLine::describe(const std::vector<OptionSpec>& specs)

@@ -51,6 +51,15 @@ public:
   double getNumber(const std::string& name, double fallback, double lo, double hi) const;
   const std::vector<std::string>& positional() const { return this->Positional; }
 
+  /// The single MESH argument of a job that also needs -o/--output. Throws
+  /// UsageError ("expected one MESH argument, got N", "missing -o/--output FILE").
+  const std::string& meshWithOutput() const;
+
+  /// Prints "usage: USAGE", @p description and the options to stdout if
+  /// --help was given; returns whether it did.
+  bool printHelpIfAsked(const std::string& usage, const std::string& description,
+    const std::vector<OptionSpec>& specs) const;
+
   /// "  -o, --output FILE   help" lines for --help.
   static std::string describe(const std::vector<OptionSpec>& specs);
 

@@ -30,23 +30,15 @@ int runCompare(const std::vector<std::string>& args)
     { "help", "h", "", "show this help" },
   };
   const CommandLine cl(args, specs);
-  if (cl.has("help"))
+  if (cl.printHelpIfAsked("shadelab compare MESH [--scene S.json] -o OUT.png [--models] [--diff]",
+        "Renders MESH flat | Gouraud | Phong (or, with --models, Lambert | Phong | Blinn-Phong)\n"
+        "side by side with one shared camera and labels, optionally with the amplified\n"
+        "difference of the last two panels, and writes one composite image.",
+        specs))
   {
-    std::cout << "usage: shadelab compare MESH [--scene S.json] -o OUT.png [--models] [--diff]\n\n"
-                 "Renders MESH flat | Gouraud | Phong (or, with --models, Lambert | Phong | Blinn-Phong)\n"
-                 "side by side with one shared camera and labels, optionally with the amplified\n"
-                 "difference of the last two panels, and writes one composite image.\n\noptions:\n"
-              << CommandLine::describe(specs);
     return 0;
   }
-  if (cl.positional().size() != 1)
-  {
-    throw UsageError("expected one MESH argument, got " + std::to_string(cl.positional().size()));
-  }
-  if (!cl.has("output"))
-  {
-    throw UsageError("missing -o/--output FILE");
-  }
+  const std::string meshPath = cl.meshWithOutput();
   int width = 400, height = 300;
   if (cl.has("size"))
   {
@@ -54,7 +46,7 @@ int runCompare(const std::vector<std::string>& args)
   }
   const double amplify = cl.getNumber("amplify", 8.0, 1.0, 1000.0);
   vtkSmartPointer<slScene> scene = loadScene(cl.get("scene"));
-  vtkSmartPointer<vtkPolyData> mesh = loadMesh(cl.positional()[0]);
+  vtkSmartPointer<vtkPolyData> mesh = loadMesh(meshPath);
 
   vtkNew<slComparisonRenderer> comparison;
   comparison->SetScene(scene);

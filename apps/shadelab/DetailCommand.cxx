@@ -45,14 +45,7 @@ int runDetail(const std::vector<std::string>& args)
               << CommandLine::describe(specs);
     return 0;
   }
-  if (cl.positional().size() != 1)
-  {
-    throw UsageError("expected one MESH argument, got " + std::to_string(cl.positional().size()));
-  }
-  if (!cl.has("output"))
-  {
-    throw UsageError("missing -o/--output FILE");
-  }
+  const std::string meshPath = cl.meshWithOutput();
   const int modes = cl.has("normal-map") + cl.has("bump-map") + cl.has("displace");
   if (modes != 1)
   {
@@ -83,7 +76,7 @@ int runDetail(const std::vector<std::string>& args)
     f->SetInvertHeight(cl.has("invert"));
     filter = f;
   }
-  const std::string path = cl.positional()[0];
+  const std::string& path = meshPath;
   vtkSmartPointer<vtkPolyData> mesh = loadMesh(path);
   noteNonPolygonCells(mesh, "detail", path);
   filter->SetInputData(mesh);

@@ -62,24 +62,16 @@ int runRender(const std::vector<std::string>& args)
     { "help", "h", "", "show this help" },
   };
   const CommandLine cl(args, specs);
-  if (cl.has("help"))
+  if (cl.printHelpIfAsked("shadelab render MESH [--scene S.json] -o OUT.png",
+        std::string("Renders MESH (") + meshFormatsText() +
+          ") offscreen with ShadeLab's lighting pass (the scene's model, lights\n"
+          "and shading frequency) and writes the image through OpenImageIO.\n"
+          "Needs an X display: run under xvfb-run on a headless machine.",
+        specs))
   {
-    std::cout << "usage: shadelab render MESH [--scene S.json] -o OUT.png\n\n"
-                 "Renders MESH (" << meshFormatsText() << ") offscreen with ShadeLab's lighting pass\n"
-                 "(the scene's model, lights and shading frequency) and writes the image through\n"
-                 "OpenImageIO.\n"
-                 "Needs an X display: run under xvfb-run on a headless machine.\n\noptions:\n"
-              << CommandLine::describe(specs);
     return 0;
   }
-  if (cl.positional().size() != 1)
-  {
-    throw UsageError("expected one MESH argument, got " + std::to_string(cl.positional().size()));
-  }
-  if (!cl.has("output"))
-  {
-    throw UsageError("missing -o/--output FILE");
-  }
+  const std::string meshPath = cl.meshWithOutput();
 
   vtkSmartPointer<slScene> scene = loadScene(cl.get("scene"));
   applySceneOverrides(cl, scene);
@@ -88,7 +80,7 @@ int runRender(const std::vector<std::string>& args)
   {
     parseSize(cl.get("size"), width, height);
   }
-  vtkSmartPointer<vtkPolyData> mesh = loadMesh(cl.positional()[0]);
+  vtkSmartPointer<vtkPolyData> mesh = loadMesh(meshPath);
 
   vtkNew<slSceneRenderer> renderer;
   renderer->SetUseShadeLabLighting(!cl.has("vtk-lighting"));

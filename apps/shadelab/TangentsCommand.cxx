@@ -40,17 +40,10 @@ int runTangents(const std::vector<std::string>& args)
               << CommandLine::describe(specs);
     return 0;
   }
-  if (cl.positional().size() != 1)
-  {
-    throw UsageError("expected one MESH argument, got " + std::to_string(cl.positional().size()));
-  }
-  if (!cl.has("output"))
-  {
-    throw UsageError("missing -o/--output FILE");
-  }
+  const std::string meshPath = cl.meshWithOutput();
   vtkNew<slPolyDataNormals> normals;
   applyNormalsOptions(cl, normals);
-  const std::string path = cl.positional()[0];
+  const std::string& path = meshPath;
   vtkSmartPointer<vtkPolyData> mesh = loadMesh(path);
   noteNonPolygonCells(mesh, "tangents", path);
   if (!mesh->GetPointData()->GetNormals())
