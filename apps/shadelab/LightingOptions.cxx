@@ -54,12 +54,18 @@ vtkSmartPointer<slScene> configureLitFilter(const CommandLine& cl, slLitFilter* 
   return scene;
 }
 
-void runLitFilter(slLitFilter* filter)
+void runLitFilter(slLitFilter* filter, const std::string& meshPath)
 {
   filter->Update();
-  if (*filter->GetErrorMessage())
+  std::string message = filter->GetErrorMessage();
+  if (!message.empty())
   {
-    throw JobError(filter->GetErrorMessage());
+    const std::string generic = "input mesh";
+    if (message.compare(0, generic.size(), generic) == 0)
+    {
+      message = meshPath + message.substr(generic.size());
+    }
+    throw JobError(message);
   }
 }
 
