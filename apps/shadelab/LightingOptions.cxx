@@ -65,6 +65,12 @@ void runLitFilter(slLitFilter* filter, const std::string& meshPath)
     {
       message = meshPath + message.substr(generic.size());
     }
+    const std::string flag = "(ZeroNormalsAreErrors is on)";
+    const size_t at = message.find(flag);
+    if (at != std::string::npos)
+    {
+      message.replace(at, flag.size(), "(--allow-zero-normals lights such points without direction)");
+    }
     throw JobError(message);
   }
 }
