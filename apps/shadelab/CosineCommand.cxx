@@ -39,7 +39,7 @@ int runCosine(const std::vector<std::string>& args)
   filter->SetLightIndex(static_cast<int>(cl.getNumber("light", -1, -1, 1e6)));
   filter->SetComputeCellArrays(!cl.has("no-cells"));
   filter->SetInputData(loadMeshWithNormals(cl.positional()[0]));
-  runLitFilter(filter);
+  runLitFilter(filter, cl.positional()[0]);
   writeMesh(filter->GetOutput(), cl.get("output"));
   std::cout << "wrote " << cl.get("output") << "\n";
   return 0;

@@ -56,7 +56,7 @@ int runLight(const std::vector<std::string>& args)
     filter->SetDiffuseTexture(texture->GetOutput());
   }
   filter->SetInputData(loadMeshWithNormals(cl.positional()[0]));
-  runLitFilter(filter);
+  runLitFilter(filter, cl.positional()[0]);
   writeMesh(filter->GetOutput(), cl.get("output"));
   std::cout << "wrote " << cl.get("output") << "\n";
   return 0;

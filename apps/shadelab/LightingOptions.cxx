@@ -54,12 +54,24 @@ vtkSmartPointer<slScene> configureLitFilter(const CommandLine& cl, slLitFilter* 
   return scene;
 }
 
-void runLitFilter(slLitFilter* filter)
+void runLitFilter(slLitFilter* filter, const std::string& meshPath)
 {
   filter->Update();
-  if (*filter->GetErrorMessage())
+  std::string message = filter->GetErrorMessage();
+  if (!message.empty())
   {
-    throw JobError(filter->GetErrorMessage());
+    const std::string generic = "input mesh";
+    if (message.compare(0, generic.size(), generic) == 0)
+    {
+      message = meshPath + message.substr(generic.size());
+    }
+    const std::string flag = "(ZeroNormalsAreErrors is on)";
+    const size_t at = message.find(flag);
+    if (at != std::string::npos)
+    {
+      message.replace(at, flag.size(), "(--allow-zero-normals lights such points without direction)");
+    }
+    throw JobError(message);
   }
 }
 

@@ -35,8 +35,9 @@ vtkSmartPointer<vtkPolyData> loadMeshWithNormals(const std::string& path);
 /// Scene (with --model) and --allow-zero-normals onto @p filter; returns the scene.
 vtkSmartPointer<slScene> configureLitFilter(const CommandLine& cl, slLitFilter* filter);
 
-/// Updates @p filter; throws JobError with its one-line message on failure.
-void runLitFilter(slLitFilter* filter);
+/// Updates @p filter; throws JobError with its one-line message on failure,
+/// "input mesh" replaced by @p meshPath.
+void runLitFilter(slLitFilter* filter, const std::string& meshPath);
 
 /// The single MESH argument and -o; throws UsageError when either is missing.
 void requireMeshAndOutput(const CommandLine& cl);

@@ -138,7 +138,7 @@ int runLobe(const std::vector<std::string>& args)
     lobes->SetScale(cl.getNumber("scale", 0.1, 0.0, 100.0));
     lobes->SetMultiplyByCosine(cl.has("cosine"));
     lobes->SetInputData(loadMeshWithNormals(cl.positional()[0]));
-    runLitFilter(lobes);
+    runLitFilter(lobes, cl.positional()[0]);
     writeMesh(lobes->GetOutput(), output);
   }
   std::cout << "wrote " << output << "\n";

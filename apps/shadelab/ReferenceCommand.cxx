@@ -84,7 +84,7 @@ int runReference(const std::vector<std::string>& args)
   filter->SetLightRadius(cl.getNumber("light-radius", 0.0, 0.0, 1e30));
   filter->SetDirectionalLightAngle(cl.getNumber("sun-angle", 0.5, 1e-4, 45.0));
   filter->SetInputData(loadMeshWithNormals(cl.positional()[0]));
-  runLitFilter(filter);
+  runLitFilter(filter, cl.positional()[0]);
   writeMesh(filter->GetOutput(), cl.get("output"));
   printSummary(filter->GetOutput());
   std::cout << "wrote " << cl.get("output") << "\n";

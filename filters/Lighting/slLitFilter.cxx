@@ -2,6 +2,7 @@
 
 #include "slFloat3View.h"
 #include "slLightingSetup.h"
+#include "shadelab/Scene.h"
 #include "slScene.h"
 
 #include <vtkCamera.h>
@@ -99,7 +100,9 @@ bool slLitFilter::PrepareLighting(
   setup = shadelab::makeLightingSetup(this->Scene, this->Lights, this->Property, this->Camera, input->GetBounds());
   if (needLight && setup.lights.empty())
   {
-    this->Fail(output, "scene: it has no lights");
+    const bool fromFile = this->Scene && !this->Lights && !this->Scene->GetScene().sourceFile.empty();
+    this->Fail(output, (fromFile ? this->Scene->GetScene().sourceFile + ": lights" : std::string("scene")) +
+        ": it has no lights");
     return false;
   }
   return true;

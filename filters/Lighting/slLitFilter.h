@@ -19,7 +19,9 @@
  * reason in GetErrorMessage(): an input without points, without point
  * normals, with a zero-length or non-finite point normal (unless
  * ZeroNormalsAreErrors is off: such points then get no direction-dependent
- * light), and a scene without lights where the subclass needs one.
+ * light), and a scene without lights where the subclass needs one (named by
+ * its file when it was read from one). Messages about the input begin with
+ * "input mesh:" so that callers can put the file name in its place.
  *
  * @warning Subclasses never restate a lighting formula: they evaluate
  * slLighting.glsl through shadelab/LightingGLSL.h.

@@ -54,7 +54,11 @@ class LightingCommandsTest(unittest.TestCase):
         empty = self.out("empty.obj")
         with open(empty, "w") as f:
             f.write("# nothing\n")
+        no_lights = self.out("dark.json")
+        with open(no_lights, "w") as f:
+            f.write('{"lights": []}')
         cases = [
+            (["light", SPOT, "--scene", no_lights, "-o", self.out("x.vtp")], "dark.json: lights: it has no lights"),
             (["light", SPOT, "-o", self.out("x.vtp"), "--scene", self.out("missing.json")], "missing.json"),
             (["reference", SPOT, "--envmap", bad, "-o", self.out("x.vtp")], "bad.hdr: cannot read image"),
             (["reference", SPOT, "--envmap", os.path.join(SHARED, "meshes", "spot_texture.png"), "-o",
