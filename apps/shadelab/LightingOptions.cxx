@@ -2,12 +2,12 @@
 
 #include "Inputs.h"
 #include "slLitFilter.h"
+#include "slPolyDataNormals.h"
 #include "slScene.h"
 
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
-#include <vtkPolyDataNormals.h>
 
 namespace shadelab
 {
@@ -36,11 +36,18 @@ vtkSmartPointer<vtkPolyData> loadMeshWithNormals(const std::string& path)
   {
     return mesh;
   }
-  vtkNew<vtkPolyDataNormals> normals;
+  // ShadeLab's own normals: angle weights, no splitting (the output keeps
+  // the input's points, so the arrays line up with it), seams welded.
+  vtkNew<slPolyDataNormals> normals;
   normals->SetInputData(mesh);
   normals->SplittingOff();
   normals->ConsistencyOn();
+  normals->WeldCoincidentPointsOn();
   normals->Update();
+  if (*normals->GetErrorMessage())
+  {
+    throw JobError(normals->GetErrorMessage());
+  }
   vtkSmartPointer<vtkPolyData> out = normals->GetOutput();
   return out;
 }
@@ -77,14 +84,7 @@ void runLitFilter(slLitFilter* filter, const std::string& meshPath)
 
 void requireMeshAndOutput(const CommandLine& cl)
 {
-  if (cl.positional().size() != 1)
-  {
-    throw UsageError("expected one MESH argument, got " + std::to_string(cl.positional().size()));
-  }
-  if (!cl.has("output"))
-  {
-    throw UsageError("missing -o/--output FILE");
-  }
+  cl.meshWithOutput();
 }
 
 } // namespace app
