@@ -7,6 +7,9 @@
 #include "slLightingPass.h"
 
 #include <vtkActor.h>
+#include <vtkImageData.h>
+#include <vtkMapper.h>
+#include <vtkTexture.h>
 #include <vtkCellData.h>
 #include <vtkNew.h>
 #include <vtkPlaneSource.h>
@@ -445,4 +448,73 @@ TEST(Parameters, ChangesUpdateTheImageAndVariantsComeBack)
   stage.pass->SetFrequency(slLightingPass::PHONG);
   stage.pass->SetModel(1);
   EXPECT_EQ(stage.render().rgb, first.rgb) << "back to the first variant, same picture";
+}
+
+TEST(BaseColour, PointScalarsAndTexturesMultiplyKaAndKd)
+{
+  // Lambert, one directional light along the view: at the sphere's centre
+  // N.L = 1, so the pixel is k_d x base colour (+ k_a x base x ambient light).
+  vtkSmartPointer<vtkPolyData> mesh = sphere(64);
+  shadelab::Scene scene = sphereScene(shadelab::ShadingModel::Lambert);
+  scene.camera.position = glm::vec3(0.0f, 0.0f, 5.0f);
+  scene.lights.resize(1);
+  scene.lights[0].direction = glm::vec3(0.0f, 0.0f, -1.0f);
+  scene.lights[0].diffuse = glm::vec3(1.0f);
+  scene.material.diffuse = glm::vec3(0.8f);
+  scene.material.ambient = glm::vec3(0.0f);
+  scene.material.emission = glm::vec3(0.0f);
+  scene.frequency = shadelab::ShadingFrequency::Phong;
+
+  vtkNew<vtkUnsignedCharArray> colours; // base colour (255, 128, 64) everywhere
+  colours->SetNumberOfComponents(3);
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    colours->InsertNextTuple3(255, 128, 64);
+  }
+  mesh->GetPointData()->SetScalars(colours);
+  passtest::Stage stage = passtest::litStage(mesh, scene, 100, 100);
+  stage.actor->GetMapper()->ScalarVisibilityOn();
+  const float* pixel = stage.render().at(50, 50);
+  EXPECT_NEAR(pixel[0], 0.8f * 255.0f / 255.0f, 1.5f / 255.0f);
+  EXPECT_NEAR(pixel[1], 0.8f * 128.0f / 255.0f, 1.5f / 255.0f);
+  EXPECT_NEAR(pixel[2], 0.8f * 64.0f / 255.0f, 1.5f / 255.0f);
+}
+
+TEST(BaseColour, ActorTextureMultipliesKd)
+{
+  vtkNew<vtkPlaneSource> plane; // texture coordinates over [0, 1]^2
+  plane->SetOrigin(-1, -1, 0);
+  plane->SetPoint1(1, -1, 0);
+  plane->SetPoint2(-1, 1, 0);
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputConnection(plane->GetOutputPort());
+  normals->Update();
+  shadelab::Scene scene = sphereScene(shadelab::ShadingModel::Lambert);
+  scene.camera.position = glm::vec3(0.0f, 0.0f, 4.0f);
+  scene.lights.resize(1);
+  scene.lights[0].direction = glm::vec3(0.0f, 0.0f, -1.0f);
+  scene.lights[0].diffuse = glm::vec3(1.0f);
+  scene.material.diffuse = glm::vec3(0.8f);
+  scene.material.ambient = glm::vec3(0.0f);
+  scene.material.emission = glm::vec3(0.0f);
+  scene.frequency = shadelab::ShadingFrequency::Phong;
+
+  vtkNew<vtkImageData> image; // a constant (200, 100, 50) texture
+  image->SetDimensions(4, 4, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* texels = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (int i = 0; i < 16; ++i)
+  {
+    texels[3 * i] = 200;
+    texels[3 * i + 1] = 100;
+    texels[3 * i + 2] = 50;
+  }
+  vtkNew<vtkTexture> texture;
+  texture->SetInputData(image);
+  passtest::Stage stage = passtest::litStage(normals->GetOutput(), scene, 100, 100);
+  stage.actor->SetTexture(texture);
+  const float* pixel = stage.render().at(50, 50);
+  EXPECT_NEAR(pixel[0], 0.8f * 200.0f / 255.0f, 1.5f / 255.0f);
+  EXPECT_NEAR(pixel[1], 0.8f * 100.0f / 255.0f, 1.5f / 255.0f);
+  EXPECT_NEAR(pixel[2], 0.8f * 50.0f / 255.0f, 1.5f / 255.0f);
 }

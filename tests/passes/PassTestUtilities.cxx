@@ -1,6 +1,6 @@
 #include "PassTestUtilities.h"
 
-#include "shadelab/ShadePoint.h"
+#include "slRadianceFilter.h"
 #include "slLightingPass.h"
 #include "slScene.h"
 
@@ -124,29 +124,24 @@ void Stage::toDisplay(const double world[3], double display[2])
 
 void colourPointsOnCPU(vtkPolyData* mesh, const shadelab::Scene& scene)
 {
-  const shadelab::SceneCamera& camera = scene.camera;
-  std::vector<shadelab::glsl::slLight> lights;
-  for (const shadelab::SceneLight& l : scene.lights)
-  {
-    lights.push_back(shadelab::toEvaluationLight(
-      shadelab::lightInWorldSpace(l, camera.position, camera.focalPoint, camera.viewUp)));
-  }
-  const shadelab::glsl::slMaterial material = shadelab::toEvaluationMaterial(scene.material);
-  vtkDataArray* normals = mesh->GetPointData()->GetNormals();
+  // The CPU lighting filter's Radiance, as the proof asks.
+  vtkNew<slScene> sceneObject;
+  sceneObject->SetScene(scene);
+  vtkNew<slRadianceFilter> radiance;
+  radiance->SetScene(sceneObject);
+  radiance->SetInputData(mesh);
+  radiance->Update();
+  vtkDataArray* values = radiance->GetOutput()->GetPointData()->GetArray("Radiance");
   vtkNew<vtkUnsignedCharArray> colours;
   colours->SetName("CPURadiance");
   colours->SetNumberOfComponents(3);
   colours->SetNumberOfTuples(mesh->GetNumberOfPoints());
   for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
   {
-    double p[3], n[3];
-    mesh->GetPoint(i, p);
-    normals->GetTuple(i, n);
-    const glm::vec3 total = shadelab::glsl::slTotal(shadelab::shadePoint(lights, material,
-      static_cast<int>(scene.model), glm::vec3(p[0], p[1], p[2]), glm::vec3(n[0], n[1], n[2]), camera.position));
     for (int c = 0; c < 3; ++c)
     {
-      colours->SetValue(3 * i + c, static_cast<unsigned char>(std::lround(255.0 * glm::clamp(total[c], 0.0f, 1.0f))));
+      const double v = values->GetComponent(i, c);
+      colours->SetValue(3 * i + c, static_cast<unsigned char>(std::lround(255.0 * std::min(1.0, std::max(0.0, v)))));
     }
   }
   mesh->GetPointData()->SetScalars(colours);

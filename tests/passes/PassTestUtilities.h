@@ -51,7 +51,7 @@ Stage litStage(vtkPolyData* mesh, const shadelab::Scene& scene, int width, int h
 Stage unlitStage(vtkPolyData* mesh, const shadelab::Scene& scene, int width, int height, bool cellScalars);
 
 /// The CPU lighting of every point of @p mesh (which must have point
-/// normals), evaluated with the lighting core, as unsigned char RGB scalars.
+/// normals): slRadianceFilter's Radiance, as unsigned char RGB scalars.
 void colourPointsOnCPU(vtkPolyData* mesh, const shadelab::Scene& scene);
 
 /// Pixels covered in @p image (differing from @p background) whose 8
