@@ -168,6 +168,17 @@ slScene* slLightingPass::GetScene()
   return this->Scene;
 }
 
+void slLightingPass::SetModel(int model)
+{
+  model = model < 0 ? 0 : (model > 5 ? 5 : model);
+  if (model != this->Model)
+  {
+    this->Model = model;
+    this->ShaderStageTime.Modified(); // compiled into the shaders: model tests fold away
+    this->Modified();
+  }
+}
+
 bool slLightingPass::SetModelName(const char* name)
 {
   shadelab::ShadingModel model;
@@ -393,6 +404,10 @@ bool slLightingPass::PostReplaceShaderValues(std::string& vertexShader, std::str
     }
     frequency = shaders::Flat;
   }
+  shaders::Variant variant;
+  variant.frequency = frequency;
+  variant.lightTypes = this->Internal->LightTypes();
+  variant.model = this->Model;
   shaders::FragmentInputs inputs;
   inputs.scalarColors = contains(fragmentShader, "vertexColorVSOutput") || contains(fragmentShader, "textureC");
   inputs.texture = contains(fragmentShader, "actortexture") && contains(fragmentShader, "tcoordVCVSOutput");
@@ -408,10 +423,10 @@ bool slLightingPass::PostReplaceShaderValues(std::string& vertexShader, std::str
     vtkShaderProgram::Substitute(vertexShader, "//SL::Tangent::Impl", shaders::tangentVertexImplementation(), false);
   }
 
-  vtkShaderProgram::Substitute(vertexShader, kDeclarationTag, shaders::vertexDeclarations(frequency, this->Internal->LightTypes()), false);
+  vtkShaderProgram::Substitute(vertexShader, kDeclarationTag, shaders::vertexDeclarations(variant), false);
   vtkShaderProgram::Substitute(
     vertexShader, "//VTK::Light::Impl", shaders::vertexImplementation(frequency) + "//VTK::Light::Impl", false);
-  vtkShaderProgram::Substitute(fragmentShader, kDeclarationTag, shaders::fragmentDeclarations(frequency, this->Internal->LightTypes(), inputs.tangentNormalMap), false);
+  vtkShaderProgram::Substitute(fragmentShader, kDeclarationTag, shaders::fragmentDeclarations(variant, inputs.tangentNormalMap), false);
   vtkShaderProgram::Substitute(fragmentShader, kLightTag, shaders::fragmentImplementation(frequency, inputs), false);
   vtkShaderProgram::Substitute(fragmentShader, kTextureTag, "", false);
   return true;
@@ -420,7 +435,7 @@ bool slLightingPass::PostReplaceShaderValues(std::string& vertexShader, std::str
 bool slLightingPass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
-  if (!program->IsUniformUsed("slModel") && !program->IsUniformUsed("slMat.emission"))
+  if (!program->IsUniformUsed("slComponent") && !program->IsUniformUsed("slMat.emission"))
   {
     return true; // not one of our shaders, or everything was optimised away
   }
@@ -456,7 +471,6 @@ bool slLightingPass::SetShaderParameters(
   program->SetUniform3f("slMat.specular", &m.specular[0]);
   program->SetUniform3f("slMat.emission", &m.emission[0]);
   program->SetUniformf("slMat.shininess", m.shininess);
-  program->SetUniformi("slModel", this->Model);
   program->SetUniformi("slComponent", this->Component);
   program->SetUniformi("slComponentLight", this->ComponentLight);
   program->SetUniformi("slFalseColor", this->FalseColor ? 1 : 0);

@@ -34,11 +34,12 @@
  * - Component views show only the ambient, diffuse, specular or emission term
  *   (of all lights or of light k), or N.L of light k, in grey or false colour.
  *
- * Parameters other than the frequency are uniforms: changing them costs no
- * shader rebuild. Changing the frequency changes the shader; VTK's shader
- * cache keeps earlier variants, so switching back is cheap. The number and
- * types of the lights are compiled in as well (loops unroll, type tests fold
- * away); positions, colours and every other light parameter are uniforms.
+ * The frequency, the model and the number and types of the lights are
+ * compiled into the shaders (loops unroll, model and type tests fold away);
+ * changing one of them builds a shader variant once, and VTK's shader cache
+ * keeps earlier variants, so switching back is cheap. Everything else (light
+ * positions, directions, colours, attenuation, spot angles, the material, the
+ * component view) is a uniform: changing it costs no shader rebuild.
  *
  * @warning The mapper supplies normals only when the renderer has at least
  * one light switched on; the pass adds a zero-intensity headlight for the
@@ -104,7 +105,7 @@ public:
 
   ///@{
   /// Lighting model: an SL_MODEL_* value, 0 (lambert) .. 5 (blinn-phong-normalized).
-  vtkSetClampMacro(Model, int, 0, 5);
+  void SetModel(int model);
   vtkGetMacro(Model, int);
   /// By scene-file name; false for an unknown name.
   bool SetModelName(const char* name);

@@ -20,8 +20,9 @@ std::string lightTypeFunction(const std::vector<int>& types)
 }
 } // namespace
 
-std::string declarations(const std::vector<int>& lightTypes)
+std::string declarations(const Variant& variant)
 {
+  const std::vector<int>& lightTypes = variant.lightTypes;
   return "// ---- ShadeLab lighting (slLighting.glsl, the lighting core's single copy) ----\n" +
     shadelab::lightingShaderSource() +
     "// ---- ShadeLab lighting pass ----\n"
@@ -33,7 +34,7 @@ std::string declarations(const std::vector<int>& lightTypes)
     "const int slLightCount = " +
     std::to_string(lightTypes.size()) + ";\n" + lightTypeFunction(lightTypes) +
     "uniform slMaterial slMat;\n"
-    "uniform int slModel;\n"
+    "const int slModel = " + std::to_string(variant.model) + "; // compiled in: model tests fold\n"
     "uniform int slComponent;       // 0 total, 1 ambient, 2 diffuse, 3 specular, 4 emission, 5 cos theta\n"
     "uniform int slComponentLight;  // -1: all lights, else only this one\n"
     "uniform int slFalseColor;\n"
@@ -79,14 +80,14 @@ std::string declarations(const std::vector<int>& lightTypes)
     "}\n";
 }
 
-std::string vertexDeclarations(Frequency frequency, const std::vector<int>& lightTypes)
+std::string vertexDeclarations(const Variant& variant)
 {
-  switch (frequency)
+  switch (variant.frequency)
   {
     case Flat:
       return "flat out vec4 slFlatVertexVC;\n";
     case Gouraud:
-      return declarations(lightTypes) +
+      return declarations(variant) +
         "out vec3 slAmbientVS;\nout vec3 slDiffuseVS;\nout vec3 slSpecularVS;\nout float slCosThetaVS;\n"
         "out vec3 slAmbientBackVS;\nout vec3 slDiffuseBackVS;\nout vec3 slSpecularBackVS;\n";
     case Phong:
@@ -132,9 +133,10 @@ std::string tangentVertexImplementation()
   return "  slTangentVC = vec4(normalMatrix * slTangentMC.xyz, slTangentMC.w);\n";
 }
 
-std::string fragmentDeclarations(Frequency frequency, const std::vector<int>& lightTypes, bool tangentNormalMap)
+std::string fragmentDeclarations(const Variant& variant, bool tangentNormalMap)
 {
-  std::string out = declarations(lightTypes);
+  const Frequency frequency = variant.frequency;
+  std::string out = declarations(variant);
   if (tangentNormalMap)
   {
     out += "in vec4 slTangentVC;\nuniform float slNormalScale;\n";

@@ -27,6 +27,15 @@ enum Frequency
   Phong = 2
 };
 
+/// What is compiled into a shader variant: the frequency, the light count and
+/// types (loops unroll, type tests fold) and the model (model tests fold).
+struct Variant
+{
+  Frequency frequency = Phong;
+  std::vector<int> lightTypes; ///< SL_LIGHT_* of each light
+  int model = 0;               ///< SL_MODEL_*
+};
+
 /// What the fragment shader has to work with, as found in VTK's shaders.
 struct FragmentInputs
 {
@@ -42,16 +51,15 @@ std::string tangentVertexDeclarations();
 std::string tangentVertexImplementation();
 
 /// Declarations for either stage: the lighting core, the uniforms, helpers,
-/// for lights of @p lightTypes (SL_LIGHT_*; compiled in, so that loops unroll
-/// and type tests fold).
-std::string declarations(const std::vector<int>& lightTypes);
+/// for the variant's lights and model.
+std::string declarations(const Variant& variant);
 
 /// Vertex-shader declarations and code for a frequency ("" if none needed).
-std::string vertexDeclarations(Frequency frequency, const std::vector<int>& lightTypes);
+std::string vertexDeclarations(const Variant& variant);
 std::string vertexImplementation(Frequency frequency);
 
 /// Fragment-shader declarations and the code that writes gl_FragData[0].
-std::string fragmentDeclarations(Frequency frequency, const std::vector<int>& lightTypes, bool tangentNormalMap);
+std::string fragmentDeclarations(const Variant& variant, bool tangentNormalMap);
 std::string fragmentImplementation(Frequency frequency, const FragmentInputs& inputs);
 
 } // namespace slLightingPassShaders

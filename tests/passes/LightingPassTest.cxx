@@ -5,6 +5,7 @@
 #include "shadelab/LightingGLSL.h"
 #include "shadelab/Scene.h"
 #include "slLightingPass.h"
+#include "slScene.h"
 
 #include <vtkActor.h>
 #include <vtkImageData.h>
@@ -435,19 +436,28 @@ TEST(Parameters, ChangesUpdateTheImageAndVariantsComeBack)
   const Image first = stage.render();
   const vtkMTimeType stageTime = stage.pass->GetShaderStageMTime();
 
-  stage.pass->SetModel(shadelab::glsl::SL_MODEL_BLINN_PHONG);
-  const Image blinn = stage.render();
-  EXPECT_EQ(stage.pass->GetShaderStageMTime(), stageTime) << "a model change is a uniform change";
-  EXPECT_NE(first.rgb, blinn.rgb);
+  // A material change is a uniform change: new picture, same shader.
+  shadelab::Scene shinier = scene;
+  shinier.material.shininess = 80.0f;
+  stage.pass->GetScene()->SetScene(shinier);
+  const Image shiny = stage.render();
+  EXPECT_EQ(stage.pass->GetShaderStageMTime(), stageTime) << "shininess is a uniform";
+  EXPECT_NE(first.rgb, shiny.rgb);
+  stage.pass->GetScene()->SetScene(scene);
 
+  // Model and frequency are compiled in: each change is a shader variant.
+  stage.pass->SetModel(shadelab::glsl::SL_MODEL_BLINN_PHONG);
+  EXPECT_GT(stage.pass->GetShaderStageMTime(), stageTime);
+  const Image blinn = stage.render();
+  EXPECT_NE(first.rgb, blinn.rgb);
   stage.pass->SetFrequency(slLightingPass::GOURAUD);
-  EXPECT_GT(stage.pass->GetShaderStageMTime(), stageTime) << "a frequency change is a shader change";
   const Image gouraud = stage.render();
   EXPECT_NE(gouraud.rgb, blinn.rgb);
 
+  // Back to the first variant (from VTK's shader cache): the same picture.
   stage.pass->SetFrequency(slLightingPass::PHONG);
-  stage.pass->SetModel(1);
-  EXPECT_EQ(stage.render().rgb, first.rgb) << "back to the first variant, same picture";
+  stage.pass->SetModel(shadelab::glsl::SL_MODEL_PHONG);
+  EXPECT_EQ(stage.render().rgb, first.rgb);
 }
 
 TEST(BaseColour, PointScalarsAndTexturesMultiplyKaAndKd)
