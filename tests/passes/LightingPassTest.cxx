@@ -460,13 +460,15 @@ TEST(Parameters, ChangesUpdateTheImageAndVariantsComeBack)
   EXPECT_EQ(stage.render().rgb, first.rgb);
 }
 
-TEST(BaseColour, PointScalarsAndTexturesMultiplyKaAndKd)
+namespace
 {
-  // Lambert, one directional light along the view: at the sphere's centre
-  // N.L = 1, so the pixel is k_d x base colour (+ k_a x base x ambient light).
-  vtkSmartPointer<vtkPolyData> mesh = sphere(64);
+/// Lambert, k_d = 0.8, no ambient or emission, one white directional light
+/// along the view from a camera at (0, 0, z): where N faces the camera the
+/// pixel is 0.8 x base colour.
+shadelab::Scene headOnLambert(float z)
+{
   shadelab::Scene scene = sphereScene(shadelab::ShadingModel::Lambert);
-  scene.camera.position = glm::vec3(0.0f, 0.0f, 5.0f);
+  scene.camera.position = glm::vec3(0.0f, 0.0f, z);
   scene.lights.resize(1);
   scene.lights[0].direction = glm::vec3(0.0f, 0.0f, -1.0f);
   scene.lights[0].diffuse = glm::vec3(1.0f);
@@ -474,6 +476,14 @@ TEST(BaseColour, PointScalarsAndTexturesMultiplyKaAndKd)
   scene.material.ambient = glm::vec3(0.0f);
   scene.material.emission = glm::vec3(0.0f);
   scene.frequency = shadelab::ShadingFrequency::Phong;
+  return scene;
+}
+} // namespace
+
+TEST(BaseColour, PointScalarsMultiplyKd)
+{
+  vtkSmartPointer<vtkPolyData> mesh = sphere(64);
+  const shadelab::Scene scene = headOnLambert(5.0f);
 
   vtkNew<vtkUnsignedCharArray> colours; // base colour (255, 128, 64) everywhere
   colours->SetNumberOfComponents(3);
@@ -499,15 +509,7 @@ TEST(BaseColour, ActorTextureMultipliesKd)
   vtkNew<vtkPolyDataNormals> normals;
   normals->SetInputConnection(plane->GetOutputPort());
   normals->Update();
-  shadelab::Scene scene = sphereScene(shadelab::ShadingModel::Lambert);
-  scene.camera.position = glm::vec3(0.0f, 0.0f, 4.0f);
-  scene.lights.resize(1);
-  scene.lights[0].direction = glm::vec3(0.0f, 0.0f, -1.0f);
-  scene.lights[0].diffuse = glm::vec3(1.0f);
-  scene.material.diffuse = glm::vec3(0.8f);
-  scene.material.ambient = glm::vec3(0.0f);
-  scene.material.emission = glm::vec3(0.0f);
-  scene.frequency = shadelab::ShadingFrequency::Phong;
+  const shadelab::Scene scene = headOnLambert(4.0f);
 
   vtkNew<vtkImageData> image; // a constant (200, 100, 50) texture
   image->SetDimensions(4, 4, 1);
