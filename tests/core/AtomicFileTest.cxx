@@ -5,6 +5,7 @@
 #include <dirent.h>
 #include <fstream>
 #include <sstream>
+#include <sys/stat.h>
 #include <unistd.h>
 
 using namespace shadelab;
@@ -47,6 +48,24 @@ TEST(AtomicFile, WritesAndReplaces)
   writeFileAtomically(path, "second");
   EXPECT_EQ(slurp(path), "second");
   EXPECT_EQ(filesIn(folder), 1) << "no temporary file left behind";
+}
+
+TEST(AtomicFile, NewFilesGetTheUsualPermissions)
+{
+  // Like a file opened for writing: 0666 less the umask (not mkstemp's 0600).
+  const std::string folder = freshFolder();
+  const mode_t mask = umask(022);
+  writeFileAtomically(folder + "/new.txt", "x");
+  umask(mask);
+  struct stat info;
+  ASSERT_EQ(stat((folder + "/new.txt").c_str(), &info), 0);
+  EXPECT_EQ(info.st_mode & 0777, 0644u);
+
+  // A replaced file keeps its own mode.
+  chmod((folder + "/new.txt").c_str(), 0640);
+  writeFileAtomically(folder + "/new.txt", "y");
+  ASSERT_EQ(stat((folder + "/new.txt").c_str(), &info), 0);
+  EXPECT_EQ(info.st_mode & 0777, 0640u);
 }
 
 TEST(AtomicFile, UncommittedOutputLeavesTheOldFile)

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <sys/stat.h>
 #include <stdexcept>
 #include <unistd.h>
 #include <vector>
@@ -30,6 +31,21 @@ AtomicOutput::AtomicOutput(std::string target)
   {
     throw std::runtime_error(this->Target + ": cannot create output file: " + std::strerror(errno));
   }
+  // mkstemps creates the file 0600; give it the mode a plain open() would
+  // (0666 less the umask), or the mode of the file it will replace.
+  struct stat existing;
+  mode_t mode;
+  if (::stat(this->Target.c_str(), &existing) == 0)
+  {
+    mode = existing.st_mode & 07777;
+  }
+  else
+  {
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    mode = 0666 & ~mask;
+  }
+  ::fchmod(fd, mode);
   ::close(fd);
   this->Temporary = buffer.data();
 }
