@@ -5,6 +5,7 @@
 #include "LightingOptions.h"
 
 #include "slCosineField.h"
+#include "slScene.h"
 
 #include <vtkNew.h>
 #include <vtkPolyData.h>
@@ -35,11 +36,12 @@ int runCosine(const std::vector<std::string>& args)
   }
   requireMeshAndOutput(cl);
   vtkNew<slCosineField> filter;
-  configureLitFilter(cl, filter);
+  vtkSmartPointer<slScene> scene = configureLitFilter(cl, filter);
   filter->SetLightIndex(static_cast<int>(cl.getNumber("light", -1, -1, 1e6)));
   filter->SetComputeCellArrays(!cl.has("no-cells"));
   filter->SetInputData(loadMeshWithNormals(cl.positional()[0]));
   runLitFilter(filter, cl.positional()[0]);
+  writeFieldImageIfAsked(cl, filter->GetOutput(), scene, cl.has("light") ? "CosThetaRaw,CosTheta" : "CosThetaRaw_0,CosTheta_0");
   writeMesh(filter->GetOutput(), cl.get("output"));
   std::cout << "wrote " << cl.get("output") << "\n";
   return 0;

@@ -3,6 +3,7 @@
 #include "Commands.h"
 #include "Inputs.h"
 #include "LightingOptions.h"
+#include "slScene.h"
 
 #include "slImageReader.h"
 #include "slRadianceFilter.h"
@@ -57,6 +58,7 @@ int runLight(const std::vector<std::string>& args)
   }
   filter->SetInputData(loadMeshWithNormals(cl.positional()[0]));
   runLitFilter(filter, cl.positional()[0]);
+  writeFieldImageIfAsked(cl, filter->GetOutput(), scene, "Ambient,Diffuse,Specular,Radiance");
   writeMesh(filter->GetOutput(), cl.get("output"));
   std::cout << "wrote " << cl.get("output") << "\n";
   return 0;

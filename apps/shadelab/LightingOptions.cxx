@@ -1,6 +1,7 @@
 #include "LightingOptions.h"
 
 #include "Inputs.h"
+#include "slFieldImageRenderer.h"
 #include "slLitFilter.h"
 #include "slPolyDataNormals.h"
 #include "slScene.h"
@@ -8,6 +9,9 @@
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+
+#include <iostream>
+#include <sstream>
 
 namespace shadelab
 {
@@ -21,6 +25,8 @@ std::vector<OptionSpec> litOptions()
     { "model", "", "NAME", "override the scene's lighting model" },
     { "output", "o", "FILE", "mesh to write (.vtp, .vtk, .ply, ...); arrays are kept in .vtp and .vtk" },
     { "allow-zero-normals", "", "", "light zero-length normals as 'no direction' instead of failing" },
+    { "image", "", "FILE", "also write an image of the fields, colour-mapped, with the lights drawn" },
+    { "fields", "", "A,B,...", "arrays the image shows (default depends on the subcommand)" },
     { "help", "h", "", "show this help" },
   };
 }
@@ -85,6 +91,42 @@ void runLitFilter(slLitFilter* filter, const std::string& meshPath)
 void requireMeshAndOutput(const CommandLine& cl)
 {
   cl.meshWithOutput();
+}
+
+} // namespace app
+} // namespace shadelab
+
+namespace shadelab
+{
+namespace app
+{
+
+void writeFieldImageIfAsked(
+  const CommandLine& cl, vtkPolyData* mesh, slScene* scene, const std::string& defaultFields)
+{
+  if (!cl.has("image"))
+  {
+    return;
+  }
+  vtkNew<slFieldImageRenderer> image;
+  image->SetMesh(mesh);
+  image->SetScene(scene);
+  std::istringstream names(cl.get("fields", defaultFields));
+  for (std::string name; std::getline(names, name, ',');)
+  {
+    if (!name.empty())
+    {
+      image->AddField(name.c_str());
+    }
+  }
+  image->SetPanelWidth(480);
+  image->SetPanelHeight(360);
+  if (!image->Render())
+  {
+    throw JobError(cl.get("image") + ": " + image->GetErrorMessage());
+  }
+  writeImage(image->GetImage(), cl.get("image"));
+  std::cout << "wrote " << cl.get("image") << "\n";
 }
 
 } // namespace app

@@ -27,9 +27,8 @@ namespace app
 /// --scene, --model, --allow-zero-normals, -o, --help.
 std::vector<OptionSpec> litOptions();
 
-/// Reads MESH and gives it point normals if it has none.
-/// For now: vtkPolyDataNormals with splitting off (ShadeLab's own normals
-/// filter will take its place).
+/// Reads MESH and gives it point normals if it has none (slPolyDataNormals:
+/// no splitting, so the arrays line up with MESH's points; seams welded).
 vtkSmartPointer<vtkPolyData> loadMeshWithNormals(const std::string& path);
 
 /// Scene (with --model) and --allow-zero-normals onto @p filter; returns the scene.
@@ -41,6 +40,13 @@ void runLitFilter(slLitFilter* filter, const std::string& meshPath);
 
 /// The single MESH argument and -o; throws UsageError when either is missing.
 void requireMeshAndOutput(const CommandLine& cl);
+
+/// With --image FILE: renders the arrays named by --fields (comma-separated,
+/// default @p defaultFields) of @p mesh colour-mapped with scalar bars and the
+/// scene's lights as glyphs (slFieldImageRenderer) and writes FILE. Call it
+/// before writing the mesh: a failed rendering then leaves nothing written.
+void writeFieldImageIfAsked(
+  const CommandLine& cl, vtkPolyData* mesh, slScene* scene, const std::string& defaultFields);
 
 } // namespace app
 } // namespace shadelab

@@ -5,6 +5,7 @@
 #include "LightingOptions.h"
 
 #include "slRadianceReference.h"
+#include "slScene.h"
 
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
@@ -71,7 +72,7 @@ int runReference(const std::vector<std::string>& args)
   }
   requireMeshAndOutput(cl);
   vtkNew<slRadianceReference> filter;
-  configureLitFilter(cl, filter);
+  vtkSmartPointer<slScene> scene = configureLitFilter(cl, filter);
   if (cl.has("envmap"))
   {
     filter->SetEnvironmentFileName(cl.get("envmap").c_str());
@@ -85,6 +86,7 @@ int runReference(const std::vector<std::string>& args)
   filter->SetDirectionalLightAngle(cl.getNumber("sun-angle", 0.5, 1e-4, 45.0));
   filter->SetInputData(loadMeshWithNormals(cl.positional()[0]));
   runLitFilter(filter, cl.positional()[0]);
+  writeFieldImageIfAsked(cl, filter->GetOutput(), scene, "Radiance,DiscreteRadiance,RadianceError,RadianceStdError");
   writeMesh(filter->GetOutput(), cl.get("output"));
   printSummary(filter->GetOutput());
   std::cout << "wrote " << cl.get("output") << "\n";

@@ -142,5 +142,25 @@ class CompareTest(unittest.TestCase):
         self.assertEqual(r.stderr, "shadelab compare: option --amplify: 0 is out of range [1, 1000]\n")
 
 
+class FieldImageTest(unittest.TestCase):
+    def test_light_and_cosine_images(self):
+        with tempfile.TemporaryDirectory() as folder:
+            mesh, image = os.path.join(folder, "lit.vtp"), os.path.join(folder, "lit.png")
+            r = run("light", SPOT, "-o", mesh, "--image", image)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertEqual(png_size(image), (3 * 480, 2 * 360))  # four fields, three per row
+            r = run("cosine", SPOT, "-o", mesh, "--image", image, "--fields", "CosThetaRaw_0")
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertEqual(png_size(image), (480, 360))
+
+    def test_unknown_field_writes_nothing(self):
+        with tempfile.TemporaryDirectory() as folder:
+            mesh, image = os.path.join(folder, "lit.vtp"), os.path.join(folder, "lit.png")
+            r = run("light", SPOT, "-o", mesh, "--image", image, "--fields", "Radiance,Glow")
+            self.assertEqual(r.returncode, 1)
+            self.assertEqual(r.stderr, "shadelab light: " + image + ': the mesh has no point or cell array "Glow"\n')
+            self.assertEqual(os.listdir(folder), [])
+
+
 if __name__ == "__main__":
     unittest.main(verbosity=2)

@@ -6,6 +6,9 @@
 
 #include "shadelab/Scene.h"
 #include "slComparisonRenderer.h"
+#include "slCosineField.h"
+#include "slFieldImageRenderer.h"
+#include "slPolyDataNormals.h"
 #include "slLightingPass.h"
 #include "slMeshReader.h"
 #include "slScene.h"
@@ -134,6 +137,31 @@ TEST(ImageRegressionCompare, FrequenciesSideBySideWithDifference)
   comparison->SetDifference(1, 2, 8.0);
   ASSERT_TRUE(comparison->Render()) << comparison->GetErrorMessage();
   checkAgainstBaseline(comparison->GetImage(), "compare-frequencies-diff");
+}
+
+TEST(ImageRegressionFields, CosineFieldsWithScalarBarsAndLightGlyphs)
+{
+  vtkNew<slMeshReader> reader;
+  reader->SetFileName(projectData("meshes/spot.obj").c_str());
+  vtkNew<slPolyDataNormals> normals;
+  normals->SetInputConnection(reader->GetOutputPort());
+  normals->SplittingOff();
+  vtkNew<slScene> scene;
+  ASSERT_TRUE(scene->ReadFile(projectData("scenes/regression/all-lights.json").c_str()));
+  vtkNew<slCosineField> cosine;
+  cosine->SetScene(scene);
+  cosine->SetInputConnection(normals->GetOutputPort());
+  cosine->Update();
+  ASSERT_STREQ(cosine->GetErrorMessage(), "");
+  vtkNew<slFieldImageRenderer> fields;
+  fields->SetMesh(cosine->GetOutput());
+  fields->SetScene(scene);
+  fields->AddField("CosThetaRaw_0");
+  fields->AddField("CosTheta_2");
+  fields->SetPanelWidth(200);
+  fields->SetPanelHeight(150);
+  ASSERT_TRUE(fields->Render()) << fields->GetErrorMessage();
+  checkAgainstBaseline(fields->GetImage(), "fields-cosine-spot");
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, ImageRegression, ::testing::ValuesIn(allCases()),

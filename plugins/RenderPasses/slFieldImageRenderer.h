@@ -1,0 +1,92 @@
+#ifndef slFieldImageRenderer_h
+#define slFieldImageRenderer_h
+/**
+ * @class   slFieldImageRenderer
+ * @brief   Renders fields of a mesh (CosTheta, Diffuse, Radiance, RadianceError,
+ *          ...) colour-mapped, with a scalar bar each and the scene's lights
+ *          drawn as glyphs, in a grid of panels sharing one camera.
+ *
+ * Each field is a point (or, failing that, cell) array of the mesh. One
+ * component is mapped as it is; three (RGB terms) are mapped through their
+ * luminance 0.2126 R + 0.7152 G + 0.0722 B. A field whose range straddles 0
+ * (CosThetaRaw, RadianceError) gets a diverging blue-white-red map symmetric
+ * about 0; other fields a sequential map over their range. The surface is
+ * drawn unlit, so the colours are the values. Point and spot lights are
+ * drawn as spheres in their diffuse colour, directional lights as arrows
+ * pointing along the light toward the mesh; ambient lights have no glyph.
+ *
+ * @warning Needs an X display, like every ShadeLab rendering (xvfb-run).
+ *
+ * @sa slComparisonRenderer slCosineField slRadianceFilter slRadianceReference
+ */
+
+#include "ShadeLabRenderPassesModule.h"
+
+#include <vtkObject.h>
+#include <vtkSmartPointer.h>
+
+#include <string>
+#include <vector>
+
+class slScene;
+class vtkImageData;
+class vtkPolyData;
+
+class SHADELABRENDERPASSES_EXPORT slFieldImageRenderer : public vtkObject
+{
+public:
+  static slFieldImageRenderer* New();
+  vtkTypeMacro(slFieldImageRenderer, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// The mesh holding the fields, and the scene (camera and lights).
+  void SetMesh(vtkPolyData* mesh);
+  void SetScene(slScene* scene);
+  ///@}
+
+  /// Adds a panel showing the array @p arrayName.
+  void AddField(const char* arrayName);
+  void RemoveAllFields();
+
+  ///@{
+  /// Panels per row (the grid has as many rows as needed).
+  vtkSetClampMacro(Columns, int, 1, 16);
+  vtkGetMacro(Columns, int);
+  ///@}
+
+  ///@{
+  /// Size of one panel in pixels.
+  vtkSetClampMacro(PanelWidth, int, 16, 4096);
+  vtkGetMacro(PanelWidth, int);
+  vtkSetClampMacro(PanelHeight, int, 16, 4096);
+  vtkGetMacro(PanelHeight, int);
+  ///@}
+
+  /// Renders the grid. False, with GetErrorMessage(), for a missing array.
+  bool Render();
+
+  /// The image (RGB, unsigned char).
+  vtkImageData* GetImage();
+
+  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
+
+protected:
+  slFieldImageRenderer();
+  ~slFieldImageRenderer() override;
+
+private:
+  slFieldImageRenderer(const slFieldImageRenderer&) = delete;
+  void operator=(const slFieldImageRenderer&) = delete;
+
+  vtkSmartPointer<vtkPolyData> Mesh;
+  vtkSmartPointer<slScene> Scene;
+  vtkSmartPointer<vtkImageData> Image;
+  std::vector<std::string> Fields;
+  int Columns = 3;
+  int PanelWidth = 400;
+  int PanelHeight = 300;
+  std::string ErrorMessage;
+};
+
+#endif
