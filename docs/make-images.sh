@@ -28,5 +28,6 @@ tmp=$(mktemp -d)
 run light "$spot" --scene "$scene" -o "$tmp/light.vtp" --image "$out/fields-light.png"
 run reference "$spot" --scene "$scene" -o "$tmp/reference.vtp" --image "$out/fields-reference.png"
 run compare "$spot" --scene "$scene" --diff --size 300x225 -o "$out/compare-frequencies.png"
+run lobe --models phong,blinn-phong,phong-normalized,blinn-phong-normalized --incidence 50 -o "$out/lobes-four-models.png"
 rm -rf "$tmp"
 echo "field and comparison images written to $out/"

@@ -8,6 +8,7 @@
 #include "shadelab/Scene.h"
 #include "slAlbedoTable.h"
 #include "slBRDFLobeSource.h"
+#include "slLobeImageRenderer.h"
 #include "slLobesOnMesh.h"
 
 #include <vtkAbstractArray.h>
@@ -17,6 +18,7 @@
 #include <vtkTable.h>
 
 #include <iostream>
+#include <cctype>
 #include <sstream>
 
 namespace shadelab
@@ -65,6 +67,25 @@ void writeTable(vtkTable* table, const std::string& path)
   }
 }
 
+/// True for the file types OpenImageIO writes as pictures.
+bool isImageFile(const std::string& path)
+{
+  const size_t dot = path.find_last_of('.');
+  std::string ext = dot == std::string::npos ? "" : path.substr(dot);
+  for (char& c : ext)
+  {
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  for (const char* image : { ".png", ".jpg", ".jpeg", ".exr", ".tif", ".tiff", ".hdr", ".bmp" })
+  {
+    if (ext == image)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 std::vector<OptionSpec> lobeOptions()
 {
   std::vector<OptionSpec> specs = litOptions();
@@ -78,6 +99,7 @@ std::vector<OptionSpec> lobeOptions()
   specs.push_back({ "light", "l", "INDEX", "lobes on MESH: the light giving the incident direction" });
   specs.push_back({ "scale", "", "X", "lobes on MESH: largest lobe / bounding-box diagonal (default 0.1)" });
   specs.push_back({ "albedo-table", "", "", "write the directional albedo table of every model (CSV)" });
+  specs.push_back({ "models", "", "A,B,...", "single lobe as an image: overlay these models (default: --model)" });
   return specs;
 }
 } // namespace
@@ -91,6 +113,7 @@ int runLobe(const std::vector<std::string>& args)
   if (cl.has("help"))
   {
     std::cout << "usage: shadelab lobe [--model M] [--incidence DEG] -o LOBE.vtp [--slice SLICE.vtp]\n"
+                 "       shadelab lobe [--models A,B,...] [--incidence DEG] -o LOBE.png   (3D lobe, polar plot, albedo)\n"
                  "       shadelab lobe MESH [--scene S.json] [--points N] -o LOBES.vtp\n"
                  "       shadelab lobe --albedo-table [--shininess N] -o TABLE.csv\n\n"
                  "A BRDF lobe r(w_o) = f_r(w_i, w_o) (optionally x cos theta_o) around +z, lobes on a\n"
@@ -110,6 +133,29 @@ int runLobe(const std::vector<std::string>& args)
     table->SetShininess(cl.getNumber("shininess", 20.0, 0.0, 1e4));
     table->Update();
     writeTable(table->GetOutput(), output);
+  }
+  else if (cl.positional().empty() && isImageFile(output))
+  {
+    // One image: the 3D lobes, the polar slice and the albedo curves.
+    vtkNew<slLobeImageRenderer> image;
+    std::istringstream names(cl.get("models", modelName(static_cast<ShadingModel>(modelNumber(cl)))));
+    for (std::string name; std::getline(names, name, ',');)
+    {
+      if (!image->AddModel(name.c_str()))
+      {
+        throw UsageError("--models: \"" + name + "\" is not a lighting model, or more than six are given");
+      }
+    }
+    image->SetShininess(cl.getNumber("shininess", 20.0, 0.0, 1e4));
+    image->SetIncidenceAngle(cl.getNumber("incidence", 45.0, 0.0, 90.0));
+    image->SetDiffuseWeight(cl.getNumber("kd", 0.0, 0.0, 1e3));
+    image->SetSpecularWeight(cl.getNumber("ks", 1.0, 0.0, 1e3));
+    image->SetMultiplyByCosine(cl.has("cosine"));
+    if (!image->Render())
+    {
+      throw JobError(output + ": " + image->GetErrorMessage());
+    }
+    writeImage(image->GetImage(), output);
   }
   else if (cl.positional().empty())
   {

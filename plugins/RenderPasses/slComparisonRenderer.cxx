@@ -22,6 +22,9 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <vtkAutoInit.h>
+VTK_MODULE_INIT(vtkRenderingFreeType); // labels and scalar bars draw text
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>

@@ -29,6 +29,9 @@
 #include <vtkTransform.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <vtkAutoInit.h>
+VTK_MODULE_INIT(vtkRenderingFreeType); // labels and scalar bars draw text
+
 #include <algorithm>
 #include <cmath>
 

@@ -142,6 +142,19 @@ class CompareTest(unittest.TestCase):
         self.assertEqual(r.stderr, "shadelab compare: option --amplify: 0 is out of range [1, 1000]\n")
 
 
+class LobeImageTest(unittest.TestCase):
+    def test_three_part_image(self):
+        with tempfile.TemporaryDirectory() as folder:
+            image = os.path.join(folder, "lobe.png")
+            r = run("lobe", "--models", "phong,blinn-phong", "-o", image)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertEqual(png_size(image), (3 * 400, 360))
+            r = run("lobe", "--models", "phong,toon", "-o", image + ".other.png")
+            self.assertEqual(r.returncode, 2)
+            self.assertIn('"toon" is not a lighting model', r.stderr)
+            self.assertFalse(os.path.exists(image + ".other.png"))
+
+
 class FieldImageTest(unittest.TestCase):
     def test_light_and_cosine_images(self):
         with tempfile.TemporaryDirectory() as folder:

@@ -10,6 +10,7 @@
 #include "slFieldImageRenderer.h"
 #include "slPolyDataNormals.h"
 #include "slLightingPass.h"
+#include "slLobeImageRenderer.h"
 #include "slMeshReader.h"
 #include "slScene.h"
 #include "slSceneRenderer.h"
@@ -162,6 +163,19 @@ TEST(ImageRegressionFields, CosineFieldsWithScalarBarsAndLightGlyphs)
   fields->SetPanelHeight(150);
   ASSERT_TRUE(fields->Render()) << fields->GetErrorMessage();
   checkAgainstBaseline(fields->GetImage(), "fields-cosine-spot");
+}
+
+TEST(ImageRegressionLobes, ThreePartsWithModelsOverlaid)
+{
+  vtkNew<slLobeImageRenderer> lobes;
+  ASSERT_TRUE(lobes->AddModel("phong"));
+  ASSERT_TRUE(lobes->AddModel("blinn-phong-normalized"));
+  EXPECT_FALSE(lobes->AddModel("toon"));
+  lobes->SetIncidenceAngle(40.0);
+  lobes->SetPanelWidth(240);
+  lobes->SetPanelHeight(200);
+  ASSERT_TRUE(lobes->Render()) << lobes->GetErrorMessage();
+  checkAgainstBaseline(lobes->GetImage(), "lobes-phong-blinn-normalized");
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, ImageRegression, ::testing::ValuesIn(allCases()),
