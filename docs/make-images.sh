@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
-# Regenerates the pictures in docs/images with ShadeLab's own commands.
-#   bash docs/make-images.sh        (after scripts/build.sh)
+# Regenerates the pictures in docs/images (or in the folder given) with
+# ShadeLab's own commands; scripts/demo.sh runs it into out/gallery.
+#   bash docs/make-images.sh [FOLDER]        (after scripts/build.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 shadelab=build/bin/shadelab
 run() { bash scripts/with-display.sh "$shadelab" "$@" > /dev/null; }
 spot=data/meshes/spot.obj
 scene=data/scenes/default.json
-out=docs/images
+out=${1:-docs/images}
 mkdir -p "$out"
 
 run render "$spot" --scene "$scene" -o "$out/default-scene.png"
@@ -29,5 +30,7 @@ run light "$spot" --scene "$scene" -o "$tmp/light.vtp" --image "$out/fields-ligh
 run reference "$spot" --scene "$scene" -o "$tmp/reference.vtp" --image "$out/fields-reference.png"
 run compare "$spot" --scene "$scene" --diff --size 300x225 -o "$out/compare-frequencies.png"
 run lobe --models phong,blinn-phong,phong-normalized,blinn-phong-normalized --incidence 50 -o "$out/lobes-four-models.png"
+run render "$spot" --scene data/scenes/glow.json -o "$out/tutorial-glow.png"
+run render "$spot" --scene data/scenes/glow.json --component emission -o "$out/tutorial-glow-emission.png"
 rm -rf "$tmp"
 echo "field and comparison images written to $out/"

@@ -6,4 +6,5 @@ bash scripts/build.sh
 mkdir -p out
 bash scripts/with-display.sh build/bin/shadelab render data/meshes/spot.obj \
   --scene data/scenes/default.json -o out/default.png
-echo "ShadeLab demo images are in $(pwd)/out/"
+bash docs/make-images.sh out/gallery
+echo "ShadeLab demo images are in $(pwd)/out/ (the default scene: out/default.png; the gallery: out/gallery/)"

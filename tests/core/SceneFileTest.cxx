@@ -206,7 +206,8 @@ TEST(SceneFile, RoundTripIsLossless)
 
 TEST(SceneFile, ShippedScenesAreValid)
 {
-  for (const char* name : { "default.json" })
+  for (const char* name : { "default.json", "glow.json", "regression/all-lights.json", "regression/directional.json",
+         "regression/point.json", "regression/spot.json", "regression/ambient.json" })
   {
     const Scene s = readSceneFile(std::string(SHADELAB_DATA_DIR) + "/scenes/" + name);
     EXPECT_FALSE(s.lights.empty()) << name;
