@@ -29,6 +29,7 @@ tmp=$(mktemp -d)
 run light "$spot" --scene "$scene" -o "$tmp/light.vtp" --image "$out/fields-light.png"
 run reference "$spot" --scene "$scene" -o "$tmp/reference.vtp" --image "$out/fields-reference.png"
 run compare "$spot" --scene "$scene" --diff --size 300x225 -o "$out/compare-frequencies.png"
+run lobe "$spot" --scene "$scene" --points 24 --scale 0.12 -o "$out/lobes-on-spot.png"
 run lobe --models phong,blinn-phong,phong-normalized,blinn-phong-normalized --incidence 50 -o "$out/lobes-four-models.png"
 run render "$spot" --scene data/scenes/glow.json -o "$out/tutorial-glow.png"
 run render "$spot" --scene data/scenes/glow.json --component emission -o "$out/tutorial-glow-emission.png"

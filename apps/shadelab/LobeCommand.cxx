@@ -10,6 +10,8 @@
 #include "slBRDFLobeSource.h"
 #include "slLobeImageRenderer.h"
 #include "slLobesOnMesh.h"
+#include "slScene.h"
+#include "slSceneRenderer.h"
 
 #include <vtkAbstractArray.h>
 #include <vtkIdList.h>
@@ -114,7 +116,7 @@ int runLobe(const std::vector<std::string>& args)
   {
     std::cout << "usage: shadelab lobe [--model M] [--incidence DEG] -o LOBE.vtp [--slice SLICE.vtp]\n"
                  "       shadelab lobe [--models A,B,...] [--incidence DEG] -o LOBE.png   (3D lobe, polar plot, albedo)\n"
-                 "       shadelab lobe MESH [--scene S.json] [--points N] -o LOBES.vtp\n"
+                 "       shadelab lobe MESH [--scene S.json] [--points N] -o LOBES.vtp|LOBES.png\n"
                  "       shadelab lobe --albedo-table [--shininess N] -o TABLE.csv\n\n"
                  "A BRDF lobe r(w_o) = f_r(w_i, w_o) (optionally x cos theta_o) around +z, lobes on a\n"
                  "mesh in each point's normal frame lit by the scene's light, or the directional albedo\n"
@@ -178,14 +180,31 @@ int runLobe(const std::vector<std::string>& args)
   {
     requireMeshAndOutput(cl);
     vtkNew<slLobesOnMesh> lobes;
-    configureLitFilter(cl, lobes);
+    vtkSmartPointer<slScene> scene = configureLitFilter(cl, lobes);
     lobes->SetNumberOfLobes(static_cast<int>(cl.getNumber("points", 16, 1, 100000)));
     lobes->SetLightIndex(static_cast<int>(cl.getNumber("light", -1, -1, 1e6)));
     lobes->SetScale(cl.getNumber("scale", 0.1, 0.0, 100.0));
     lobes->SetMultiplyByCosine(cl.has("cosine"));
-    lobes->SetInputData(loadMeshWithNormals(cl.positional()[0]));
+    vtkSmartPointer<vtkPolyData> mesh = loadMeshWithNormals(cl.positional()[0]);
+    lobes->SetInputData(mesh);
     runLitFilter(lobes, cl.positional()[0]);
-    writeMesh(lobes->GetOutput(), output);
+    if (isImageFile(output))
+    {
+      // The lit mesh with its lobes, in orange, through ShadeLab's lighting pass.
+      vtkNew<slSceneRenderer> renderer;
+      renderer->SetScene(scene);
+      renderer->SetMesh(mesh);
+      renderer->AddOverlay(lobes->GetOutput(), 1.0, 0.55, 0.1);
+      if (!renderer->Render())
+      {
+        throw JobError(output + ": " + renderer->GetErrorMessage());
+      }
+      writeImage(renderer->GetImage(), output);
+    }
+    else
+    {
+      writeMesh(lobes->GetOutput(), output);
+    }
   }
   std::cout << "wrote " << output << "\n";
   return 0;

@@ -12,6 +12,7 @@
 #include <vtkPolyDataMapper.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
 #include <vtkAutoInit.h>
@@ -20,6 +21,7 @@ VTK_MODULE_INIT(vtkRenderingOpenGL2);
 
 #include "shadelab/Scene.h"
 
+#include <algorithm>
 #include <cstdlib>
 
 vtkStandardNewMacro(slSceneRenderer);
@@ -51,6 +53,18 @@ vtkPolyData* slSceneRenderer::GetMesh()
 slLightingPass* slSceneRenderer::GetLightingPass()
 {
   return this->LightingPass;
+}
+
+void slSceneRenderer::AddOverlay(vtkPolyData* overlay, double r, double g, double b)
+{
+  this->Overlays.push_back({ overlay, { r, g, b } });
+  this->Modified();
+}
+
+void slSceneRenderer::RemoveAllOverlays()
+{
+  this->Overlays.clear();
+  this->Modified();
 }
 
 vtkImageData* slSceneRenderer::GetImage()
@@ -115,6 +129,28 @@ bool slSceneRenderer::Render()
 
   this->Renderer = vtkSmartPointer<vtkRenderer>::New();
   this->Renderer->AddActor(this->Actor);
+  for (const Overlay& overlay : this->Overlays)
+  {
+    // A uniform RGB point array: the lighting pass takes scalars as base colour.
+    vtkNew<vtkUnsignedCharArray> colours;
+    colours->SetNumberOfComponents(3);
+    colours->SetNumberOfTuples(overlay.data->GetNumberOfPoints());
+    for (int c = 0; c < 3; ++c)
+    {
+      colours->FillComponent(c, 255.0 * std::min(1.0, std::max(0.0, overlay.rgb[c])));
+    }
+    vtkNew<vtkPolyData> coloured;
+    coloured->ShallowCopy(overlay.data);
+    coloured->GetPointData()->SetScalars(colours);
+    vtkNew<vtkPolyDataMapper> overlayMapper;
+    overlayMapper->SetInputData(coloured);
+    overlayMapper->SetColorModeToDirectScalars();
+    overlayMapper->ScalarVisibilityOn();
+    vtkNew<vtkActor> overlayActor;
+    overlayActor->SetMapper(overlayMapper);
+    this->Scene->ApplyMaterial(overlayActor->GetProperty());
+    this->Renderer->AddActor(overlayActor);
+  }
   this->Scene->ApplyToRenderer(this->Renderer);
   if (this->UseShadeLabLighting)
   {

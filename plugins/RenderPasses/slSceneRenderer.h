@@ -31,6 +31,7 @@
 #include <vtkSmartPointer.h>
 
 #include <string>
+#include <vector>
 
 class slLightingPass;
 class slScene;
@@ -53,6 +54,13 @@ public:
   slScene* GetScene();
   void SetMesh(vtkPolyData* mesh);
   vtkPolyData* GetMesh();
+  ///@}
+
+  ///@{
+  /// Extra surfaces drawn with the mesh (lobes, glyphs), lit like it, with
+  /// the RGB colour (0..1) standing in for the base colour.
+  void AddOverlay(vtkPolyData* overlay, double r, double g, double b);
+  void RemoveAllOverlays();
   ///@}
 
   ///@{
@@ -99,6 +107,12 @@ private:
 
   vtkSmartPointer<slScene> Scene;
   vtkSmartPointer<vtkPolyData> Mesh;
+  struct Overlay
+  {
+    vtkSmartPointer<vtkPolyData> data;
+    double rgb[3];
+  };
+  std::vector<Overlay> Overlays;
   vtkSmartPointer<vtkRenderer> Renderer;
   vtkSmartPointer<vtkRenderWindow> Window;
   vtkSmartPointer<vtkActor> Actor;

@@ -154,6 +154,13 @@ class LobeImageTest(unittest.TestCase):
             self.assertIn('"toon" is not a lighting model', r.stderr)
             self.assertFalse(os.path.exists(image + ".other.png"))
 
+    def test_lobes_on_a_mesh_image(self):
+        with tempfile.TemporaryDirectory() as folder:
+            image = os.path.join(folder, "lobes.png")
+            r = run("lobe", SPOT, "--points", "8", "-o", image)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertEqual(png_size(image), (800, 600))
+
 
 class FieldImageTest(unittest.TestCase):
     def test_light_and_cosine_images(self):
