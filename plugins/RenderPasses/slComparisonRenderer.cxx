@@ -3,7 +3,7 @@
 #include "slLightingPass.h"
 #include "slRenderNormals.h"
 #include "slScene.h"
-#include "slSceneRenderer.h"
+#include "slOffscreen.h"
 
 #include "shadelab/Scene.h"
 
@@ -20,7 +20,6 @@
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 #include <vtkUnsignedCharArray.h>
-#include <vtkWindowToImageFilter.h>
 
 #include <vtkAutoInit.h>
 VTK_MODULE_INIT(vtkRenderingFreeType); // labels and scalar bars draw text
@@ -111,9 +110,9 @@ bool slComparisonRenderer::Render()
       std::to_string(this->DifferenceB) + " do not exist";
     return false;
   }
-  if (!slSceneRenderer::HasDisplay())
+  this->ErrorMessage = slDisplayProblem();
+  if (!this->ErrorMessage.empty())
   {
-    this->ErrorMessage = "no X display (DISPLAY is unset): Debian's VTK renders through X11; run under xvfb-run";
     return false;
   }
 
@@ -124,10 +123,7 @@ bool slComparisonRenderer::Render()
   }
 
   const int columns = n + (difference ? 1 : 0);
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetMultiSamples(0);
-  window->SetSize(columns * this->PanelWidth, this->PanelHeight);
+  vtkSmartPointer<vtkRenderWindow> window = slOffscreenWindow(columns * this->PanelWidth, this->PanelHeight);
   vtkNew<vtkCamera> camera; // linked: every panel shows this one camera
   std::vector<vtkSmartPointer<vtkTextActor>> labels;
 
@@ -177,15 +173,7 @@ bool slComparisonRenderer::Render()
     {
       t->SetVisibility(withLabels);
     }
-    window->Render();
-    vtkNew<vtkWindowToImageFilter> grab;
-    grab->SetInput(window);
-    grab->SetInputBufferTypeToRGB();
-    grab->ReadFrontBufferOff();
-    grab->Update();
-    auto image = vtkSmartPointer<vtkImageData>::New();
-    image->DeepCopy(grab->GetOutput());
-    return image;
+    return slCaptureWindow(window);
   };
   vtkSmartPointer<vtkImageData> plain = difference ? capture(false, labels) : nullptr;
   this->Image = capture(true, labels);

@@ -1,7 +1,7 @@
 #include "slFieldImageRenderer.h"
 
 #include "slScene.h"
-#include "slSceneRenderer.h"
+#include "slOffscreen.h"
 
 #include "shadelab/Scene.h"
 
@@ -27,7 +27,6 @@
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 #include <vtkTransform.h>
-#include <vtkWindowToImageFilter.h>
 
 #include <vtkAutoInit.h>
 VTK_MODULE_INIT(vtkRenderingFreeType); // labels and scalar bars draw text
@@ -208,18 +207,15 @@ bool slFieldImageRenderer::Render()
     this->ErrorMessage = "slFieldImageRenderer needs a mesh, a scene and at least one field";
     return false;
   }
-  if (!slSceneRenderer::HasDisplay())
+  this->ErrorMessage = slDisplayProblem();
+  if (!this->ErrorMessage.empty())
   {
-    this->ErrorMessage = "no X display (DISPLAY is unset): Debian's VTK renders through X11; run under xvfb-run";
     return false;
   }
   const int n = static_cast<int>(this->Fields.size());
   const int columns = std::min(this->Columns, n);
   const int rows = (n + columns - 1) / columns;
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetMultiSamples(0);
-  window->SetSize(columns * this->PanelWidth, rows * this->PanelHeight);
+  vtkSmartPointer<vtkRenderWindow> window = slOffscreenWindow(columns * this->PanelWidth, rows * this->PanelHeight);
   vtkNew<vtkCamera> camera;
   std::vector<vtkSmartPointer<vtkRenderer>> renderers;
   std::vector<vtkSmartPointer<vtkRenderer>> fillers;
@@ -320,15 +316,7 @@ bool slFieldImageRenderer::Render()
   {
     filler->SetBackground(renderers.front()->GetBackground());
   }
-  window->Render();
-
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  this->Image = vtkSmartPointer<vtkImageData>::New();
-  this->Image->DeepCopy(grab->GetOutput());
+  this->Image = slCaptureWindow(window);
   return true;
 }
 

@@ -2,7 +2,7 @@
 
 #include "slAlbedoTable.h"
 #include "slBRDFLobeSource.h"
-#include "slSceneRenderer.h"
+#include "slOffscreen.h"
 
 #include "shadelab/Scene.h"
 
@@ -26,7 +26,6 @@
 #include <vtkRenderer.h>
 #include <vtkTable.h>
 #include <vtkTextProperty.h>
-#include <vtkWindowToImageFilter.h>
 
 #include <vtkAutoInit.h>
 // Charts draw through the OpenGL context device; text through FreeType.
@@ -119,15 +118,12 @@ bool slLobeImageRenderer::Render()
     this->ErrorMessage = "slLobeImageRenderer needs at least one model";
     return false;
   }
-  if (!slSceneRenderer::HasDisplay())
+  this->ErrorMessage = slDisplayProblem();
+  if (!this->ErrorMessage.empty())
   {
-    this->ErrorMessage = "no X display (DISPLAY is unset): Debian's VTK renders through X11; run under xvfb-run";
     return false;
   }
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetMultiSamples(0);
-  window->SetSize(3 * this->PanelWidth, this->PanelHeight);
+  vtkSmartPointer<vtkRenderWindow> window = slOffscreenWindow(3 * this->PanelWidth, this->PanelHeight);
 
   vtkNew<vtkRenderer> lobes;
   lobes->SetViewport(0.0, 0.0, 1.0 / 3.0, 1.0);
@@ -210,15 +206,7 @@ bool slLobeImageRenderer::Render()
   window->AddRenderer(lobes);
   addChartPanel(window, polar, 1.0 / 3.0, 2.0 / 3.0);
   addChartPanel(window, albedo, 2.0 / 3.0, 1.0);
-  window->Render();
-
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  this->Image = vtkSmartPointer<vtkImageData>::New();
-  this->Image->DeepCopy(grab->GetOutput());
+  this->Image = slCaptureWindow(window);
   return true;
 }
 

@@ -1,6 +1,7 @@
 #include "slSceneRenderer.h"
 
 #include "slLightingPass.h"
+#include "slOffscreen.h"
 #include "slRenderNormals.h"
 #include "slScene.h"
 
@@ -13,7 +14,6 @@
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkUnsignedCharArray.h>
-#include <vtkWindowToImageFilter.h>
 
 #include <vtkAutoInit.h>
 // The render window factory lives in RenderingOpenGL2; make sure it is registered.
@@ -86,8 +86,7 @@ vtkActor* slSceneRenderer::GetActor()
 
 bool slSceneRenderer::HasDisplay()
 {
-  const char* display = std::getenv("DISPLAY");
-  return display && *display;
+  return slDisplayProblem().empty();
 }
 
 bool slSceneRenderer::Render()
@@ -99,9 +98,9 @@ bool slSceneRenderer::Render()
     this->ErrorMessage = "slSceneRenderer needs a scene and a mesh";
     return false;
   }
-  if (!HasDisplay())
+  this->ErrorMessage = slDisplayProblem();
+  if (!this->ErrorMessage.empty())
   {
-    this->ErrorMessage = "no X display (DISPLAY is unset): Debian's VTK renders through X11; run under xvfb-run";
     return false;
   }
   const shadelab::Scene& scene = this->Scene->GetScene();
@@ -159,20 +158,9 @@ bool slSceneRenderer::Render()
     this->Renderer->SetPass(this->LightingPass);
   }
 
-  this->Window = vtkSmartPointer<vtkRenderWindow>::New();
-  this->Window->SetOffScreenRendering(1);
-  this->Window->SetMultiSamples(0);
-  this->Window->SetSize(this->Width > 0 ? this->Width : scene.width, this->Height > 0 ? this->Height : scene.height);
+  this->Window = slOffscreenWindow(this->Width > 0 ? this->Width : scene.width, this->Height > 0 ? this->Height : scene.height);
   this->Window->AddRenderer(this->Renderer);
-  this->Window->Render();
-
-  vtkNew<vtkWindowToImageFilter> capture;
-  capture->SetInput(this->Window);
-  capture->SetInputBufferTypeToRGB();
-  capture->ReadFrontBufferOff();
-  capture->Update();
-  this->Image = vtkSmartPointer<vtkImageData>::New();
-  this->Image->DeepCopy(capture->GetOutput());
+  this->Image = slCaptureWindow(this->Window);
   return true;
 }
 
