@@ -34,13 +34,13 @@ int runCosine(const std::vector<std::string>& args)
               << CommandLine::describe(specs);
     return 0;
   }
-  requireMeshAndOutput(cl);
+  const std::string meshPath = cl.meshWithOutput();
   vtkNew<slCosineField> filter;
   vtkSmartPointer<slScene> scene = configureLitFilter(cl, filter);
   filter->SetLightIndex(static_cast<int>(cl.getNumber("light", -1, -1, 1e6)));
   filter->SetComputeCellArrays(!cl.has("no-cells"));
-  filter->SetInputData(loadMeshWithNormals(cl.positional()[0]));
-  runLitFilter(filter, cl.positional()[0]);
+  filter->SetInputData(loadMeshWithNormals(meshPath));
+  runLitFilter(filter, meshPath);
   writeFieldImageIfAsked(cl, filter->GetOutput(), scene, cl.has("light") ? "CosThetaRaw,CosTheta" : "CosThetaRaw_0,CosTheta_0");
   writeMesh(filter->GetOutput(), cl.get("output"));
   std::cout << "wrote " << cl.get("output") << "\n";

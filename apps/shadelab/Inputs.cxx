@@ -53,12 +53,26 @@ vtkSmartPointer<slScene> loadScene(const std::string& path)
   return scene;
 }
 
+ShadingModel parseModelOption(const std::string& option, const std::string& value)
+{
+  ShadingModel model;
+  if (!parseModelName(value, model))
+  {
+    std::string names;
+    for (const std::string& name : modelNames())
+    {
+      names += (names.empty() ? "" : ", ") + name;
+    }
+    throw UsageError("--" + option + ": \"" + value + "\" is not a lighting model (" + names + ")");
+  }
+  return model;
+}
+
 void applySceneOverrides(const CommandLine& cl, slScene* scene)
 {
-  if (cl.has("model") && !scene->SetModelName(cl.get("model").c_str()))
+  if (cl.has("model"))
   {
-    throw UsageError("--model: \"" + cl.get("model") + "\" is not a lighting model (lambert, phong, " +
-      "blinn-phong, lambert-normalized, phong-normalized, blinn-phong-normalized)");
+    scene->SetModelName(modelName(parseModelOption("model", cl.get("model"))));
   }
   if (cl.has("frequency") && !scene->SetFrequencyName(cl.get("frequency").c_str()))
   {

@@ -6,6 +6,8 @@
  * and writing images, each turning failures into one-line JobErrors.
  */
 
+#include "shadelab/Scene.h"
+
 #include <vtkSmartPointer.h>
 
 #include <string>
@@ -29,6 +31,10 @@ vtkSmartPointer<vtkPolyData> loadMesh(const std::string& path);
 /// Reads a scene file, or returns the built-in default scene for "".
 /// Throws JobError ("FILE: KEY.PATH: problem").
 vtkSmartPointer<slScene> loadScene(const std::string& path);
+
+/// The lighting model named by option --@p option; UsageError listing the
+/// valid names otherwise.
+ShadingModel parseModelOption(const std::string& option, const std::string& value);
 
 /// Applies --model and --frequency. Throws UsageError for unknown names.
 void applySceneOverrides(const CommandLine& cl, slScene* scene);

@@ -37,7 +37,7 @@ int runLight(const std::vector<std::string>& args)
               << CommandLine::describe(specs);
     return 0;
   }
-  requireMeshAndOutput(cl);
+  const std::string meshPath = cl.meshWithOutput();
   vtkNew<slRadianceFilter> filter;
   vtkSmartPointer<slScene> scene = configureLitFilter(cl, filter);
   filter->SetPerLightArrays(cl.has("per-light"));
@@ -56,8 +56,8 @@ int runLight(const std::vector<std::string>& args)
     }
     filter->SetDiffuseTexture(texture->GetOutput());
   }
-  filter->SetInputData(loadMeshWithNormals(cl.positional()[0]));
-  runLitFilter(filter, cl.positional()[0]);
+  filter->SetInputData(loadMeshWithNormals(meshPath));
+  runLitFilter(filter, meshPath);
   writeFieldImageIfAsked(cl, filter->GetOutput(), scene, "Ambient,Diffuse,Specular,Radiance");
   writeMesh(filter->GetOutput(), cl.get("output"));
   std::cout << "wrote " << cl.get("output") << "\n";

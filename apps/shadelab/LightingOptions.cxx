@@ -88,11 +88,6 @@ void runLitFilter(slLitFilter* filter, const std::string& meshPath)
   }
 }
 
-void requireMeshAndOutput(const CommandLine& cl)
-{
-  cl.meshWithOutput();
-}
-
 } // namespace app
 } // namespace shadelab
 

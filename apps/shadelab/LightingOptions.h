@@ -38,9 +38,6 @@ vtkSmartPointer<slScene> configureLitFilter(const CommandLine& cl, slLitFilter* 
 /// "input mesh" replaced by @p meshPath.
 void runLitFilter(slLitFilter* filter, const std::string& meshPath);
 
-/// The single MESH argument and -o; throws UsageError when either is missing.
-void requireMeshAndOutput(const CommandLine& cl);
-
 /// With --image FILE: renders the arrays named by --fields (comma-separated,
 /// default @p defaultFields) of @p mesh colour-mapped with scalar bars and the
 /// scene's lights as glyphs (slFieldImageRenderer) and writes FILE. Call it

@@ -32,13 +32,7 @@ namespace
 {
 int modelNumber(const CommandLine& cl)
 {
-  ShadingModel model = ShadingModel::Phong;
-  if (cl.has("model") && !parseModelName(cl.get("model"), model))
-  {
-    throw UsageError("--model: \"" + cl.get("model") + "\" is not a lighting model (lambert, phong, " +
-      "blinn-phong, lambert-normalized, phong-normalized, blinn-phong-normalized)");
-  }
-  return static_cast<int>(model);
+  return static_cast<int>(cl.has("model") ? parseModelOption("model", cl.get("model")) : ShadingModel::Phong);
 }
 
 /// The albedo table as CSV, written all-or-nothing.
@@ -143,9 +137,9 @@ int runLobe(const std::vector<std::string>& args)
     std::istringstream names(cl.get("models", modelName(static_cast<ShadingModel>(modelNumber(cl)))));
     for (std::string name; std::getline(names, name, ',');)
     {
-      if (!image->AddModel(name.c_str()))
+      if (!image->AddModel(modelName(parseModelOption("models", name))))
       {
-        throw UsageError("--models: \"" + name + "\" is not a lighting model, or more than six are given");
+        throw UsageError("--models: at most six models can be overlaid");
       }
     }
     image->SetShininess(cl.getNumber("shininess", 20.0, 0.0, 1e4));
@@ -178,16 +172,16 @@ int runLobe(const std::vector<std::string>& args)
   }
   else
   {
-    requireMeshAndOutput(cl);
+    const std::string meshPath = cl.meshWithOutput();
     vtkNew<slLobesOnMesh> lobes;
     vtkSmartPointer<slScene> scene = configureLitFilter(cl, lobes);
     lobes->SetNumberOfLobes(static_cast<int>(cl.getNumber("points", 16, 1, 100000)));
     lobes->SetLightIndex(static_cast<int>(cl.getNumber("light", -1, -1, 1e6)));
     lobes->SetScale(cl.getNumber("scale", 0.1, 0.0, 100.0));
     lobes->SetMultiplyByCosine(cl.has("cosine"));
-    vtkSmartPointer<vtkPolyData> mesh = loadMeshWithNormals(cl.positional()[0]);
+    vtkSmartPointer<vtkPolyData> mesh = loadMeshWithNormals(meshPath);
     lobes->SetInputData(mesh);
-    runLitFilter(lobes, cl.positional()[0]);
+    runLitFilter(lobes, meshPath);
     if (isImageFile(output))
     {
       // The lit mesh with its lobes, in orange, through ShadeLab's lighting pass.

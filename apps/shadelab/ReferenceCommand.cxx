@@ -70,7 +70,7 @@ int runReference(const std::vector<std::string>& args)
               << CommandLine::describe(specs);
     return 0;
   }
-  requireMeshAndOutput(cl);
+  const std::string meshPath = cl.meshWithOutput();
   vtkNew<slRadianceReference> filter;
   vtkSmartPointer<slScene> scene = configureLitFilter(cl, filter);
   if (cl.has("envmap"))
@@ -84,8 +84,8 @@ int runReference(const std::vector<std::string>& args)
   filter->SetSeed(static_cast<int>(cl.getNumber("seed", 1, 0, 2147483647.0)));
   filter->SetLightRadius(cl.getNumber("light-radius", 0.0, 0.0, 1e30));
   filter->SetDirectionalLightAngle(cl.getNumber("sun-angle", 0.5, 1e-4, 45.0));
-  filter->SetInputData(loadMeshWithNormals(cl.positional()[0]));
-  runLitFilter(filter, cl.positional()[0]);
+  filter->SetInputData(loadMeshWithNormals(meshPath));
+  runLitFilter(filter, meshPath);
   writeFieldImageIfAsked(cl, filter->GetOutput(), scene, "Radiance,DiscreteRadiance,RadianceError,RadianceStdError");
   writeMesh(filter->GetOutput(), cl.get("output"));
   printSummary(filter->GetOutput());
