@@ -35,6 +35,16 @@ int modelNumber(const CommandLine& cl)
   return static_cast<int>(cl.has("model") ? parseModelOption("model", cl.get("model")) : ShadingModel::Phong);
 }
 
+/// --shininess, --incidence, --kd, --ks and --cosine onto a lobe source.
+void applyLobeOptions(const CommandLine& cl, slBRDFLobeSource* lobe)
+{
+  lobe->SetShininess(cl.getNumber("shininess", 20.0, 0.0, 1e4));
+  lobe->SetIncidenceAngle(cl.getNumber("incidence", 45.0, 0.0, 90.0));
+  lobe->SetDiffuseWeight(cl.getNumber("kd", 0.0, 0.0, 1e3));
+  lobe->SetSpecularWeight(cl.getNumber("ks", 1.0, 0.0, 1e3));
+  lobe->SetMultiplyByCosine(cl.has("cosine"));
+}
+
 /// The albedo table as CSV, written all-or-nothing.
 void writeTable(vtkTable* table, const std::string& path)
 {
@@ -142,11 +152,7 @@ int runLobe(const std::vector<std::string>& args)
         throw UsageError("--models: at most six models can be overlaid");
       }
     }
-    image->SetShininess(cl.getNumber("shininess", 20.0, 0.0, 1e4));
-    image->SetIncidenceAngle(cl.getNumber("incidence", 45.0, 0.0, 90.0));
-    image->SetDiffuseWeight(cl.getNumber("kd", 0.0, 0.0, 1e3));
-    image->SetSpecularWeight(cl.getNumber("ks", 1.0, 0.0, 1e3));
-    image->SetMultiplyByCosine(cl.has("cosine"));
+    applyLobeOptions(cl, image->GetLobeParameters());
     if (!image->Render())
     {
       throw JobError(output + ": " + image->GetErrorMessage());
@@ -157,11 +163,7 @@ int runLobe(const std::vector<std::string>& args)
   {
     vtkNew<slBRDFLobeSource> lobe;
     lobe->SetModel(modelNumber(cl));
-    lobe->SetShininess(cl.getNumber("shininess", 20.0, 0.0, 1e4));
-    lobe->SetIncidenceAngle(cl.getNumber("incidence", 45.0, 0.0, 90.0));
-    lobe->SetDiffuseWeight(cl.getNumber("kd", 0.0, 0.0, 1e3));
-    lobe->SetSpecularWeight(cl.getNumber("ks", 1.0, 0.0, 1e3));
-    lobe->SetMultiplyByCosine(cl.has("cosine"));
+    applyLobeOptions(cl, lobe);
     lobe->Update();
     writeMesh(lobe->GetOutput(0), output);
     if (cl.has("slice"))

@@ -89,11 +89,6 @@ void slComparisonRenderer::SetDifference(int a, int b, double amplification)
   this->Modified();
 }
 
-vtkImageData* slComparisonRenderer::GetImage()
-{
-  return this->Image;
-}
-
 bool slComparisonRenderer::Render()
 {
   this->ErrorMessage.clear();
@@ -222,5 +217,4 @@ void slComparisonRenderer::PrintSelf(ostream& os, vtkIndent indent)
   }
   os << indent << "Difference: " << this->DifferenceA << " - " << this->DifferenceB << " x " << this->Amplification
      << "\n";
-  os << indent << "PanelSize: " << this->PanelWidth << " x " << this->PanelHeight << "\n";
 }

@@ -18,8 +18,8 @@
  */
 
 #include "ShadeLabRenderPassesModule.h"
+#include "slPanelRenderer.h"
 
-#include <vtkObject.h>
 #include <vtkSmartPointer.h>
 
 #include <string>
@@ -29,11 +29,11 @@ class slScene;
 class vtkImageData;
 class vtkPolyData;
 
-class SHADELABRENDERPASSES_EXPORT slComparisonRenderer : public vtkObject
+class SHADELABRENDERPASSES_EXPORT slComparisonRenderer : public slPanelRenderer
 {
 public:
   static slComparisonRenderer* New();
-  vtkTypeMacro(slComparisonRenderer, vtkObject);
+  vtkTypeMacro(slComparisonRenderer, slPanelRenderer);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -52,21 +52,7 @@ public:
   /// 0-based). A negative @p a removes it.
   void SetDifference(int a, int b, double amplification);
 
-  ///@{
-  /// Size of one panel in pixels.
-  vtkSetClampMacro(PanelWidth, int, 16, 4096);
-  vtkGetMacro(PanelWidth, int);
-  vtkSetClampMacro(PanelHeight, int, 16, 4096);
-  vtkGetMacro(PanelHeight, int);
-  ///@}
-
-  /// Renders all panels. Returns false and sets GetErrorMessage() on failure.
-  bool Render();
-
-  /// The composite image (RGB, unsigned char).
-  vtkImageData* GetImage();
-
-  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
+  bool Render() override;
 
 protected:
   slComparisonRenderer();
@@ -86,14 +72,10 @@ private:
 
   vtkSmartPointer<slScene> Scene;
   vtkSmartPointer<vtkPolyData> Mesh;
-  vtkSmartPointer<vtkImageData> Image;
   std::vector<Panel> Panels;
   int DifferenceA = -1;
   int DifferenceB = -1;
   double Amplification = 4.0;
-  int PanelWidth = 400;
-  int PanelHeight = 300;
-  std::string ErrorMessage;
 };
 
 #endif

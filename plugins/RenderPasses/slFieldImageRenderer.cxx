@@ -194,11 +194,6 @@ void slFieldImageRenderer::RemoveAllFields()
   this->Modified();
 }
 
-vtkImageData* slFieldImageRenderer::GetImage()
-{
-  return this->Image;
-}
-
 bool slFieldImageRenderer::Render()
 {
   this->ErrorMessage.clear();
@@ -329,5 +324,4 @@ void slFieldImageRenderer::PrintSelf(ostream& os, vtkIndent indent)
     os << " " << f;
   }
   os << "\n" << indent << "Columns: " << this->Columns << "\n";
-  os << indent << "PanelSize: " << this->PanelWidth << " x " << this->PanelHeight << "\n";
 }

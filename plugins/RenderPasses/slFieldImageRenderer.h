@@ -21,8 +21,8 @@
  */
 
 #include "ShadeLabRenderPassesModule.h"
+#include "slPanelRenderer.h"
 
-#include <vtkObject.h>
 #include <vtkSmartPointer.h>
 
 #include <string>
@@ -32,11 +32,11 @@ class slScene;
 class vtkImageData;
 class vtkPolyData;
 
-class SHADELABRENDERPASSES_EXPORT slFieldImageRenderer : public vtkObject
+class SHADELABRENDERPASSES_EXPORT slFieldImageRenderer : public slPanelRenderer
 {
 public:
   static slFieldImageRenderer* New();
-  vtkTypeMacro(slFieldImageRenderer, vtkObject);
+  vtkTypeMacro(slFieldImageRenderer, slPanelRenderer);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -55,21 +55,7 @@ public:
   vtkGetMacro(Columns, int);
   ///@}
 
-  ///@{
-  /// Size of one panel in pixels.
-  vtkSetClampMacro(PanelWidth, int, 16, 4096);
-  vtkGetMacro(PanelWidth, int);
-  vtkSetClampMacro(PanelHeight, int, 16, 4096);
-  vtkGetMacro(PanelHeight, int);
-  ///@}
-
-  /// Renders the grid. False, with GetErrorMessage(), for a missing array.
-  bool Render();
-
-  /// The image (RGB, unsigned char).
-  vtkImageData* GetImage();
-
-  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
+  bool Render() override;
 
 protected:
   slFieldImageRenderer();
@@ -81,12 +67,8 @@ private:
 
   vtkSmartPointer<vtkPolyData> Mesh;
   vtkSmartPointer<slScene> Scene;
-  vtkSmartPointer<vtkImageData> Image;
   std::vector<std::string> Fields;
   int Columns = 3;
-  int PanelWidth = 400;
-  int PanelHeight = 300;
-  std::string ErrorMessage;
 };
 
 #endif

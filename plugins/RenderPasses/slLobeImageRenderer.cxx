@@ -84,7 +84,16 @@ void addChartPanel(vtkRenderWindow* window, vtkChartXY* chart, double x0, double
 }
 } // namespace
 
-slLobeImageRenderer::slLobeImageRenderer() = default;
+slLobeImageRenderer::slLobeImageRenderer()
+  : LobeParameters(vtkSmartPointer<slBRDFLobeSource>::New())
+{
+  this->PanelHeight = 360;
+}
+
+slBRDFLobeSource* slLobeImageRenderer::GetLobeParameters()
+{
+  return this->LobeParameters;
+}
 slLobeImageRenderer::~slLobeImageRenderer() = default;
 
 bool slLobeImageRenderer::AddModel(const char* name)
@@ -103,11 +112,6 @@ void slLobeImageRenderer::RemoveAllModels()
 {
   this->Models.clear();
   this->Modified();
-}
-
-vtkImageData* slLobeImageRenderer::GetImage()
-{
-  return this->Image;
 }
 
 bool slLobeImageRenderer::Render()
@@ -134,7 +138,7 @@ bool slLobeImageRenderer::Render()
     makeChart("directional albedo", "incidence (degrees)", "albedo");
 
   vtkNew<slAlbedoTable> albedoTable;
-  albedoTable->SetShininess(this->Shininess);
+  albedoTable->SetShininess(this->LobeParameters->GetShininess());
   albedoTable->Update();
   vtkTable* curves = albedoTable->GetOutput();
 
@@ -145,11 +149,12 @@ bool slLobeImageRenderer::Render()
     const char* name = shadelab::modelName(static_cast<shadelab::ShadingModel>(this->Models[i]));
     vtkNew<slBRDFLobeSource> lobe;
     lobe->SetModel(this->Models[i]);
-    lobe->SetShininess(this->Shininess);
-    lobe->SetIncidenceAngle(this->IncidenceAngle);
-    lobe->SetDiffuseWeight(this->DiffuseWeight);
-    lobe->SetSpecularWeight(this->SpecularWeight);
-    lobe->SetMultiplyByCosine(this->MultiplyByCosine);
+    slBRDFLobeSource* p = this->LobeParameters;
+    lobe->SetShininess(p->GetShininess());
+    lobe->SetIncidenceAngle(p->GetIncidenceAngle());
+    lobe->SetDiffuseWeight(p->GetDiffuseWeight());
+    lobe->SetSpecularWeight(p->GetSpecularWeight());
+    lobe->SetMultiplyByCosine(p->GetMultiplyByCosine());
     lobe->Update();
 
     vtkNew<vtkPolyDataMapper> mapper;
@@ -190,7 +195,7 @@ bool slLobeImageRenderer::Render()
   }
 
   // Incident direction (toward the light) and mirror direction.
-  const double t = this->IncidenceAngle * M_PI / 180.0;
+  const double t = this->LobeParameters->GetIncidenceAngle() * M_PI / 180.0;
   const double origin[3] = { 0.0, 0.0, 0.0 };
   const double light[3] = { -std::sin(t) * 1.2 * extent, 0.0, std::cos(t) * 1.2 * extent };
   const double mirror[3] = { std::sin(t) * 1.2 * extent, 0.0, std::cos(t) * 1.2 * extent };
@@ -218,8 +223,6 @@ void slLobeImageRenderer::PrintSelf(ostream& os, vtkIndent indent)
   {
     os << " " << shadelab::modelName(static_cast<shadelab::ShadingModel>(m));
   }
-  os << "\n" << indent << "Shininess: " << this->Shininess << "\n";
-  os << indent << "IncidenceAngle: " << this->IncidenceAngle << "\n";
-  os << indent << "DiffuseWeight: " << this->DiffuseWeight << ", SpecularWeight: " << this->SpecularWeight << "\n";
-  os << indent << "MultiplyByCosine: " << this->MultiplyByCosine << "\n";
+  os << "\n" << indent << "LobeParameters:\n";
+  this->LobeParameters->PrintSelf(os, indent.GetNextIndent());
 }

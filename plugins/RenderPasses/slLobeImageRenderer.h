@@ -18,55 +18,32 @@
  */
 
 #include "ShadeLabRenderPassesModule.h"
+#include "slPanelRenderer.h"
 
-#include <vtkObject.h>
 #include <vtkSmartPointer.h>
 
 #include <string>
 #include <vector>
 
+class slBRDFLobeSource;
 class vtkImageData;
 
-class SHADELABRENDERPASSES_EXPORT slLobeImageRenderer : public vtkObject
+class SHADELABRENDERPASSES_EXPORT slLobeImageRenderer : public slPanelRenderer
 {
 public:
   static slLobeImageRenderer* New();
-  vtkTypeMacro(slLobeImageRenderer, vtkObject);
+  vtkTypeMacro(slLobeImageRenderer, slPanelRenderer);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// Adds a model by its scene-file name; false for an unknown name.
   bool AddModel(const char* name);
   void RemoveAllModels();
 
-  ///@{
-  /// Lobe parameters, as slBRDFLobeSource's.
-  vtkSetClampMacro(Shininess, double, 0.0, 1.0e4);
-  vtkGetMacro(Shininess, double);
-  vtkSetClampMacro(IncidenceAngle, double, 0.0, 90.0);
-  vtkGetMacro(IncidenceAngle, double);
-  vtkSetClampMacro(DiffuseWeight, double, 0.0, 1.0e3);
-  vtkGetMacro(DiffuseWeight, double);
-  vtkSetClampMacro(SpecularWeight, double, 0.0, 1.0e3);
-  vtkGetMacro(SpecularWeight, double);
-  vtkSetMacro(MultiplyByCosine, bool);
-  vtkGetMacro(MultiplyByCosine, bool);
-  ///@}
+  /// The lobe parameters (shininess, incidence angle, k_d, k_s, cosine
+  /// factor) are set on this source; Render() draws it once per model.
+  slBRDFLobeSource* GetLobeParameters();
 
-  ///@{
-  /// Size of each of the three panels in pixels.
-  vtkSetClampMacro(PanelWidth, int, 64, 4096);
-  vtkGetMacro(PanelWidth, int);
-  vtkSetClampMacro(PanelHeight, int, 64, 4096);
-  vtkGetMacro(PanelHeight, int);
-  ///@}
-
-  /// Renders the three panels. False, with GetErrorMessage(), on failure.
-  bool Render();
-
-  /// The image (RGB, unsigned char).
-  vtkImageData* GetImage();
-
-  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
+  bool Render() override;
 
 protected:
   slLobeImageRenderer();
@@ -77,15 +54,7 @@ private:
   void operator=(const slLobeImageRenderer&) = delete;
 
   std::vector<int> Models;
-  double Shininess = 20.0;
-  double IncidenceAngle = 45.0;
-  double DiffuseWeight = 0.0;
-  double SpecularWeight = 1.0;
-  bool MultiplyByCosine = false;
-  int PanelWidth = 400;
-  int PanelHeight = 360;
-  vtkSmartPointer<vtkImageData> Image;
-  std::string ErrorMessage;
+  vtkSmartPointer<slBRDFLobeSource> LobeParameters;
 };
 
 #endif

@@ -5,6 +5,7 @@
 #include "ImageComparison.h"
 
 #include "shadelab/Scene.h"
+#include "slBRDFLobeSource.h"
 #include "slComparisonRenderer.h"
 #include "slCosineField.h"
 #include "slFieldImageRenderer.h"
@@ -171,7 +172,7 @@ TEST(ImageRegressionLobes, ThreePartsWithModelsOverlaid)
   ASSERT_TRUE(lobes->AddModel("phong"));
   ASSERT_TRUE(lobes->AddModel("blinn-phong-normalized"));
   EXPECT_FALSE(lobes->AddModel("toon"));
-  lobes->SetIncidenceAngle(40.0);
+  lobes->GetLobeParameters()->SetIncidenceAngle(40.0);
   lobes->SetPanelWidth(240);
   lobes->SetPanelHeight(200);
   ASSERT_TRUE(lobes->Render()) << lobes->GetErrorMessage();
