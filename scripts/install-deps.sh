@@ -14,6 +14,7 @@ packages=(
   xvfb xauth                        # offscreen rendering: Debian's VTK is X11-only
   glslang-tools                     # checks that the lighting core is valid GLSL
   python3-numpy                     # the numpy peer in the lighting benchmark
+  qtbase5-dev libvtk9-qt-dev        # shadelab-viewer (Qt 5, QVTKOpenGLNativeWidget, QtTest)
 )
 
 missing=()

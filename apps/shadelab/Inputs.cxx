@@ -22,7 +22,7 @@ namespace app
 
 const char* meshFormatsText()
 {
-  return "OBJ, PLY, STL, VTP, VTK or OFF";
+  return "OBJ, PLY, STL, VTP, VTK, OFF or glTF";
 }
 
 vtkSmartPointer<vtkPolyData> loadMesh(const std::string& path)

@@ -6,8 +6,12 @@
 #include "slPointWelding.h"
 
 #include <vtkAlgorithm.h>
+#include <vtkAppendPolyData.h>
 #include <vtkCellArray.h>
+#include <vtkCompositeDataIterator.h>
+#include <vtkCompositeDataSet.h>
 #include <vtkDataArray.h>
+#include <vtkGLTFReader.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkNew.h>
@@ -37,6 +41,12 @@ vtkSmartPointer<vtkAlgorithm> makeVTKReader(const std::string& ext, const char* 
     r->SetFileName(fileName);
     return r;
   }
+  if (ext == ".gltf" || ext == ".glb")
+  {
+    auto r = vtkSmartPointer<vtkGLTFReader>::New();
+    r->SetFileName(fileName);
+    return r;
+  }
   if (ext == ".ply")
   {
     auto r = vtkSmartPointer<vtkPLYReader>::New();
@@ -62,6 +72,30 @@ vtkSmartPointer<vtkAlgorithm> makeVTKReader(const std::string& ext, const char* 
     return r;
   }
   return nullptr;
+}
+
+/// All polygonal leaves of a composite dataset (glTF meshes and primitives)
+/// appended into one polydata; null when it has none.
+vtkSmartPointer<vtkPolyData> appendLeaves(vtkCompositeDataSet* composite)
+{
+  vtkNew<vtkAppendPolyData> append;
+  vtkSmartPointer<vtkCompositeDataIterator> it;
+  it.TakeReference(composite->NewIterator());
+  int leaves = 0;
+  for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+  {
+    if (vtkPolyData* leaf = vtkPolyData::SafeDownCast(it->GetCurrentDataObject()))
+    {
+      append->AddInputData(leaf);
+      ++leaves;
+    }
+  }
+  if (leaves == 0)
+  {
+    return nullptr;
+  }
+  append->Update();
+  return append->GetOutput();
 }
 
 /// Index of the first point with a NaN or infinite coordinate, or -1.
@@ -93,7 +127,7 @@ slMeshReader::~slMeshReader()
 
 const char* slMeshReader::GetSupportedExtensions()
 {
-  return ".obj .ply .stl .vtp .vtk .off";
+  return ".obj .ply .stl .vtp .vtk .off .gltf .glb";
 }
 
 bool slMeshReader::CanReadFile(const char* fileName)
@@ -149,7 +183,11 @@ int slMeshReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInform
     {
       return this->Fail(errors->GetLastError());
     }
-    vtkPolyData* read = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+    vtkSmartPointer<vtkPolyData> read = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+    if (auto* composite = vtkCompositeDataSet::SafeDownCast(reader->GetOutputDataObject(0)))
+    {
+      read = appendLeaves(composite);
+    }
     if (!read)
     {
       return this->Fail("the file does not hold polygonal data (vtkPolyData)");

@@ -2,13 +2,15 @@
 #define slMeshReader_h
 /**
  * @class   slMeshReader
- * @brief   Reads a surface mesh from OBJ, PLY, STL, VTP, legacy VTK or OFF.
+ * @brief   Reads a surface mesh from OBJ, PLY, STL, VTP, legacy VTK, OFF or glTF.
  *
  * slMeshReader picks the reader from the file name's extension (case
  * insensitive): .obj (vtkOBJReader, keeps texture coordinates and normals),
  * .ply (vtkPLYReader), .stl (vtkSTLReader), .vtp (vtkXMLPolyDataReader),
  * .vtk (vtkPolyDataReader; the file must hold polydata) and .off (ShadeLab's
- * own OFF parser, which keeps non-manifold faces and reports errors by line).
+ * own OFF parser, which keeps non-manifold faces and reports errors by line),
+ * .gltf and .glb (vtkGLTFReader; every mesh primitive of the first scene,
+ * with node transforms applied, appended into one polydata).
  *
  * vtkOBJReader emits one point per face corner. With MergeDuplicatePoints
  * on (the default), points equal in position and in every point-data value
@@ -23,7 +25,7 @@
  * @warning Only polygonal cells are required; vertices, lines and strips are
  * passed through as the underlying reader returns them.
  *
- * @sa vtkOBJReader vtkPLYReader vtkSTLReader vtkXMLPolyDataReader
+ * @sa vtkOBJReader vtkGLTFReader vtkPLYReader vtkSTLReader vtkXMLPolyDataReader
  */
 
 #include "ShadeLabIOModule.h"
@@ -59,7 +61,7 @@ public:
   /// True if the extension of @p fileName is one slMeshReader reads.
   static bool CanReadFile(const char* fileName);
 
-  /// The extensions read, e.g. ".obj .ply .stl .vtp .vtk .off".
+  /// The extensions read, e.g. ".obj .ply .stl .vtp .vtk .off .gltf .glb".
   static const char* GetSupportedExtensions();
 
 protected:

@@ -194,6 +194,71 @@ void slFieldImageRenderer::RemoveAllFields()
   this->Modified();
 }
 
+vtkSmartPointer<vtkRenderer> slFieldImageRenderer::NewFieldRenderer(
+  vtkPolyData* mesh, const std::string& name, int panelWidth, int panelHeight, std::string& error)
+{
+  vtkDataArray* array = mesh->GetPointData()->GetArray(name.c_str());
+  const bool cellArray = !array;
+  if (!array)
+  {
+    array = mesh->GetCellData()->GetArray(name.c_str());
+  }
+  if (!array)
+  {
+    error = "the mesh has no point or cell array \"" + name + "\"";
+    return nullptr;
+  }
+  vtkSmartPointer<vtkFloatArray> values = scalarsOf(array);
+  vtkNew<vtkPolyData> shown;
+  shown->ShallowCopy(mesh);
+  if (cellArray)
+  {
+    shown->GetCellData()->SetScalars(values);
+  }
+  else
+  {
+    shown->GetPointData()->SetScalars(values);
+  }
+  double range[2];
+  values->GetRange(range);
+  vtkSmartPointer<vtkLookupTable> table = lookupTableFor(range);
+
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(shown);
+  mapper->SetLookupTable(table);
+  mapper->UseLookupTableScalarRangeOn();
+  mapper->ScalarVisibilityOn();
+  if (cellArray)
+  {
+    mapper->SetScalarModeToUseCellData();
+  }
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->LightingOff(); // the colours are the values
+
+  vtkNew<vtkScalarBarActor> bar;
+  bar->SetLookupTable(table);
+  bar->SetNumberOfLabels(5);
+  bar->SetMaximumWidthInPixels(panelWidth / 6);
+  bar->SetUnconstrainedFontSize(true);
+  bar->GetLabelTextProperty()->SetFontSize(std::max(9, panelHeight / 28));
+  bar->SetPosition(0.84, 0.08);
+  bar->SetPosition2(0.15, 0.84);
+
+  auto renderer = vtkSmartPointer<vtkRenderer>::New();
+  renderer->AddActor(actor);
+  renderer->AddActor2D(bar);
+  vtkNew<vtkTextActor> title;
+  title->SetInput((name + (array->GetNumberOfComponents() >= 3 ? " (luminance)" : "")).c_str());
+  title->GetTextProperty()->SetFontSize(std::max(12, panelHeight / 18));
+  title->GetTextProperty()->SetColor(1.0, 1.0, 1.0);
+  title->GetTextProperty()->SetVerticalJustificationToBottom();
+  title->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  title->SetPosition(0.03, 0.03);
+  renderer->AddActor2D(title);
+  return renderer;
+}
+
 bool slFieldImageRenderer::Render()
 {
   this->ErrorMessage.clear();
@@ -217,70 +282,16 @@ bool slFieldImageRenderer::Render()
 
   for (int i = 0; i < n; ++i)
   {
-    const std::string& name = this->Fields[static_cast<size_t>(i)];
-    vtkDataArray* array = this->Mesh->GetPointData()->GetArray(name.c_str());
-    const bool cellArray = !array;
-    if (!array)
+    vtkSmartPointer<vtkRenderer> renderer = NewFieldRenderer(
+      this->Mesh, this->Fields[static_cast<size_t>(i)], this->PanelWidth, this->PanelHeight, this->ErrorMessage);
+    if (!renderer)
     {
-      array = this->Mesh->GetCellData()->GetArray(name.c_str());
-    }
-    if (!array)
-    {
-      this->ErrorMessage = "the mesh has no point or cell array \"" + name + "\"";
       return false;
     }
-    vtkSmartPointer<vtkFloatArray> values = scalarsOf(array);
-    vtkNew<vtkPolyData> shown;
-    shown->ShallowCopy(this->Mesh);
-    if (cellArray)
-    {
-      shown->GetCellData()->SetScalars(values);
-    }
-    else
-    {
-      shown->GetPointData()->SetScalars(values);
-    }
-    double range[2];
-    values->GetRange(range);
-    vtkSmartPointer<vtkLookupTable> table = lookupTableFor(range);
-
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputData(shown);
-    mapper->SetLookupTable(table);
-    mapper->UseLookupTableScalarRangeOn();
-    mapper->ScalarVisibilityOn();
-    if (cellArray)
-    {
-      mapper->SetScalarModeToUseCellData();
-    }
-    vtkNew<vtkActor> actor;
-    actor->SetMapper(mapper);
-    actor->GetProperty()->LightingOff(); // the colours are the values
-
-    vtkNew<vtkScalarBarActor> bar;
-    bar->SetLookupTable(table);
-    bar->SetNumberOfLabels(5);
-    bar->SetMaximumWidthInPixels(this->PanelWidth / 6);
-    bar->SetUnconstrainedFontSize(true);
-    bar->GetLabelTextProperty()->SetFontSize(std::max(9, this->PanelHeight / 28));
-    bar->SetPosition(0.84, 0.08);
-    bar->SetPosition2(0.15, 0.84);
-
     const int row = i / columns, column = i % columns;
-    auto renderer = vtkSmartPointer<vtkRenderer>::New();
     renderer->SetViewport(static_cast<double>(column) / columns, 1.0 - static_cast<double>(row + 1) / rows,
       static_cast<double>(column + 1) / columns, 1.0 - static_cast<double>(row) / rows);
     renderer->SetActiveCamera(camera);
-    renderer->AddActor(actor);
-    renderer->AddActor2D(bar);
-    vtkNew<vtkTextActor> title;
-    title->SetInput((name + (array->GetNumberOfComponents() >= 3 ? " (luminance)" : "")).c_str());
-    title->GetTextProperty()->SetFontSize(std::max(12, this->PanelHeight / 18));
-    title->GetTextProperty()->SetColor(1.0, 1.0, 1.0);
-    title->GetTextProperty()->SetVerticalJustificationToBottom();
-    title->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-    title->SetPosition(0.03, 0.03);
-    renderer->AddActor2D(title);
     window->AddRenderer(renderer);
     renderers.push_back(renderer);
   }

@@ -30,6 +30,7 @@
 
 class slScene;
 class vtkImageData;
+class vtkRenderer;
 class vtkPolyData;
 
 class SHADELABRENDERPASSES_EXPORT slFieldImageRenderer : public slPanelRenderer
@@ -56,6 +57,17 @@ public:
   ///@}
 
   bool Render() override;
+
+#ifndef __VTK_WRAP__
+  /// One panel on its own: a renderer showing the point (or cell) array
+  /// @p arrayName of @p mesh colour-mapped as described above, with its
+  /// scalar bar and title laid out for a @p panelWidth x @p panelHeight
+  /// viewport; no camera or lights are set. Null, with @p error, if the mesh
+  /// has no such array. Render() builds its grid from these; shadelab-viewer
+  /// shows one in its fields panel.
+  static vtkSmartPointer<vtkRenderer> NewFieldRenderer(
+    vtkPolyData* mesh, const std::string& arrayName, int panelWidth, int panelHeight, std::string& error);
+#endif
 
 protected:
   slFieldImageRenderer();

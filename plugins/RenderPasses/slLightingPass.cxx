@@ -91,10 +91,14 @@ bool hasTangentsWithHandedness(vtkAbstractMapper* mapper)
   return tangents && tangents->GetNumberOfComponents() == 4;
 }
 
+/// Opaque, lit polydata actors. An actor whose property has lighting off
+/// (colour-mapped fields, widget handles, glyphs in their own colour) is
+/// drawn unlit by VTK, as without the pass.
 bool isOurs(vtkAbstractMapper* mapper, vtkProp* prop)
 {
   vtkActor* actor = vtkActor::SafeDownCast(prop);
-  return vtkOpenGLPolyDataMapper::SafeDownCast(mapper) && actor && !actor->HasTranslucentPolygonalGeometry();
+  return vtkOpenGLPolyDataMapper::SafeDownCast(mapper) && actor && !actor->HasTranslucentPolygonalGeometry() &&
+    actor->GetProperty()->GetLighting();
 }
 } // namespace
 

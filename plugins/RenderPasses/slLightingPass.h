@@ -47,7 +47,8 @@
  * pass sets an actor's interpolation to flat for Flat and away from flat for
  * Gouraud and Phong. Gouraud and Phong need point normals. Only the actor's
  * own texture (vtkActor::SetTexture) is used as base colour. Translucent
- * actors keep VTK's lighting.
+ * actors keep VTK's lighting; actors whose property has lighting off are
+ * drawn unlit, as VTK draws them.
  *
  * @sa vtkOpenGLRenderPass vtkRenderStepsPass slScene slSceneRenderer
  */

@@ -4,8 +4,10 @@
  * @file slOffscreen.h
  * @brief What every ShadeLab renderer does the same way: check for an X
  * display, open a deterministic offscreen window, capture it as an image.
- * Internal to ShadeLab::RenderPasses.
+ * C++ only (not wrapped); shadelab-viewer captures its Qt window the same way.
  */
+
+#include "ShadeLabRenderPassesModule.h"
 
 #include <vtkSmartPointer.h>
 
@@ -16,14 +18,14 @@ class vtkRenderWindow;
 
 /// The one-line reason rendering is impossible here, or "" if an X display
 /// is available (Debian's VTK renders through X11 only).
-std::string slDisplayProblem();
+SHADELABRENDERPASSES_EXPORT std::string slDisplayProblem();
 
 /// An offscreen window of @p width x @p height, multisampling off, so that
 /// the same scene gives the same pixels.
-vtkSmartPointer<vtkRenderWindow> slOffscreenWindow(int width, int height);
+SHADELABRENDERPASSES_EXPORT vtkSmartPointer<vtkRenderWindow> slOffscreenWindow(int width, int height);
 
 /// Renders @p window and returns its back buffer as RGB unsigned char, row 0
 /// at the bottom.
-vtkSmartPointer<vtkImageData> slCaptureWindow(vtkRenderWindow* window);
+SHADELABRENDERPASSES_EXPORT vtkSmartPointer<vtkImageData> slCaptureWindow(vtkRenderWindow* window);
 
 #endif

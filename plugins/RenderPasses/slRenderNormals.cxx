@@ -6,17 +6,19 @@
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 
-vtkSmartPointer<vtkPolyData> slWithRenderNormals(vtkPolyData* mesh, std::string& error)
+vtkSmartPointer<vtkPolyData> slWithRenderNormals(
+  vtkPolyData* mesh, std::string& error, const slRenderNormalsOptions& options)
 {
-  if (mesh->GetPointData()->GetNormals())
+  static_assert(slPolyDataNormals::ANGLE == slRenderNormalsOptions().weighting, "the default is angle weighting");
+  if (mesh->GetPointData()->GetNormals() && !options.replace)
   {
     return mesh;
   }
   vtkNew<slPolyDataNormals> normals;
   normals->SetInputData(mesh);
-  normals->SetWeighting(slPolyDataNormals::ANGLE);
-  normals->SplittingOn();
-  normals->SetFeatureAngle(30.0);
+  normals->SetWeighting(options.weighting);
+  normals->SetSplitting(options.splitting);
+  normals->SetFeatureAngle(options.featureAngle);
   normals->ConsistencyOn();
   normals->WeldCoincidentPointsOn();
   normals->ComputeCellNormalsOn();

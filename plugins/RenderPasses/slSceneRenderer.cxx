@@ -89,13 +89,16 @@ bool slSceneRenderer::HasDisplay()
   return slDisplayProblem().empty();
 }
 
+vtkPolyData* slSceneRenderer::GetRenderedMesh()
+{
+  return this->RenderedMesh;
+}
+
 bool slSceneRenderer::Render()
 {
-  this->ErrorMessage.clear();
   this->Image = nullptr;
-  if (!this->Scene || !this->Mesh)
+  if (!this->Prepare())
   {
-    this->ErrorMessage = "slSceneRenderer needs a scene and a mesh";
     return false;
   }
   this->ErrorMessage = slDisplayProblem();
@@ -104,17 +107,39 @@ bool slSceneRenderer::Render()
     return false;
   }
   const shadelab::Scene& scene = this->Scene->GetScene();
+  this->Window = slOffscreenWindow(this->Width > 0 ? this->Width : scene.width, this->Height > 0 ? this->Height : scene.height);
+  this->Window->AddRenderer(this->Renderer);
+  this->Image = slCaptureWindow(this->Window);
+  return true;
+}
+
+bool slSceneRenderer::Prepare()
+{
+  this->ErrorMessage.clear();
+  this->RenderedMesh = nullptr;
+  if (!this->Scene || !this->Mesh)
+  {
+    this->ErrorMessage = "slSceneRenderer needs a scene and a mesh";
+    return false;
+  }
+  const shadelab::Scene& scene = this->Scene->GetScene();
 
   vtkSmartPointer<vtkPolyData> mesh = this->Mesh;
-  if (scene.frequency != shadelab::ShadingFrequency::Flat)
+  if (scene.frequency != shadelab::ShadingFrequency::Flat || this->ReplaceNormals)
   {
-    mesh = slWithRenderNormals(this->Mesh, this->ErrorMessage);
+    slRenderNormalsOptions options;
+    options.weighting = this->NormalsWeighting;
+    options.splitting = this->Splitting;
+    options.featureAngle = this->FeatureAngle;
+    options.replace = this->ReplaceNormals;
+    mesh = slWithRenderNormals(this->Mesh, this->ErrorMessage, options);
     if (!mesh)
     {
       return false;
     }
   }
 
+  this->RenderedMesh = mesh;
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputData(mesh);
   mapper->ScalarVisibilityOff();
@@ -157,10 +182,6 @@ bool slSceneRenderer::Render()
     this->LightingPass->SetScene(this->Scene);
     this->Renderer->SetPass(this->LightingPass);
   }
-
-  this->Window = slOffscreenWindow(this->Width > 0 ? this->Width : scene.width, this->Height > 0 ? this->Height : scene.height);
-  this->Window->AddRenderer(this->Renderer);
-  this->Image = slCaptureWindow(this->Window);
   return true;
 }
 
@@ -170,6 +191,10 @@ void slSceneRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UseShadeLabLighting: " << this->UseShadeLabLighting << "\n";
   os << indent << "Width: " << this->Width << "\n";
   os << indent << "Height: " << this->Height << "\n";
+  os << indent << "NormalsWeighting: " << this->NormalsWeighting << "\n";
+  os << indent << "Splitting: " << this->Splitting << "\n";
+  os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
+  os << indent << "ReplaceNormals: " << this->ReplaceNormals << "\n";
   os << indent << "Scene: " << (this->Scene ? "set" : "(none)") << "\n";
   os << indent << "Mesh: " << (this->Mesh ? "set" : "(none)") << "\n";
 }

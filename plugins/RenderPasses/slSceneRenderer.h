@@ -15,9 +15,13 @@
  * Rendering is deterministic: fixed window size, multisampling off, and the
  * camera fixed by the scene (or fitted to the mesh the same way each time).
  * If the mesh has no point normals and the scene's frequency is not flat,
- * slPolyDataNormals computes them (angle weighting, feature edges over 30
- * degrees kept sharp, coincident points welded so that texture seams do not
- * show) so that Gouraud and Phong shading have normals to interpolate.
+ * slPolyDataNormals computes them (by default angle weighting, feature edges
+ * over 30 degrees kept sharp, coincident points welded so that texture seams
+ * do not show) so that Gouraud and Phong shading have normals to interpolate.
+ *
+ * Prepare() builds the renderer without a window, for applications that show
+ * it in their own (shadelab-viewer's Qt widget): the same scene then gives
+ * the same pixels there as Render() gives offscreen.
  *
  * @warning Debian's VTK renders through X11 only: an X server is needed
  * (run under xvfb-run). Render() fails cleanly when DISPLAY is not set.
@@ -78,11 +82,40 @@ public:
   vtkBooleanMacro(UseShadeLabLighting, bool);
   ///@}
 
+  ///@{
+  /// How normals are computed when the mesh has none (see slPolyDataNormals):
+  /// weighting (an slPolyDataNormals::WeightingType, default ANGLE), feature
+  /// splitting (default on) at FeatureAngle degrees (default 30). With
+  /// ReplaceNormals on (default off) normals the mesh has are recomputed too,
+  /// at every shading frequency.
+  vtkSetClampMacro(NormalsWeighting, int, 0, 3);
+  vtkGetMacro(NormalsWeighting, int);
+  vtkSetMacro(Splitting, bool);
+  vtkGetMacro(Splitting, bool);
+  vtkBooleanMacro(Splitting, bool);
+  vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
+  vtkGetMacro(FeatureAngle, double);
+  vtkSetMacro(ReplaceNormals, bool);
+  vtkGetMacro(ReplaceNormals, bool);
+  vtkBooleanMacro(ReplaceNormals, bool);
+  ///@}
+
   /// The lighting pass used by Render(), to set component views before it.
   slLightingPass* GetLightingPass();
 
-  /// Renders one frame. Returns false and sets GetErrorMessage() on failure.
+  /// Builds the renderer (actor, overlays, lights, camera, lighting pass)
+  /// without a window; GetRenderer() then returns it, ready to be added to
+  /// any render window of the scene's size. False, with GetErrorMessage(),
+  /// on failure.
+  bool Prepare();
+
+  /// Prepare(), then renders one frame offscreen and captures it. Returns
+  /// false and sets GetErrorMessage() on failure.
   bool Render();
+
+  /// The mesh as drawn by the last Prepare(): the input, or a copy with the
+  /// normals computed for it.
+  vtkPolyData* GetRenderedMesh();
 
   /// The last rendered frame: RGB, unsigned char, row 0 at the bottom.
   vtkImageData* GetImage();
@@ -107,6 +140,7 @@ private:
 
   vtkSmartPointer<slScene> Scene;
   vtkSmartPointer<vtkPolyData> Mesh;
+  vtkSmartPointer<vtkPolyData> RenderedMesh;
   struct Overlay
   {
     vtkSmartPointer<vtkPolyData> data;
@@ -119,6 +153,10 @@ private:
   vtkSmartPointer<vtkImageData> Image;
   vtkSmartPointer<slLightingPass> LightingPass;
   bool UseShadeLabLighting = true;
+  int NormalsWeighting = 2;
+  bool Splitting = true;
+  double FeatureAngle = 30.0;
+  bool ReplaceNormals = false;
   int Width = 0;
   int Height = 0;
   std::string ErrorMessage;

@@ -137,13 +137,13 @@ TEST(MeshReader, MissingFile)
 TEST(MeshReader, UnsupportedExtension)
 {
   EXPECT_EQ(read("mesh.xyz").error,
-    "mesh.xyz: unsupported mesh format \".xyz\" (supported: .obj .ply .stl .vtp .vtk .off)");
+    "mesh.xyz: unsupported mesh format \".xyz\" (supported: .obj .ply .stl .vtp .vtk .off .gltf .glb)");
 }
 
 TEST(MeshReader, GarbageGivesAnErrorAndEmptyOutput)
 {
   const TestFolder folder;
-  for (const char* name : { "junk.obj", "junk.ply", "junk.vtp", "junk.vtk", "junk.stl" })
+  for (const char* name : { "junk.obj", "junk.ply", "junk.vtp", "junk.vtk", "junk.stl", "junk.gltf", "junk.glb" })
   {
     folder.write(name, "this is not a mesh at all\n\x01\x02\x03");
     const ReadResult r = read(folder.path(name));
@@ -187,4 +187,49 @@ TEST(MeshReader, SharedDataMeshes)
   }
   // Spot: 2930 positions, 3225 (position, UV) pairs.
   EXPECT_EQ(read(std::string(SHADELAB_SHARED_DATA_DIR) + "/meshes/spot.obj").mesh->GetNumberOfPoints(), 3225);
+}
+
+TEST(MeshReader, ReadsGLTFWithNodeTransforms)
+{
+  // One triangle mesh used by two nodes, the second moved by +5 in x: the
+  // reader must append both primitives with their node transforms applied.
+  const TestFolder folder;
+  const float positions[9] = { 0, 0, 0, 1, 0, 0, 0, 1, 0 };
+  const unsigned short indices[4] = { 0, 1, 2, 0 }; // padded to 4-byte alignment
+  {
+    std::ofstream bin(folder.path("tri.bin"), std::ios::binary);
+    bin.write(reinterpret_cast<const char*>(positions), sizeof positions);
+    bin.write(reinterpret_cast<const char*>(indices), sizeof indices);
+  }
+  folder.write("two.gltf", R"({
+  "asset": { "version": "2.0" },
+  "scene": 0,
+  "scenes": [ { "nodes": [0, 1] } ],
+  "nodes": [ { "mesh": 0 }, { "mesh": 0, "translation": [5, 0, 0] } ],
+  "meshes": [ { "primitives": [ { "attributes": { "POSITION": 0 }, "indices": 1 } ] } ],
+  "buffers": [ { "uri": "tri.bin", "byteLength": 44 } ],
+  "bufferViews": [ { "buffer": 0, "byteOffset": 0, "byteLength": 36 },
+                   { "buffer": 0, "byteOffset": 36, "byteLength": 6 } ],
+  "accessors": [
+    { "bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0] },
+    { "bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR" } ]
+})");
+  const ReadResult r = read(folder.path("two.gltf"));
+  ASSERT_EQ(r.error, "");
+  EXPECT_EQ(r.mesh->GetNumberOfPolys(), 2);
+  EXPECT_EQ(r.mesh->GetNumberOfPoints(), 6);
+  double bounds[6];
+  r.mesh->GetBounds(bounds);
+  EXPECT_DOUBLE_EQ(bounds[0], 0.0);
+  EXPECT_DOUBLE_EQ(bounds[1], 6.0);
+  EXPECT_DOUBLE_EQ(bounds[3], 1.0);
+}
+
+TEST(MeshReader, BrokenGLTFGivesOneLineNamingTheFile)
+{
+  const TestFolder folder;
+  folder.write("broken.gltf", "{ \"asset\": { \"version\": \"2.0\" }, \"meshes\": [ { \"primitives\": [ ");
+  const std::string error = read(folder.path("broken.gltf")).error;
+  EXPECT_EQ(error.rfind(folder.path("broken.gltf") + ": ", 0), 0u) << error;
+  EXPECT_EQ(error.find('\n'), std::string::npos) << error;
 }

@@ -211,4 +211,20 @@ TEST(SceneConversion, CameraLightsMatchVTKTransform)
   {
     EXPECT_NEAR(moved.position[i], world[i], 1e-4) << i;
   }
+
+  // And back: VTK's world position, taken into camera space, is the scene's
+  // camera-space position again (what the viewer's light widgets rely on).
+  shadelab::SceneLight placed = s.lights[0];
+  placed.space = shadelab::LightSpace::World;
+  placed.position = glm::vec3(world[0], world[1], world[2]);
+  placed.direction = moved.direction;
+  const shadelab::SceneLight back = shadelab::lightInCameraSpace(placed, s.camera.position, s.camera.focalPoint,
+    glm::vec3(camera->GetViewUp()[0], camera->GetViewUp()[1], camera->GetViewUp()[2]));
+  EXPECT_EQ(back.space, shadelab::LightSpace::Camera);
+  const float expected[3] = { 0.3f, -0.4f, 0.5f };
+  for (int i = 0; i < 3; ++i)
+  {
+    EXPECT_NEAR(back.position[i], expected[i], 1e-5) << i;
+    EXPECT_NEAR(back.direction[i], s.lights[0].direction[i], 1e-5) << i;
+  }
 }

@@ -17,6 +17,7 @@
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataNormals.h>
+#include <vtkProperty.h>
 #include <vtkSphereSource.h>
 #include <vtkUnsignedCharArray.h>
 
@@ -529,4 +530,25 @@ TEST(BaseColour, ActorTextureMultipliesKd)
   EXPECT_NEAR(pixel[0], 0.8f * 200.0f / 255.0f, 1.5f / 255.0f);
   EXPECT_NEAR(pixel[1], 0.8f * 100.0f / 255.0f, 1.5f / 255.0f);
   EXPECT_NEAR(pixel[2], 0.8f * 50.0f / 255.0f, 1.5f / 255.0f);
+}
+
+TEST(UnlitActors, LightingOffKeepsVTKsUnlitColour)
+{
+  // A property with lighting off (widget handles, colour-mapped fields) must
+  // not be lit by the pass: VTK draws it as ambient + diffuse colour, flat.
+  vtkSmartPointer<vtkPolyData> mesh = sphere(32);
+  passtest::Stage stage = passtest::litStage(mesh, headOnLambert(5.0f), 100, 100);
+  vtkProperty* property = stage.actor->GetProperty();
+  property->LightingOff();
+  property->SetAmbient(0.0);
+  property->SetDiffuse(1.0);
+  property->SetColor(0.2, 0.4, 0.6);
+  const Image image = stage.render();
+  for (const int x : { 50, 40, 62 }) // centre and off-centre: lit shading would vary, unlit does not
+  {
+    const float* pixel = image.at(x, 50);
+    EXPECT_NEAR(pixel[0], 0.2f, 1.5f / 255.0f) << x;
+    EXPECT_NEAR(pixel[1], 0.4f, 1.5f / 255.0f) << x;
+    EXPECT_NEAR(pixel[2], 0.6f, 1.5f / 255.0f) << x;
+  }
 }

@@ -117,6 +117,20 @@ glsl::slMaterial toEvaluationMaterial(const SceneMaterial& material)
   return out;
 }
 
+namespace
+{
+/// VTK's camera-light frame: columns right, up, back (the camera looks along
+/// -back); camera-light space puts the camera at (0,0,1) and the focal point
+/// at the origin, one unit apart.
+glm::mat3 cameraFrame(const glm::vec3& eye, const glm::vec3& focalPoint, const glm::vec3& viewUp)
+{
+  const glm::vec3 back = glsl::slSafeNormalize(eye - focalPoint);
+  const glm::vec3 right = glsl::slSafeNormalize(glm::cross(viewUp, back));
+  const glm::vec3 up = glm::cross(back, right);
+  return glm::mat3(right, up, back);
+}
+} // namespace
+
 SceneLight lightInWorldSpace(
   const SceneLight& light, const glm::vec3& eye, const glm::vec3& focalPoint, const glm::vec3& viewUp)
 {
@@ -124,19 +138,24 @@ SceneLight lightInWorldSpace(
   {
     return light;
   }
-  // Camera frame: the camera looks along -back; VTK's camera-light space puts
-  // the camera at (0,0,1) and the focal point at the origin, one unit apart.
-  const glm::vec3 toEye = eye - focalPoint;
-  const float distance = glm::length(toEye);
-  const glm::vec3 back = glsl::slSafeNormalize(toEye);
-  const glm::vec3 right = glsl::slSafeNormalize(glm::cross(viewUp, back));
-  const glm::vec3 up = glm::cross(back, right);
-  const glm::mat3 rotation(right, up, back);
-
+  const glm::mat3 rotation = cameraFrame(eye, focalPoint, viewUp);
   SceneLight out = light;
   out.space = LightSpace::World;
-  out.position = focalPoint + distance * (rotation * light.position);
+  out.position = focalPoint + glm::length(eye - focalPoint) * (rotation * light.position);
   out.direction = rotation * light.direction;
+  return out;
+}
+
+SceneLight lightInCameraSpace(
+  const SceneLight& worldLight, const glm::vec3& eye, const glm::vec3& focalPoint, const glm::vec3& viewUp)
+{
+  // The frame is orthonormal, so its transpose is its inverse.
+  const glm::mat3 toCamera = glm::transpose(cameraFrame(eye, focalPoint, viewUp));
+  const float distance = glm::length(eye - focalPoint);
+  SceneLight out = worldLight;
+  out.space = LightSpace::Camera;
+  out.position = toCamera * (worldLight.position - focalPoint) / (distance > 0.0f ? distance : 1.0f);
+  out.direction = toCamera * worldLight.direction;
   return out;
 }
 

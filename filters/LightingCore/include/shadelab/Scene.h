@@ -142,6 +142,12 @@ glsl::slMaterial toEvaluationMaterial(const SceneMaterial& material);
 SceneLight lightInWorldSpace(
   const SceneLight& light, const glm::vec3& eye, const glm::vec3& focalPoint, const glm::vec3& viewUp);
 
+/// The inverse of lightInWorldSpace(): @p worldLight's position and direction
+/// expressed in the camera space of the given camera, with space = Camera.
+/// Editors use it to move a camera light with a widget drawn in world space.
+SceneLight lightInCameraSpace(
+  const SceneLight& worldLight, const glm::vec3& eye, const glm::vec3& focalPoint, const glm::vec3& viewUp);
+
 } // namespace shadelab
 
 #endif

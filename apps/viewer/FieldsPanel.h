@@ -1,0 +1,81 @@
+#ifndef shadelab_viewer_FieldsPanel_h
+#define shadelab_viewer_FieldsPanel_h
+/**
+ * @class   FieldsPanel
+ * @brief   Shows a lighting field on the mesh, colour-mapped with a scalar
+ *          bar: N.L (clamped or raw), the diffuse, specular or total
+ *          radiance, and the Monte Carlo reference with its error against
+ *          the discrete lights and its standard error.
+ *
+ * Fields come from slCosineField, slRadianceFilter and slRadianceReference on
+ * the view's mesh and normals, with the view's camera as the eye, and are
+ * recomputed when the scene changes. The reference runs as a ReferenceJob:
+ * a progress bar, a cancel button, and a note when the scene has changed
+ * since it was computed.
+ */
+
+#include <vtkSmartPointer.h>
+
+#include <QWidget>
+
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QProgressBar;
+class QPushButton;
+class QSpinBox;
+class vtkPolyData;
+
+namespace shadelab
+{
+namespace viewer
+{
+class ReferenceJob;
+class SceneView;
+class ViewerDocument;
+
+class FieldsPanel : public QWidget
+{
+  Q_OBJECT
+public:
+  FieldsPanel(ViewerDocument* document, SceneView* view, QWidget* parent = nullptr);
+  ~FieldsPanel() override;
+
+  /// The field chooser; index 0 is "none" (the lit view).
+  QComboBox* fieldBox() const { return this->Field; }
+  QSpinBox* samplesBox() const { return this->Samples; }
+  QPushButton* computeButton() const { return this->Compute; }
+  QPushButton* cancelButton() const { return this->Cancel; }
+  QProgressBar* progressBar() const { return this->Progress; }
+  ReferenceJob* job() const { return this->Job; }
+  /// The last reference output, or null.
+  vtkPolyData* reference() const;
+
+signals:
+  void problem(const QString& message);
+
+private:
+  void showField();
+  void startReference();
+  void referenceFinished(const QString& error);
+
+  ViewerDocument* Document;
+  SceneView* View;
+  QComboBox* Field;
+  QSpinBox* Light;
+  QSpinBox* Samples;
+  QComboBox* Strategy;
+  QLineEdit* Environment;
+  QPushButton* Compute;
+  QPushButton* Cancel;
+  QProgressBar* Progress;
+  QLabel* Status;
+  ReferenceJob* Job;
+  vtkSmartPointer<vtkPolyData> Reference;
+  bool ReferenceStale = false;
+};
+
+} // namespace viewer
+} // namespace shadelab
+
+#endif

@@ -1,0 +1,248 @@
+#include "MainWindow.h"
+
+#include "BrdfPanel.h"
+#include "FieldsPanel.h"
+#include "LightPanel.h"
+#include "MaterialPanel.h"
+#include "NormalsPanel.h"
+#include "SceneView.h"
+#include "ShadingPanel.h"
+#include "ViewerDocument.h"
+
+#include "slImageWriter.h"
+#include "slMeshReader.h"
+
+#include <vtkImageData.h>
+#include <vtkNew.h>
+
+#include <QDockWidget>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QScrollArea>
+#include <QStatusBar>
+#include <QUrl>
+
+namespace shadelab
+{
+namespace viewer
+{
+
+namespace
+{
+bool isScene(const QString& path)
+{
+  return QFileInfo(path).suffix().compare("json", Qt::CaseInsensitive) == 0;
+}
+
+QString meshFilter()
+{
+  QStringList patterns;
+  for (const QString& ext : QString(slMeshReader::GetSupportedExtensions()).split(' ', Qt::SkipEmptyParts))
+  {
+    patterns << "*" + ext;
+  }
+  return QObject::tr("Meshes (%1);;Scenes (*.json);;All files (*)").arg(patterns.join(' '));
+}
+
+bool fail(const QString& message, QString* error)
+{
+  if (error)
+  {
+    *error = message;
+  }
+  return false;
+}
+} // namespace
+
+MainWindow::MainWindow(QWidget* parent)
+  : QMainWindow(parent)
+  , Document(new ViewerDocument(this))
+  , View(new SceneView(this->Document, this))
+{
+  this->setCentralWidget(this->View);
+  this->Shading = new ShadingPanel(this->Document, this->View);
+  this->Material = new MaterialPanel(this->Document);
+  this->Lights = new LightPanel(this->Document, this->View);
+  this->Normals = new NormalsPanel(this->Document, this->View);
+  this->Fields = new FieldsPanel(this->Document, this->View);
+  this->Brdf = new BrdfPanel(this->Document, this->View);
+
+  const std::pair<QString, QWidget*> panels[] = { { tr("Shading"), this->Shading },
+    { tr("Material"), this->Material }, { tr("Lights"), this->Lights }, { tr("Normals"), this->Normals },
+    { tr("Fields"), this->Fields }, { tr("BRDF"), this->Brdf } };
+  QDockWidget* previous = nullptr;
+  for (const auto& panel : panels)
+  {
+    auto* scroll = new QScrollArea;
+    scroll->setWidget(panel.second);
+    scroll->setWidgetResizable(true);
+    auto* dock = new QDockWidget(panel.first, this);
+    dock->setObjectName(panel.first);
+    dock->setWidget(scroll);
+    this->addDockWidget(Qt::RightDockWidgetArea, dock);
+    if (previous)
+    {
+      this->tabifyDockWidget(previous, dock);
+    }
+    previous = dock;
+  }
+  this->findChildren<QDockWidget*>().first()->raise();
+
+  connect(this->View, &SceneView::problem, this, &MainWindow::showProblem);
+  connect(this->Fields, &FieldsPanel::problem, this, &MainWindow::showProblem);
+  connect(this->Brdf, &BrdfPanel::problem, this, &MainWindow::showProblem);
+  connect(this->Document, &ViewerDocument::meshChanged, this, &MainWindow::updateTitle);
+  connect(this->Document, &ViewerDocument::sceneChanged, this, &MainWindow::updateTitle);
+  this->setAcceptDrops(true);
+  this->buildMenus();
+  this->updateTitle();
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::buildMenus()
+{
+  QMenu* file = this->menuBar()->addMenu(tr("&File"));
+  file->addAction(tr("&Open mesh or scene..."), this, [this] {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open"), QString(), meshFilter());
+    if (!path.isEmpty())
+    {
+      this->openFile(path);
+    }
+  }, QKeySequence::Open);
+  file->addAction(tr("&Save scene as..."), this, [this] {
+    const QString path =
+      QFileDialog::getSaveFileName(this, tr("Save scene"), this->Document->scenePath(), tr("Scenes (*.json)"));
+    if (!path.isEmpty())
+    {
+      this->saveScene(path);
+    }
+  }, QKeySequence::SaveAs);
+  file->addAction(tr("Save s&creenshot..."), this, [this] {
+    const QString path = QFileDialog::getSaveFileName(
+      this, tr("Save screenshot"), QString(), tr("PNG (*.png);;OpenEXR (*.exr);;Other formats (*)"));
+    if (!path.isEmpty())
+    {
+      this->saveScreenshot(path);
+    }
+  }, QKeySequence(tr("Ctrl+P")));
+  file->addSeparator();
+  file->addAction(tr("&Quit"), this, &QWidget::close, QKeySequence::Quit);
+}
+
+bool MainWindow::openFile(const QString& path, QString* error)
+{
+  QString problem;
+  const bool ok = isScene(path) ? this->Document->openScene(path, problem) : this->Document->openMesh(path, problem);
+  if (!ok)
+  {
+    this->showProblem(problem);
+    return fail(problem, error);
+  }
+  this->statusBar()->showMessage(tr("Opened %1").arg(path), 5000);
+  return true;
+}
+
+bool MainWindow::saveScene(const QString& path, QString* error)
+{
+  this->Document->recordCamera(this->View->camera());
+  QString problem;
+  if (!this->Document->saveScene(path, problem))
+  {
+    this->showProblem(problem);
+    return fail(problem, error);
+  }
+  this->statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
+  return true;
+}
+
+bool MainWindow::saveScreenshot(const QString& path, QString* error)
+{
+  vtkSmartPointer<vtkImageData> image = this->View->grabImage();
+  vtkNew<slImageWriter> writer;
+  const QByteArray file = path.toLocal8Bit();
+  writer->SetFileName(file.constData());
+  writer->SetInputData(image);
+  writer->Write();
+  if (*writer->GetErrorMessage())
+  {
+    const QString problem = QString::fromUtf8(writer->GetErrorMessage());
+    this->showProblem(problem);
+    return fail(problem, error);
+  }
+  this->statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
+  return true;
+}
+
+void MainWindow::setViewSize(int width, int height)
+{
+  // The central widget gets exactly this size: the window grows around it.
+  const QSize extra = this->size() - this->View->size();
+  this->View->setMinimumSize(width, height);
+  this->View->setMaximumSize(width, height);
+  this->resize(extra + QSize(width, height));
+}
+
+bool MainWindow::raisePanel(const QString& name)
+{
+  for (QDockWidget* dock : this->findChildren<QDockWidget*>())
+  {
+    if (dock->windowTitle().compare(name, Qt::CaseInsensitive) == 0)
+    {
+      dock->raise();
+      return true;
+    }
+  }
+  return false;
+}
+
+void MainWindow::showProblem(const QString& message)
+{
+  this->statusBar()->showMessage(message);
+  if (!this->Quiet)
+  {
+    QMessageBox::warning(this, tr("ShadeLab"), message);
+  }
+}
+
+void MainWindow::updateTitle()
+{
+  const QString mesh = this->Document->meshPath().isEmpty() ? tr("no mesh") : QFileInfo(this->Document->meshPath()).fileName();
+  const QString scene =
+    this->Document->scenePath().isEmpty() ? tr("default scene") : QFileInfo(this->Document->scenePath()).fileName();
+  this->setWindowTitle(tr("ShadeLab viewer - %1 - %2").arg(mesh, scene));
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event)
+{
+  if (event->mimeData()->hasUrls())
+  {
+    event->acceptProposedAction();
+  }
+}
+
+void MainWindow::dropEvent(QDropEvent* event)
+{
+  // Scenes first, so a dropped mesh and scene show together whatever the order.
+  QStringList scenes, meshes;
+  for (const QUrl& url : event->mimeData()->urls())
+  {
+    if (url.isLocalFile())
+    {
+      (isScene(url.toLocalFile()) ? scenes : meshes) << url.toLocalFile();
+    }
+  }
+  for (const QString& path : scenes + meshes)
+  {
+    this->openFile(path);
+  }
+  event->acceptProposedAction();
+}
+
+} // namespace viewer
+} // namespace shadelab

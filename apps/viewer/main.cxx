@@ -1,0 +1,117 @@
+// shadelab-viewer [MESH] [--scene S.json] [--screenshot OUT] [--window-screenshot OUT]
+#include "MainWindow.h"
+#include "SceneView.h"
+#include "ShadingPanel.h"
+#include "ViewerDocument.h"
+
+#include "slOffscreen.h"
+#include "slScene.h"
+
+#include <QApplication>
+#include <QCheckBox>
+#include <QCommandLineParser>
+#include <QFileInfo>
+#include <QSurfaceFormat>
+#include <QTimer>
+#include <QVTKOpenGLNativeWidget.h>
+
+#include <cstdlib>
+#include <iostream>
+
+namespace
+{
+/// The bundled example, opened when no mesh is given.
+const char* const kDefaultMesh = SHADELAB_DATA_DIR "/meshes/spot.obj";
+const char* const kDefaultScene = SHADELAB_DATA_DIR "/scenes/default.json";
+
+int fail(const QString& message)
+{
+  std::cerr << "shadelab-viewer: " << message.toStdString() << "\n";
+  return 1;
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+  const std::string display = slDisplayProblem();
+  if (!display.empty() && !std::getenv("QT_QPA_PLATFORM") && !std::getenv("WAYLAND_DISPLAY"))
+  {
+    return fail(QString::fromStdString(display));
+  }
+  // Multisampling off, as in `shadelab render`: the same scene, the same pixels.
+  QSurfaceFormat format = QVTKOpenGLNativeWidget::defaultFormat();
+  format.setSamples(0);
+  QSurfaceFormat::setDefaultFormat(format);
+  QApplication app(argc, argv);
+  QApplication::setApplicationName("shadelab-viewer");
+  QApplication::setApplicationVersion(SHADELAB_VERSION);
+
+  QCommandLineParser parser;
+  parser.setApplicationDescription("ShadeLab's interactive viewer: the lighting equation term by term, live.");
+  parser.addHelpOption();
+  parser.addVersionOption();
+  parser.addPositionalArgument("mesh", "mesh to open (OBJ, PLY, STL, VTP, VTK, OFF, glTF); default: the bundled Spot");
+  const QCommandLineOption sceneOption(
+    QStringList{ "s", "scene" }, "JSON scene to open (default: the bundled default scene)", "FILE");
+  const QCommandLineOption shotOption(
+    "screenshot", "render the view at the scene's image size, write it (PNG, EXR, ...) and quit", "FILE");
+  const QCommandLineOption windowShotOption(
+    "window-screenshot", "write a picture of the whole window, panels included, and quit", "FILE");
+  const QCommandLineOption panelOption(
+    "panel", "raise a panel: Shading, Material, Lights, Normals, Fields or BRDF", "NAME");
+  const QCommandLineOption splitOption("split", "start in the split view flat | Gouraud | Phong");
+  parser.addOptions({ sceneOption, shotOption, windowShotOption, panelOption, splitOption });
+  parser.process(app);
+
+  shadelab::viewer::MainWindow window;
+  const bool scripted = parser.isSet(shotOption) || parser.isSet(windowShotOption);
+  window.setQuiet(scripted);
+  const QStringList positional = parser.positionalArguments();
+  if (positional.size() > 1)
+  {
+    return fail("give at most one mesh (got " + QString::number(positional.size()) + ")");
+  }
+  const bool defaults = positional.isEmpty() && !parser.isSet(sceneOption);
+  const QString scene = parser.isSet(sceneOption) ? parser.value(sceneOption) : (defaults ? kDefaultScene : "");
+  const QString mesh = positional.isEmpty() ? kDefaultMesh : positional.first();
+  QString error;
+  if ((!scene.isEmpty() && !window.openFile(scene, &error)) || !window.openFile(mesh, &error))
+  {
+    if (scripted)
+    {
+      return fail(error);
+    }
+  }
+  const shadelab::Scene& s = window.document()->scene();
+  window.show();
+  window.setViewSize(s.width, s.height);
+  if (parser.isSet(panelOption) && !window.raisePanel(parser.value(panelOption)))
+  {
+    return fail("--panel: no panel named \"" + parser.value(panelOption) + "\"");
+  }
+  if (parser.isSet(splitOption))
+  {
+    window.shadingPanel()->splitBox()->setChecked(true);
+  }
+  if (!scripted)
+  {
+    return QApplication::exec();
+  }
+  // Scripted: let the window reach its size, then write and quit.
+  int status = 0;
+  QTimer::singleShot(0, [&] {
+    window.view()->renderNow();
+    if (parser.isSet(shotOption) && !window.saveScreenshot(parser.value(shotOption), &error))
+    {
+      status = fail(error);
+    }
+    window.view()->renderNow(); // with the light widgets, which the view screenshot leaves out
+    if (parser.isSet(windowShotOption) && !window.grab().save(parser.value(windowShotOption)))
+    {
+      status = fail(parser.value(windowShotOption) + ": cannot write the window picture");
+    }
+    QApplication::quit();
+  });
+  QApplication::exec();
+  return status;
+}

@@ -1,0 +1,479 @@
+// shadelab-viewer driven with QtTest under Xvfb: what the user does (open,
+// drag a slider, switch the frequency, save and load, drop a file, pick a
+// point, run the reference) and what the image must do in answer. Images are
+// compared with `shadelab render`'s own renderer (slSceneRenderer) with the
+// regression harness's metric: at most 0.2% of pixels off by more than 2/255.
+#include "BrdfPanel.h"
+#include "FieldsPanel.h"
+#include "LightPanel.h"
+#include "LightWidgets.h"
+#include "MainWindow.h"
+#include "MaterialPanel.h"
+#include "NormalsPanel.h"
+#include "ReferenceJob.h"
+#include "SceneView.h"
+#include "ShadingPanel.h"
+#include "ViewerDocument.h"
+
+#include "slImageReader.h"
+#include "slMeshReader.h"
+#include "slScene.h"
+#include "slSceneRenderer.h"
+
+#include <vtkActorCollection.h>
+#include <vtkCamera.h>
+#include <vtkImageData.h>
+#include <vtkLightRepresentation.h>
+#include <vtkLightWidget.h>
+#include <vtkNew.h>
+#include <vtkPLYWriter.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+#include <vtkSphereSource.h>
+#include <vtkActor2DCollection.h>
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFile>
+#include <QLabel>
+#include <QListWidget>
+#include <QMimeData>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QSpinBox>
+#include <QSurfaceFormat>
+#include <QTemporaryDir>
+#include <QUrl>
+#include <QVTKOpenGLNativeWidget.h>
+#include <QtTest>
+
+#include <cmath>
+
+using namespace shadelab;
+using namespace shadelab::viewer;
+
+namespace
+{
+const char* const kSpot = SHADELAB_DATA_DIR "/meshes/spot.obj";
+
+/// A small scene with every light type, camera lights among them.
+const char* const kSceneText = R"({
+  "imageSize": [320, 240],
+  "background": [0.1, 0.1, 0.12],
+  "shading": { "model": "blinn-phong", "frequency": "phong" },
+  "material": { "ambient": [0.1, 0.1, 0.1], "diffuse": [0.7, 0.6, 0.5], "specular": [0.6, 0.6, 0.6], "shininess": 16 },
+  "camera": { "azimuth": 140, "elevation": 12 },
+  "lights": [
+    { "name": "key", "type": "directional", "space": "camera", "direction": [0.5, -0.5, -1] },
+    { "name": "rim", "type": "spot", "space": "camera", "position": [0, 0.9, -0.8], "direction": [0, -0.9, 0.8],
+      "cutoff": 35, "edge": 5 },
+    { "name": "bulb", "type": "point", "position": [1, 1, 1], "diffuse": [0.4, 0.4, 0.4] },
+    { "name": "sky", "type": "ambient", "ambient": [0.1, 0.1, 0.1] }
+  ]
+})";
+
+struct Rgb
+{
+  int width = 0;
+  int height = 0;
+  std::vector<unsigned char> pixels;
+};
+
+Rgb toRgb(vtkImageData* image)
+{
+  Rgb out;
+  int dims[3];
+  image->GetDimensions(dims);
+  out.width = dims[0];
+  out.height = dims[1];
+  const auto* p = static_cast<const unsigned char*>(image->GetScalarPointer());
+  out.pixels.assign(p, p + 3 * static_cast<size_t>(dims[0]) * dims[1]);
+  return out;
+}
+
+/// Fraction of pixels whose largest channel difference exceeds @p tolerance (of 255).
+double fractionDiffering(const Rgb& a, const Rgb& b, int tolerance = 2)
+{
+  if (a.width != b.width || a.height != b.height)
+  {
+    return 1.0;
+  }
+  size_t differing = 0;
+  for (size_t i = 0; i < a.pixels.size(); i += 3)
+  {
+    int worst = 0;
+    for (int c = 0; c < 3; ++c)
+    {
+      worst = std::max(worst, std::abs(int(a.pixels[i + c]) - int(b.pixels[i + c])));
+    }
+    differing += worst > tolerance ? 1 : 0;
+  }
+  return static_cast<double>(differing) / (a.pixels.size() / 3);
+}
+
+/// What `shadelab render` draws for @p scene on spot.obj.
+Rgb renderOffscreen(const Scene& scene)
+{
+  vtkNew<slMeshReader> reader;
+  reader->SetFileName(kSpot);
+  reader->Update();
+  vtkNew<slScene> sceneObject;
+  sceneObject->SetScene(scene);
+  vtkNew<slSceneRenderer> renderer;
+  renderer->SetScene(sceneObject);
+  renderer->SetMesh(reader->GetOutput());
+  if (!renderer->Render())
+  {
+    qFatal("offscreen render failed: %s", renderer->GetErrorMessage());
+  }
+  return toRgb(renderer->GetImage());
+}
+
+vtkActor2D* findScalarBar(vtkRenderer* renderer)
+{
+  vtkActor2DCollection* actors = renderer->GetActors2D();
+  actors->InitTraversal();
+  while (vtkActor2D* actor = actors->GetNextActor2D())
+  {
+    if (vtkScalarBarActor::SafeDownCast(actor))
+    {
+      return actor;
+    }
+  }
+  return nullptr;
+}
+} // namespace
+
+class ViewerTest : public QObject
+{
+  Q_OBJECT
+
+private:
+  QTemporaryDir Folder;
+  std::unique_ptr<MainWindow> Window;
+
+  QString path(const QString& name) const { return this->Folder.filePath(name); }
+  Rgb grab() { return toRgb(this->Window->view()->grabImage()); }
+
+private slots:
+  void init()
+  {
+    QVERIFY(this->Folder.isValid());
+    QFile file(this->path("scene.json"));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(kSceneText);
+    file.close();
+    this->Window.reset(new MainWindow);
+    this->Window->setQuiet(true);
+    QString error;
+    QVERIFY2(this->Window->openFile(this->path("scene.json"), &error), qPrintable(error));
+    QVERIFY2(this->Window->openFile(kSpot, &error), qPrintable(error));
+    this->Window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(this->Window.get()));
+    this->Window->setViewSize(320, 240);
+    QTRY_COMPARE(this->Window->view()->size(), QSize(320, 240));
+    QTest::qWait(50);
+  }
+
+  void cleanup() { this->Window.reset(); }
+
+  void sameImageAsShadelabRender()
+  {
+    const Rgb view = this->grab();
+    QCOMPARE(view.width, 320);
+    QCOMPARE(view.height, 240);
+    const Rgb offscreen = renderOffscreen(this->Window->document()->scene());
+    QVERIFY2(fractionDiffering(view, offscreen) <= 0.002,
+      qPrintable(QString("%1 of pixels differ").arg(fractionDiffering(view, offscreen))));
+  }
+
+  void shininessSliderChangesTheHighlight()
+  {
+    const Rgb before = this->grab();
+    QSlider* slider = this->Window->materialPanel()->shininessSlider();
+    slider->setValue(MaterialPanel::sliderAt(256.0));
+    const float n = this->Window->document()->scene().material.shininess;
+    QVERIFY(std::abs(n - 256.0f) / 256.0f < 0.01f);
+    const Rgb after = this->grab();
+    // The highlights shrink: the image changes, and exactly as `shadelab render` shows n = 256.
+    QVERIFY(fractionDiffering(before, after) > 0.005);
+    QVERIFY(fractionDiffering(after, renderOffscreen(this->Window->document()->scene())) <= 0.002);
+  }
+
+  void frequencySwitchMatchesRender()
+  {
+    const Rgb phong = this->grab();
+    this->Window->shadingPanel()->frequencyBox()->setCurrentText("flat");
+    QCOMPARE(this->Window->document()->scene().frequency, ShadingFrequency::Flat);
+    const Rgb flat = this->grab();
+    QVERIFY(fractionDiffering(phong, flat) > 0.05);
+    QVERIFY(fractionDiffering(flat, renderOffscreen(this->Window->document()->scene())) <= 0.002);
+    this->Window->shadingPanel()->frequencyBox()->setCurrentText("gouraud");
+    const Rgb gouraud = this->grab();
+    QVERIFY(fractionDiffering(gouraud, flat) > 0.05);
+    QVERIFY(fractionDiffering(gouraud, renderOffscreen(this->Window->document()->scene())) <= 0.002);
+  }
+
+  void savedSceneLoadsBackUnchanged()
+  {
+    // Move the camera and change the material first, so that the file has to carry them.
+    this->Window->view()->camera()->Azimuth(35.0);
+    this->Window->view()->camera()->Elevation(-10.0);
+    this->Window->materialPanel()->shininessSlider()->setValue(MaterialPanel::sliderAt(90.0));
+    const Rgb before = this->grab();
+    QString error;
+    QVERIFY2(this->Window->saveScene(this->path("saved.json"), &error), qPrintable(error));
+    const std::string text = this->Window->document()->vtkScene()->ToJSON();
+
+    QVERIFY(this->Window->openFile(this->path("scene.json"), &error)); // something else in between
+    QVERIFY(fractionDiffering(before, this->grab()) > 0.01);
+    QVERIFY2(this->Window->openFile(this->path("saved.json"), &error), qPrintable(error));
+    QCOMPARE(this->Window->document()->vtkScene()->ToJSON(), text);
+    const double differing = fractionDiffering(before, this->grab());
+    QVERIFY2(differing <= 0.002, qPrintable(QString("%1 of pixels differ").arg(differing)));
+  }
+
+  void droppedMeshOpens()
+  {
+    vtkNew<vtkSphereSource> sphere;
+    sphere->SetThetaResolution(24);
+    sphere->SetPhiResolution(12);
+    vtkNew<vtkPLYWriter> writer;
+    writer->SetInputConnection(sphere->GetOutputPort());
+    const QByteArray file = this->path("ball.ply").toLocal8Bit();
+    writer->SetFileName(file.constData());
+    QVERIFY(writer->Write());
+    const Rgb before = this->grab();
+
+    QMimeData data;
+    data.setUrls({ QUrl::fromLocalFile(this->path("ball.ply")) });
+    QDragEnterEvent enter(QPoint(10, 10), Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(this->Window.get(), &enter);
+    QVERIFY(enter.isAccepted());
+    QDropEvent drop(QPointF(10, 10), Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(this->Window.get(), &drop);
+    QCOMPARE(this->Window->document()->meshPath(), this->path("ball.ply"));
+    QCOMPARE(this->Window->document()->mesh()->GetNumberOfPolys(), sphere->GetOutput()->GetNumberOfPolys());
+    QVERIFY(fractionDiffering(before, this->grab()) > 0.05);
+  }
+
+  void badMeshKeepsTheCurrentOne()
+  {
+    QFile file(this->path("broken.off"));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 9\n");
+    file.close();
+    vtkPolyData* before = this->Window->document()->mesh();
+    QString error;
+    QVERIFY(!this->Window->openFile(this->path("broken.off"), &error));
+    QCOMPARE(error, this->path("broken.off") + ": line 6: vertex index 9 is out of range [0, 3)");
+    QCOMPARE(this->Window->document()->mesh(), before);
+    QVERIFY(!this->Window->openFile(this->path("missing.json"), &error));
+    QVERIFY2(error.startsWith(this->path("missing.json") + ": "), qPrintable(error));
+  }
+
+  void glTFOpens()
+  {
+    // A single triangle, positions and indices in a .bin beside the .gltf.
+    const float positions[9] = { 0, 0, 0, 1, 0, 0, 0, 1, 0 };
+    const unsigned short indices[4] = { 0, 1, 2, 0 };
+    QFile bin(this->path("tri.bin"));
+    QVERIFY(bin.open(QIODevice::WriteOnly));
+    bin.write(reinterpret_cast<const char*>(positions), sizeof positions);
+    bin.write(reinterpret_cast<const char*>(indices), sizeof indices);
+    bin.close();
+    QFile gltf(this->path("tri.gltf"));
+    QVERIFY(gltf.open(QIODevice::WriteOnly));
+    gltf.write(R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+      "buffers": [{"uri": "tri.bin", "byteLength": 44}],
+      "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
+      "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0,0,0], "max": [1,1,0]},
+                    {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}]})");
+    gltf.close();
+    QString error;
+    QVERIFY2(this->Window->openFile(this->path("tri.gltf"), &error), qPrintable(error));
+    QCOMPARE(this->Window->document()->mesh()->GetNumberOfPolys(), vtkIdType(1));
+  }
+
+  void fieldsPanelShowsCosTheta()
+  {
+    const Rgb lit = this->grab();
+    this->Window->fieldsPanel()->fieldBox()->setCurrentIndex(1); // CosTheta
+    SceneView* view = this->Window->view();
+    QCOMPARE(view->mode(), SceneView::FieldMode);
+    QCOMPARE(view->fieldName(), QString("CosTheta"));
+    QVERIFY(findScalarBar(view->renderers().front()) != nullptr);
+    const Rgb field = this->grab();
+    QVERIFY(fractionDiffering(lit, field) > 0.05);
+    // The field follows the lights: turning the key light changes it.
+    Scene scene = this->Window->document()->scene();
+    scene.lights[0].direction = glm::vec3(-0.5f, 0.5f, -1.0f);
+    this->Window->document()->setScene(scene, LightsChange);
+    QVERIFY(fractionDiffering(field, this->grab()) > 0.02);
+    this->Window->fieldsPanel()->fieldBox()->setCurrentIndex(0);
+    QCOMPARE(view->mode(), SceneView::LitMode);
+  }
+
+  void splitViewShowsThreeFrequencies()
+  {
+    this->Window->shadingPanel()->splitBox()->setChecked(true);
+    SceneView* view = this->Window->view();
+    QCOMPARE(view->mode(), SceneView::SplitMode);
+    QCOMPARE(static_cast<int>(view->renderers().size()), 3);
+    for (auto& renderer : view->renderers()) // linked cameras: one camera for all
+    {
+      QCOMPARE(renderer->GetActiveCamera(), view->camera());
+    }
+    const Rgb image = this->grab();
+    // The flat third and the Phong third differ (same camera, other frequency).
+    Rgb left, right;
+    left.width = right.width = image.width / 3;
+    left.height = right.height = image.height;
+    for (int y = 0; y < image.height; ++y)
+    {
+      const auto row = image.pixels.begin() + 3 * static_cast<size_t>(y) * image.width;
+      left.pixels.insert(left.pixels.end(), row, row + 3 * left.width);
+      right.pixels.insert(right.pixels.end(), row + 3 * 2 * left.width, row + 3 * 3 * left.width);
+    }
+    QVERIFY(fractionDiffering(left, right) > 0.02);
+    this->Window->shadingPanel()->splitBox()->setChecked(false);
+    QCOMPARE(static_cast<int>(view->renderers().size()), 1);
+  }
+
+  void lightWidgetMovesCameraLight()
+  {
+    LightWidgets* widgets = this->Window->view()->lightWidgets();
+    QCOMPARE(widgets->count(), 3); // ambient lights have none
+    // Drag the spot (camera light 1) to a new world position by hand.
+    vtkCamera* camera = this->Window->view()->camera();
+    const glm::vec3 eye(camera->GetPosition()[0], camera->GetPosition()[1], camera->GetPosition()[2]);
+    const glm::vec3 focal(camera->GetFocalPoint()[0], camera->GetFocalPoint()[1], camera->GetFocalPoint()[2]);
+    const glm::vec3 up(camera->GetViewUp()[0], camera->GetViewUp()[1], camera->GetViewUp()[2]);
+    double target[3] = { 0.3, 1.5, 0.2 };
+    vtkLightWidget* widget = nullptr;
+    for (int i = 0; i < widgets->count(); ++i)
+    {
+      widget = widgets->lightOf(i) == 1 ? widgets->widget(i) : widget;
+    }
+    QVERIFY(widget != nullptr);
+    const Rgb before = this->grab();
+    widget->GetLightRepresentation()->SetLightPosition(target);
+    widget->InvokeEvent(vtkCommand::InteractionEvent, nullptr);
+    const SceneLight moved = this->Window->document()->scene().lights[1];
+    QCOMPARE(moved.space, LightSpace::Camera); // still follows the camera
+    const SceneLight world = lightInWorldSpace(moved, eye, focal, up);
+    for (int i = 0; i < 3; ++i)
+    {
+      QVERIFY(std::abs(world.position[i] - static_cast<float>(target[i])) < 1e-4f);
+    }
+    QVERIFY(fractionDiffering(before, this->grab()) > 0.001);
+  }
+
+  void addAndRemoveLights()
+  {
+    LightPanel* panel = this->Window->lightPanel();
+    const size_t before = this->Window->document()->scene().lights.size();
+    const Rgb image = this->grab();
+    panel->addLight("point");
+    QCOMPARE(this->Window->document()->scene().lights.size(), before + 1);
+    QCOMPARE(this->Window->view()->lightWidgets()->count(), 4);
+    QVERIFY(fractionDiffering(image, this->grab()) > 0.01);
+    QCOMPARE(panel->list()->currentRow(), static_cast<int>(before));
+    panel->removeSelectedLight();
+    QCOMPARE(this->Window->document()->scene().lights.size(), before);
+    QVERIFY(fractionDiffering(image, this->grab()) <= 0.002);
+  }
+
+  void pickedPointShowsItsLobe()
+  {
+    BrdfPanel* panel = this->Window->brdfPanel();
+    panel->pickButton()->setChecked(true);
+    SceneView* view = this->Window->view();
+    const int actorsBefore = view->renderers().front()->GetActors()->GetNumberOfItems();
+    QVERIFY(view->pickAt(160, 120)); // the middle of the view is on the cow
+    QVERIFY(panel->pickedPoint() >= 0);
+    QVERIFY(std::isfinite(panel->incidenceDegrees()));
+    QVERIFY(panel->incidenceDegrees() >= 0.0 && panel->incidenceDegrees() <= 90.0);
+    QVERIFY(view->renderers().front()->GetActors()->GetNumberOfItems() > actorsBefore); // the lobe
+    QVERIFY(!panel->pictureLabel()->pixmap(Qt::ReturnByValue).isNull());
+    QVERIFY(!view->pickAt(2, 2)); // background: nothing picked
+  }
+
+  void referenceProgressAndCancel()
+  {
+    FieldsPanel* panel = this->Window->fieldsPanel();
+    QSignalSpy finished(panel->job(), &ReferenceJob::finished);
+    QSignalSpy progress(panel->job(), &ReferenceJob::progress);
+    panel->samplesBox()->setValue(1 << 16); // minutes of work: it must be cancelled
+    panel->computeButton()->click();
+    QVERIFY(panel->job()->running());
+    QVERIFY(panel->cancelButton()->isEnabled());
+    QTRY_VERIFY_WITH_TIMEOUT(progress.count() > 0, 60000);
+    panel->cancelButton()->click();
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 60000);
+    QCOMPARE(finished.at(0).at(0).toString(), QString("cancelled"));
+    QVERIFY(panel->reference() == nullptr);
+    QVERIFY(panel->computeButton()->isEnabled());
+
+    panel->samplesBox()->setValue(4);
+    panel->computeButton()->click();
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 2, 60000);
+    QCOMPARE(finished.at(1).at(0).toString(), QString());
+    QVERIFY(panel->reference() != nullptr);
+    QVERIFY(panel->reference()->GetPointData()->GetArray("RadianceError") != nullptr);
+    QCOMPARE(panel->progressBar()->value(), 100);
+    QCOMPARE(this->Window->view()->mode(), SceneView::FieldMode); // the reference is shown
+  }
+
+  void screenshotsAsPNGAndEXR()
+  {
+    const Rgb view = this->grab();
+    QString error;
+    for (const QString& name : { QString("shot.png"), QString("shot.exr") })
+    {
+      QVERIFY2(this->Window->saveScreenshot(this->path(name), &error), qPrintable(error));
+      vtkNew<slImageReader> reader;
+      const QByteArray file = this->path(name).toLocal8Bit();
+      reader->SetFileName(file.constData());
+      reader->Update();
+      QCOMPARE(QString(reader->GetErrorMessage()), QString());
+      int dims[3];
+      reader->GetOutput()->GetDimensions(dims);
+      QCOMPARE(dims[0], view.width);
+      QCOMPARE(dims[1], view.height);
+    }
+    QVERIFY(!this->Window->saveScreenshot(this->path("no/such/folder/shot.png"), &error));
+    QVERIFY2(error.contains("no/such/folder/shot.png"), qPrintable(error));
+  }
+
+  void normalsPanelRecomputesNormals()
+  {
+    NormalsPanel* panel = this->Window->normalsPanel();
+    const Rgb angle = this->grab();
+    panel->weightingBox()->setCurrentIndex(0); // uniform
+    QCOMPARE(this->Window->document()->normals().weighting, 0);
+    const Rgb uniform = this->grab();
+    QVERIFY(fractionDiffering(angle, uniform, 1) > 0.0005); // other weights, other normals, other shading
+    const int actors = this->Window->view()->renderers().front()->GetActors()->GetNumberOfItems();
+    panel->glyphsBox()->setChecked(true);
+    QCOMPARE(this->Window->view()->renderers().front()->GetActors()->GetNumberOfItems(), actors + 1);
+    QVERIFY(fractionDiffering(uniform, this->grab()) > 0.01);
+  }
+};
+
+int main(int argc, char** argv)
+{
+  QSurfaceFormat format = QVTKOpenGLNativeWidget::defaultFormat();
+  format.setSamples(0);
+  QSurfaceFormat::setDefaultFormat(format);
+  QApplication app(argc, argv);
+  ViewerTest test;
+  return QTest::qExec(&test, argc, argv);
+}
+
+#include "ViewerTest.moc"
