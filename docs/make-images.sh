@@ -35,3 +35,8 @@ run render "$spot" --scene data/scenes/glow.json -o "$out/tutorial-glow.png"
 run render "$spot" --scene data/scenes/glow.json --component emission -o "$out/tutorial-glow-emission.png"
 rm -rf "$tmp"
 echo "field and comparison images written to $out/"
+# The Qt viewer: its whole window, panels included (light widgets show in the view).
+viewer() { bash scripts/with-display.sh build/bin/shadelab-viewer "$@" > /dev/null 2>&1; }
+viewer "$spot" --scene "$scene" --panel Lights --window-screenshot "$out/viewer-lights.png"
+viewer "$spot" --scene "$scene" --panel Material --split --window-screenshot "$out/viewer-split.png"
+echo "viewer pictures written to $out/"

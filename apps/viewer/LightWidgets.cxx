@@ -169,7 +169,7 @@ void LightWidgets::sync()
     glm::vec3 position = world.position, aim = centre;
     if (world.type == LightType::Directional)
     {
-      position = centre - d * static_cast<float>(0.75 * this->Size);
+      position = centre - d * static_cast<float>(0.45 * this->Size);
     }
     else if (world.type == LightType::Spot)
     {

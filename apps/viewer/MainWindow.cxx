@@ -81,6 +81,7 @@ MainWindow::MainWindow(QWidget* parent)
     auto* scroll = new QScrollArea;
     scroll->setWidget(panel.second);
     scroll->setWidgetResizable(true);
+    scroll->setMinimumWidth(panel.second->sizeHint().width() + 24); // no horizontal scrolling
     auto* dock = new QDockWidget(panel.first, this);
     dock->setObjectName(panel.first);
     dock->setWidget(scroll);

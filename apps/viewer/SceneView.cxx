@@ -108,8 +108,16 @@ void SceneView::setMode(Mode mode)
     this->report("no field computed yet: choose one in the fields panel");
     return;
   }
+  const bool refit = (mode == SplitMode) != (this->CurrentMode == SplitMode);
   this->CurrentMode = mode;
   this->rebuild(true);
+  if (refit && this->Document->mesh())
+  {
+    // Thirds of the window are narrower than the whole: fit the mesh again
+    // (same direction), and again when going back to one panel.
+    this->Renderers.front()->ResetCamera();
+    this->renderNow();
+  }
 }
 
 void SceneView::setField(vtkPolyData* mesh, const QString& arrayName)
