@@ -53,8 +53,10 @@ namespace detail
 template <typename T>
 struct SplitScratch
 {
-  std::vector<int64_t> face, prev, next, orig;
+  std::vector<int64_t> prev, next, orig;
+  std::vector<glm::vec<3, T>> normal; ///< unit normal of each corner's polygon
   std::vector<int> parent;
+  std::vector<std::pair<int64_t, int>> ends; ///< (other point, corner) per edge end, by point
   std::vector<int> group; ///< per corner, 0..numGroups-1
   std::vector<int> slot;  ///< per corner, 0..numSlots-1
   std::vector<std::pair<int64_t, int>> slots; ///< (original id, group) per slot
@@ -86,48 +88,63 @@ int groupCorners(const Polygons<Id>& polys, const Id* original, const T* unit, c
 {
   const int32_t b = vc.offsets[static_cast<size_t>(v)];
   const int k = vc.offsets[static_cast<size_t>(v) + 1] - b;
-  s.face.resize(k);
   s.prev.resize(k);
   s.next.resize(k);
   s.orig.resize(k);
   s.parent.resize(k);
   s.group.resize(k);
   s.slot.resize(k);
+  s.normal.resize(k);
   for (int i = 0; i < k; ++i)
   {
     const int64_t c = vc.corners[static_cast<size_t>(b + i)];
-    const int64_t f = vc.faceOf(c);
-    s.face[i] = f;
-    s.next[i] = polys.connectivity[c + 1 == polys.end(f) ? polys.begin(f) : c + 1];
-    s.prev[i] = polys.connectivity[c == polys.begin(f) ? polys.end(f) - 1 : c - 1];
+    const typename VertexCorners<Id>::Around a = vc.around(polys, c);
+    s.next[i] = polys.connectivity[a.next];
+    s.prev[i] = polys.connectivity[a.prev];
     s.orig[i] = original ? static_cast<int64_t>(original[c]) : v;
     s.parent[i] = i;
+    s.normal[i] = glm::vec<3, T>(unit[3 * a.face], unit[3 * a.face + 1], unit[3 * a.face + 2]);
   }
   // Join corners i, j across each edge (v, w) that exactly these two share.
-  for (int i = 0; i < k; ++i)
+  // The 2k (w, corner) ends of the edges at v, sorted by w (insertion sort:
+  // k is small), put each edge's corners side by side, which costs far less
+  // than comparing every corner's edges with every other corner's.
+  s.ends.resize(static_cast<size_t>(2 * k));
+  for (int e = 0; e < 2 * k; ++e)
   {
-    for (const int64_t w : { s.next[i], s.prev[i] })
+    std::pair<int64_t, int> end(e % 2 ? s.prev[e / 2] : s.next[e / 2], e / 2);
+    int at = e;
+    for (; at > 0 && s.ends[static_cast<size_t>(at - 1)].first > end.first; --at)
     {
-      int count = 0, other = -1;
-      for (int j = 0; j < k; ++j)
+      s.ends[static_cast<size_t>(at)] = s.ends[static_cast<size_t>(at - 1)];
+    }
+    s.ends[static_cast<size_t>(at)] = end;
+  }
+  for (int r = 0; r < 2 * k;)
+  {
+    const int64_t w = s.ends[static_cast<size_t>(r)].first;
+    const int i = s.ends[static_cast<size_t>(r)].second;
+    int other = -1;
+    bool manifold = true; // exactly two corners on the edge
+    for (; r < 2 * k && s.ends[static_cast<size_t>(r)].first == w; ++r)
+    {
+      const int j = s.ends[static_cast<size_t>(r)].second;
+      if (j != i && j != other)
       {
-        if (j != i && (s.next[j] == w || s.prev[j] == w))
-        {
-          ++count;
-          other = j;
-        }
+        manifold = manifold && other < 0;
+        other = j;
       }
-      if (count != 1 || other < i)
-      {
-        continue; // boundary, non-manifold, or already seen from the other side
-      }
-      const glm::vec<3, T> ni(unit[3 * s.face[i]], unit[3 * s.face[i] + 1], unit[3 * s.face[i] + 2]);
-      const glm::vec<3, T> nj(unit[3 * s.face[other]], unit[3 * s.face[other] + 1], unit[3 * s.face[other] + 2]);
-      // A degenerate polygon (zero normal) joins any neighbour.
-      if (glm::dot(ni, ni) == T(0) || glm::dot(nj, nj) == T(0) || glm::dot(ni, nj) >= cosFeature)
-      {
-        s.parent[s.find(i)] = s.find(other);
-      }
+    }
+    if (!manifold || other < 0)
+    {
+      continue; // non-manifold or boundary edge
+    }
+    const glm::vec<3, T>& ni = s.normal[i];
+    const glm::vec<3, T>& nj = s.normal[other];
+    // A degenerate polygon (zero normal) joins any neighbour.
+    if (glm::dot(ni, ni) == T(0) || glm::dot(nj, nj) == T(0) || glm::dot(ni, nj) >= cosFeature)
+    {
+      s.parent[s.find(i)] = s.find(other);
     }
   }
   // Compact groups in order of first corner, then (original, group) slots.
@@ -263,10 +280,8 @@ int64_t splitVertexNormals(const Polygons<Id>& topology, const Id* original, con
         const int64_t f = vc.faceOf(c);
         T len;
         const V u = detail::unitOf(newellVector(topology, xyz, f), len);
-        const int64_t next = topology.connectivity[c + 1 == topology.end(f) ? topology.begin(f) : c + 1];
-        const int64_t prev = topology.connectivity[c == topology.begin(f) ? topology.end(f) - 1 : c - 1];
         s.sums[static_cast<size_t>(s.group[i])] +=
-          cornerContribution(weighting, point(xyz, prev), p, point(xyz, next), u, len);
+          cornerContribution(weighting, point(xyz, s.prev[i]), p, point(xyz, s.next[i]), u, len);
       }
       for (int i = 0; i < k; ++i)
       {

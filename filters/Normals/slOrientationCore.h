@@ -112,7 +112,7 @@ bool hasInconsistentEdge(const Polygons<Id>& polys, const VertexCorners<Id>& vc,
       for (int32_t i = vc.offsets[static_cast<size_t>(v)]; i < vc.offsets[static_cast<size_t>(v) + 1]; ++i)
       {
         const int64_t c = vc.corners[static_cast<size_t>(i)];
-        const int64_t n = polys.connectivity[detail::nextPos(polys, vc.faceOf(c), c)];
+        const int64_t n = polys.connectivity[vc.around(polys, c).next];
         if (std::find(next.begin(), next.end(), n) != next.end())
         {
           found = true;
