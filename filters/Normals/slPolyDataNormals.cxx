@@ -239,11 +239,14 @@ private:
     vtkNew<vtkTypeInt32Array> conn;
     conn->SetNumberOfValues(numCorners);
     // Points used by no polygon are kept after the split ones, with (0,0,0).
-    int64_t unused = 0;
-    for (int64_t v = 0; v < numPoints; ++v)
+    // Counted on the polygons as given: with welding, a seam duplicate has no
+    // corners in the welded topology, yet the split emits it as a point.
+    std::vector<char> used(static_cast<size_t>(numPoints), 0);
+    for (int64_t c = 0; c < numCorners; ++c)
     {
-      unused += corners.offsets[static_cast<size_t>(v) + 1] == corners.offsets[static_cast<size_t>(v)];
+      used[static_cast<size_t>(polys.connectivity[c])] = 1;
     }
+    const int64_t unused = std::count(used.begin(), used.end(), 0);
     vtkSmartPointer<vtkFloatArray> normals;
     std::vector<int64_t> source;
     auto allocate = [&](int64_t splitPoints) {

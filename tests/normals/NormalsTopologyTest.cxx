@@ -7,6 +7,7 @@
 
 #include <vtkCallbackCommand.h>
 #include <vtkCleanPolyData.h>
+#include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCommand.h>
 #include <vtkIntArray.h>
@@ -378,4 +379,38 @@ TEST(Normals, WeldingHidesTheTeapotsUnweldedSeams)
   }
   EXPECT_LT(worstWelded, 1e-3);
   EXPECT_GT(worstPlain, 20.0);
+}
+
+TEST(Normals, WeldingWithSplittingLeavesNoOrphanPoints)
+{
+  // Spot's OBJ repeats points along its UV seams. Welded and split, every
+  // output point must be used by a polygon and have a unit normal: seam
+  // duplicates must not come back as extra unused points with zero normals.
+  vtkNew<slMeshReader> reader;
+  reader->SetFileName(SHADELAB_SHARED_DATA_DIR "/meshes/spot.obj");
+  reader->Update();
+  Result r = run(reader->GetOutput(), [](slPolyDataNormals* f) {
+    f->SplittingOn();
+    f->SetFeatureAngle(30.0);
+    f->ConsistencyOn();
+    f->WeldCoincidentPointsOn();
+  });
+  std::vector<int> uses(static_cast<size_t>(r.out->GetNumberOfPoints()), 0);
+  vtkIdType npts;
+  const vtkIdType* pts;
+  vtkCellArray* polys = r.out->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(npts, pts);)
+  {
+    for (vtkIdType k = 0; k < npts; ++k)
+    {
+      ++uses[static_cast<size_t>(pts[k])];
+    }
+  }
+  for (vtkIdType i = 0; i < r.out->GetNumberOfPoints(); ++i)
+  {
+    ASSERT_GT(uses[static_cast<size_t>(i)], 0) << "point " << i << " of " << r.out->GetNumberOfPoints();
+    double n[3];
+    r.out->GetPointData()->GetNormals()->GetTuple(i, n);
+    ASSERT_NEAR(std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]), 1.0, 1e-5) << "point " << i;
+  }
 }
