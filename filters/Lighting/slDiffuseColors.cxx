@@ -13,19 +13,15 @@ namespace shadelab
 
 namespace
 {
-/// The sRGB transfer function, inverted: encoded [0,1] -> linear.
-float srgbToLinear(float c)
-{
-  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-}
-
-/// Component @p c of tuple @p i as a linear colour value.
+/// Component @p c of tuple @p i as a colour value in the lighting equation:
+/// 8-bit values v mean v / 255, as VTK and ShadeLab's render pass use them
+/// (no transfer function on either path, so CPU and GPU agree).
 float linearComponent(vtkDataArray* a, vtkIdType i, int c)
 {
   const double v = a->GetComponent(i, c);
   if (vtkUnsignedCharArray::SafeDownCast(a))
   {
-    return srgbToLinear(static_cast<float>(v / 255.0));
+    return static_cast<float>(v / 255.0);
   }
   return std::isfinite(v) ? static_cast<float>(v) : 0.0f;
 }

@@ -5,8 +5,10 @@
  * @brief Internal: per-point k_d from an RGB(A) point array or from a texture
  * looked up at the points' texture coordinates. Not wrapped.
  *
- * 8-bit colours are taken as sRGB-encoded and decoded to linear values;
- * float colours are taken as linear. Textures are sampled bilinearly with
+ * Colours are used as given, as VTK and slLightingPass use them: 8-bit
+ * values v mean v / 255, float values are taken as they are. No sRGB
+ * transfer function is applied on either path, so `shadelab light` and
+ * `shadelab render` agree on textured and colour-mapped meshes. Textures are sampled bilinearly with
  * repeat wrapping; texture row 0 is the bottom (as slImageReader gives it).
  */
 

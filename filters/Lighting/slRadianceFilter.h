@@ -14,8 +14,9 @@
  *
  * k_d can come from the mesh instead of the material: an RGB(A) point array
  * (SetDiffuseColorArrayName()) or a texture sampled at the point texture
- * coordinates (SetDiffuseTexture()). 8-bit colours are decoded from sRGB to
- * linear, float colours are used as they are. The array wins if both are set.
+ * coordinates (SetDiffuseTexture()). Colours are used as VTK and
+ * slLightingPass use them: 8-bit values v mean v / 255 (no sRGB decoding),
+ * float values are taken as they are. The array wins if both are set.
  *
  * Input arrays are passed through. The loop over points runs in parallel with
  * vtkSMPTools.
