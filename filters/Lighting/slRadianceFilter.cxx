@@ -3,6 +3,7 @@
 #include "slDiffuseColors.h"
 #include "slFloat3View.h"
 #include "slLightingSetup.h"
+#include "slParallelFillArray.h"
 #include "slRadianceKernel.h"
 
 #include <vtkFloatArray.h>
@@ -22,13 +23,10 @@ vtkCxxSetObjectMacro(slRadianceFilter, DiffuseTexture, vtkImageData);
 
 namespace
 {
+/// An RGB output array; the kernel writes every value once, in parallel.
 vtkSmartPointer<vtkFloatArray> rgbArray(const std::string& name, vtkIdType n)
 {
-  auto a = vtkSmartPointer<vtkFloatArray>::New();
-  a->SetName(name.c_str());
-  a->SetNumberOfComponents(3);
-  a->SetNumberOfTuples(n);
-  return a;
+  return shadelab::newParallelFillArray(name, 3, n);
 }
 } // namespace
 

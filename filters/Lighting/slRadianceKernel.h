@@ -7,11 +7,11 @@
  *
  * It evaluates slShadeLightUnit() of slLighting.glsl (slShadeLight() with
  * the normal and view direction normalised once per point) through
- * shadelab/LightingGLSLVectorizable.h, for blocks of points, light by light,
- * with the lighting model and each light's type fixed at compile time so that
- * GCC vectorises the loop over points (AVX2 + FMA where the CPU has them,
- * chosen at run time). Results agree with shadelab::glsl to about 1e-5
- * relative (the pow built-in differs, see LightingGLSLVectorizable.h).
+ * shadelab/LightingGLSLBatch.h, the same file compiled for 8 points at a time
+ * on SIMD batch types: each batch of 8 points goes through every light while
+ * the sums stay in registers, with the lighting model and each light's type
+ * fixed at compile time. Results agree with shadelab::glsl to about 1e-5
+ * relative (pow and exp2 are polynomials there, see SIMDFloat8.h).
  */
 
 #include "shadelab/LightingGLSL.h"

@@ -1,8 +1,10 @@
 // slLighting.glsl -- the ShadeLab lighting equation, written exactly once.
 //
 // This file is the single source of truth for every lighting formula in
-// ShadeLab. It is compiled two ways and must stay valid for both:
+// ShadeLab. It is compiled three ways and must stay valid for all of them:
 //   * as C++17 through GLM, by shadelab/LightingGLSL.h (CPU filters, tests);
+//   * as C++17 with 8-lane SIMD batches standing in for float and vec3, by
+//     shadelab/LightingGLSLBatch.h (the CPU radiance filter's fast loop);
 //   * as GLSL 1.50 (the desktop profile VTK 9.1 uses), embedded verbatim into
 //     the render pass shaders through shadelab/LightingShaderSource.h.
 //
@@ -13,7 +15,12 @@
 //   * structs are filled member by member (no GLSL constructors, no C++
 //     brace initialisers), parameters are passed by value, no out/inout;
 //   * only built-ins that GLM also provides: dot, normalize, length, max,
-//     min, clamp, pow, exp2, smoothstep;
+//     min, clamp, pow, exp2, smoothstep, and mix(a, b, c) with a bool (or
+//     bvec3) c, which is GLSL's per-component select: c ? b : a;
+//   * a choice that depends on a float value (a length, a cosine, ...) is made
+//     with that select, never with if or ?: -- in the SIMD compilation each
+//     lane makes its own choice, and a branch cannot. Branches on int
+//     parameters (model, light type) and on struct constants are fine;
 //   * integer constants are `const int`, never preprocessor macros.
 //
 // Conventions: all vectors are in one space (world space on the CPU, view
@@ -76,22 +83,14 @@ struct slTerms
 SL_FUNC vec3 slSafeNormalize(vec3 v)
 {
   float len = length(v);
-  if (len > SL_TINY_LENGTH && len < 3.0e38f)
-  {
-    return v / len;
-  }
-  return vec3(0.0f);
+  return mix(vec3(0.0f), v / len, bvec3(len > SL_TINY_LENGTH && len < 3.0e38f));
 }
 
 // x^e for x clamped to >= 0, defined everywhere: GLSL leaves pow(0, e)
 // undefined for e <= 0, so 0^0 is taken as 1 (the limit from inside the lobe).
 SL_FUNC float slPow(float x, float e)
 {
-  if (x > 0.0f)
-  {
-    return pow(x, e);
-  }
-  return e > 0.0f ? 0.0f : 1.0f;
+  return mix(mix(1.0f, 0.0f, e > 0.0f), pow(x, e), x > 0.0f);
 }
 
 SL_FUNC bool slIsNormalizedModel(int model)
@@ -104,7 +103,7 @@ SL_FUNC bool slIsNormalizedModel(int model)
 SL_FUNC float slAttenuation(vec3 c, float d)
 {
   float denominator = c.x + c.y * d + c.z * d * d;
-  return denominator > 1.0f ? 1.0f / denominator : 1.0f;
+  return mix(1.0f, 1.0f / denominator, denominator > 1.0f);
 }
 
 // Spot cone factor for a unit vector L toward the light: 0 outside the cutoff,
@@ -117,16 +116,8 @@ SL_FUNC float slSpotFactor(slLight light, vec3 L)
     return 1.0f;
   }
   float cosAngle = dot(-L, light.direction);
-  if (cosAngle < light.cosCutoff)
-  {
-    return 0.0f;
-  }
-  float edge = 1.0f;
-  if (light.cosInner > light.cosCutoff)
-  {
-    edge = smoothstep(light.cosCutoff, light.cosInner, cosAngle);
-  }
-  return edge * slPow(cosAngle, light.exponent);
+  float edge = mix(1.0f, smoothstep(light.cosCutoff, light.cosInner, cosAngle), light.cosInner > light.cosCutoff);
+  return mix(edge * slPow(cosAngle, light.exponent), 0.0f, cosAngle < light.cosCutoff);
 }
 
 // What arrives at P from one light: the unit vector L toward it (zero for
@@ -154,7 +145,7 @@ SL_FUNC slIncidence slIncidenceAt(slLight light, vec3 P)
   }
   vec3 toLight = light.position - P;
   float d = length(toLight);
-  inc.L = (d > SL_TINY_LENGTH && d < 3.0e38f) ? toLight / d : vec3(0.0f);
+  inc.L = mix(vec3(0.0f), toLight / d, bvec3(d > SL_TINY_LENGTH && d < 3.0e38f));
   inc.reach = slAttenuation(light.attenuation, d) * slSpotFactor(light, inc.L);
   return inc;
 }
@@ -203,28 +194,31 @@ SL_FUNC float slDiffuseFactor(int model, vec3 N, vec3 L)
 //                 or slBlinnPhongNormalization(n) max(0,N.H)^n (Blinn-Phong).
 SL_FUNC float slSpecularFactor(int model, vec3 N, vec3 L, vec3 V, float n)
 {
-  float cosTheta = dot(N, L);
-  if (cosTheta <= 0.0f || model == SL_MODEL_LAMBERT || model == SL_MODEL_LAMBERT_NORMALIZED)
+  if (model == SL_MODEL_LAMBERT || model == SL_MODEL_LAMBERT_NORMALIZED)
   {
     return 0.0f;
   }
+  float cosTheta = dot(N, L);
+  float factor;
   if (model == SL_MODEL_PHONG || model == SL_MODEL_PHONG_NORMALIZED)
   {
     vec3 R = 2.0f * cosTheta * N - L;
-    float lobe = slPow(max(dot(R, V), 0.0f), n);
-    if (model == SL_MODEL_PHONG)
+    factor = slPow(max(dot(R, V), 0.0f), n);
+    if (model == SL_MODEL_PHONG_NORMALIZED)
     {
-      return lobe;
+      factor = factor * (n + 2.0f) / (2.0f * SL_PI) * cosTheta;
     }
-    return lobe * (n + 2.0f) / (2.0f * SL_PI) * cosTheta;
   }
-  vec3 H = slSafeNormalize(L + V);
-  float lobe = slPow(max(dot(N, H), 0.0f), n);
-  if (model == SL_MODEL_BLINN_PHONG)
+  else
   {
-    return lobe;
+    vec3 H = slSafeNormalize(L + V);
+    factor = slPow(max(dot(N, H), 0.0f), n);
+    if (model == SL_MODEL_BLINN_PHONG_NORMALIZED)
+    {
+      factor = factor * slBlinnPhongNormalization(n) * cosTheta;
+    }
   }
-  return lobe * slBlinnPhongNormalization(n) * cosTheta;
+  return mix(0.0f, factor, cosTheta > 0.0f);
 }
 
 SL_FUNC slTerms slZeroTerms()
@@ -309,10 +303,6 @@ SL_FUNC float slCosTheta(slLight light, vec3 P, vec3 N)
 SL_FUNC vec3 slBRDF(int model, slMaterial m, vec3 N, vec3 L, vec3 V)
 {
   float cosTheta = dot(N, L);
-  if (cosTheta <= SL_MIN_COS_THETA)
-  {
-    return vec3(0.0f);
-  }
   vec3 reflected = slDiffuseFactor(model, N, L) * m.diffuse + slSpecularFactor(model, N, L, V, m.shininess) * m.specular;
-  return reflected / cosTheta;
+  return mix(vec3(0.0f), reflected / cosTheta, bvec3(cosTheta > SL_MIN_COS_THETA));
 }
