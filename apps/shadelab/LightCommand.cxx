@@ -25,8 +25,8 @@ int runLight(const std::vector<std::string>& args)
 {
   std::vector<OptionSpec> specs = litOptions();
   specs.push_back({ "per-light", "", "", "also write Radiance_<i> for every light i" });
-  specs.push_back({ "diffuse-array", "", "NAME", "an RGB(A) point array of MESH that stands in for k_d" });
-  specs.push_back({ "diffuse-texture", "", "FILE", "an image that stands in for k_d at the texture coordinates" });
+  specs.push_back({ "diffuse-array", "", "NAME", "an RGB(A) point array of MESH: a base colour multiplying k_a and k_d (as in render)" });
+  specs.push_back({ "diffuse-texture", "", "FILE", "an image: a base colour multiplying k_a and k_d at the texture coordinates" });
   const CommandLine cl(args, specs);
   if (cl.has("help"))
   {

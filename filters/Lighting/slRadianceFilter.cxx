@@ -59,15 +59,15 @@ int slRadianceFilter::RequestData(vtkInformation*, vtkInformationVector** inputV
   {
     return 0;
   }
-  std::vector<glm::vec3> diffuse;
+  std::vector<glm::vec3> base; // base colour per point: multiplies k_a and k_d
   std::string problem;
   if (this->DiffuseColorArrayName && *this->DiffuseColorArrayName)
   {
-    problem = diffuseFromArray(input, this->DiffuseColorArrayName, diffuse);
+    problem = diffuseFromArray(input, this->DiffuseColorArrayName, base);
   }
   else if (this->DiffuseTexture)
   {
-    problem = diffuseFromTexture(input, this->DiffuseTexture, diffuse);
+    problem = diffuseFromTexture(input, this->DiffuseTexture, base);
   }
   if (!problem.empty())
   {
@@ -98,7 +98,7 @@ int slRadianceFilter::RequestData(vtkInformation*, vtkInformationVector** inputV
   RadianceKernelInput in;
   in.points = points.data();
   in.normals = normals.data();
-  in.diffuse = diffuse.empty() ? nullptr : &diffuse[0].x;
+  in.baseColour = base.empty() ? nullptr : &base[0].x;
   in.lights = setup.lights;
   in.material = setup.material;
   in.model = setup.model;

@@ -12,11 +12,13 @@
  * runs. Radiance = Ambient + Diffuse + Specular + Emission; emission is the
  * material's k_e, added once.
  *
- * k_d can come from the mesh instead of the material: an RGB(A) point array
+ * The mesh can colour the material: an RGB(A) point array
  * (SetDiffuseColorArrayName()) or a texture sampled at the point texture
- * coordinates (SetDiffuseTexture()). Colours are used as VTK and
- * slLightingPass use them: 8-bit values v mean v / 255 (no sRGB decoding),
- * float values are taken as they are. The array wins if both are set.
+ * coordinates (SetDiffuseTexture()) is a base colour that multiplies k_a and
+ * k_d at each point, exactly as scalar colours and the actor's texture do in
+ * slLightingPass (with k_a = k_d = 1 it stands in for k_d). Colours are used
+ * as VTK and the pass use them: 8-bit values v mean v / 255 (no sRGB
+ * decoding), float values as they are. The array wins if both are set.
  *
  * Input arrays are passed through. The loop over points runs in parallel with
  * vtkSMPTools.

@@ -81,9 +81,11 @@ __attribute__((flatten)) void shadeBatches(const RadianceKernelInput& in, const 
   {
     const BatchRange batch{ first, static_cast<int>(std::min<long long>(8, end - first)) };
     glsl8::slMaterial m = material;
-    if (in.diffuse)
+    if (in.baseColour)
     {
-      m.diffuse = loadBatch(in.diffuse, batch);
+      const vec3x8 base = loadBatch(in.baseColour, batch);
+      m.ambient = material.ambient * base;
+      m.diffuse = material.diffuse * base;
     }
     // Normalised once per point, not once per light (slShadeLight does the same).
     const vec3x8 P = loadBatch(in.points, batch);

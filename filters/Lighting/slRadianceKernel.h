@@ -25,7 +25,9 @@ struct RadianceKernelInput
 {
   const float* points = nullptr;  ///< xyz per point
   const float* normals = nullptr; ///< xyz per point, any length
-  const float* diffuse = nullptr; ///< optional k_d per point (rgb), else the material's
+  /// Optional base colour per point (rgb): it multiplies the material's k_a
+  /// and k_d there, as scalar colours and textures do in slLightingPass.
+  const float* baseColour = nullptr;
   std::vector<glsl::slLight> lights;
   glsl::slMaterial material;
   int model = 0;

@@ -189,6 +189,7 @@ TEST(RadianceFilter, DiffuseFromColourArrayAndTexture)
 {
   SceneLight light = whiteLight(LightType::Directional);
   light.direction = glm::vec3(0.0f, 0.0f, -1.0f);
+  light.ambient = glm::vec3(1.0f); // so that Ambient = k_a times the base colour
   vtkSmartPointer<vtkPolyData> mesh = pointsWithNormals({ { 0, 0, 0, 0, 0, 1 }, { 1, 0, 0, 0, 0, 1 } });
   vtkNew<vtkFloatArray> colours;
   colours->SetName("Colour");
@@ -206,13 +207,22 @@ TEST(RadianceFilter, DiffuseFromColourArrayAndTexture)
   filter->SetScene(makeScene({ light }, ShadingModel::Lambert));
   filter->SetDiffuseColorArrayName("Colour");
   vtkPolyData* out = run(filter, mesh);
-  EXPECT_NEAR(tuple3(out, "Diffuse", 0)[2], 1.0, 1e-6);
-  EXPECT_NEAR(tuple3(out, "Diffuse", 1)[0], 1.0, 1e-6);
+  // The colour is a base colour: it multiplies the material's k_d = (0.8, 0.5,
+  // 0.25) and k_a, as scalar colours do in the render pass.
+  const glm::vec3 kd(0.8f, 0.5f, 0.25f);
+  EXPECT_NEAR(tuple3(out, "Diffuse", 0)[1], kd.y * 0.5, 1e-6);
+  EXPECT_NEAR(tuple3(out, "Diffuse", 0)[2], kd.z * 1.0, 1e-6);
+  EXPECT_NEAR(tuple3(out, "Diffuse", 1)[0], kd.x * 1.0, 1e-6);
+  EXPECT_EQ(tuple3(out, "Diffuse", 1)[1], 0.0);
+  EXPECT_NEAR(tuple3(out, "Ambient", 0)[1], 0.1 * 0.5, 1e-6); // k_a = (0.2, 0.1, 0.05)
+  EXPECT_NEAR(tuple3(out, "Ambient", 0)[2], 0.05 * 1.0, 1e-6);
+  EXPECT_EQ(tuple3(out, "Ambient", 1)[2], 0.0);
   EXPECT_NE(out->GetPointData()->GetArray("Colour"), nullptr) << "input arrays pass through";
   filter->SetDiffuseColorArrayName("Bytes");
   out = run(filter, mesh);
-  EXPECT_NEAR(tuple3(out, "Diffuse", 0)[0], 1.0, 1e-6);
-  EXPECT_NEAR(tuple3(out, "Diffuse", 0)[1], 188.0 / 255.0, 1e-6);
+  EXPECT_NEAR(tuple3(out, "Diffuse", 0)[0], kd.x, 1e-6);
+  EXPECT_NEAR(tuple3(out, "Diffuse", 0)[1], kd.y * 188.0 / 255.0, 1e-6);
+  EXPECT_EQ(tuple3(out, "Diffuse", 1)[0], 0.0);
 
   // A 2 x 1 texture: left texel red, right texel blue; u = 0.25 and 0.75 hit their centres.
   vtkNew<vtkImageData> texture;
@@ -230,7 +240,7 @@ TEST(RadianceFilter, DiffuseFromColourArrayAndTexture)
   filter->SetDiffuseColorArrayName(nullptr);
   filter->SetDiffuseTexture(texture);
   out = run(filter, mesh);
-  EXPECT_NEAR(tuple3(out, "Diffuse", 0)[0], 1.0, 1e-6);
+  EXPECT_NEAR(tuple3(out, "Diffuse", 0)[0], kd.x, 1e-6);
   EXPECT_NEAR(tuple3(out, "Diffuse", 0)[2], 0.0, 1e-6);
-  EXPECT_NEAR(tuple3(out, "Diffuse", 1)[2], 1.0, 1e-6);
+  EXPECT_NEAR(tuple3(out, "Diffuse", 1)[2], kd.z, 1e-6);
 }

@@ -5,6 +5,7 @@
 #include "shadelab/LightingGLSL.h"
 #include "shadelab/Scene.h"
 #include "slLightingPass.h"
+#include "slRadianceFilter.h"
 #include "slScene.h"
 
 #include <vtkActor.h>
@@ -499,6 +500,43 @@ TEST(BaseColour, PointScalarsMultiplyKd)
   EXPECT_NEAR(pixel[0], 0.8f * 255.0f / 255.0f, 1.5f / 255.0f);
   EXPECT_NEAR(pixel[1], 0.8f * 128.0f / 255.0f, 1.5f / 255.0f);
   EXPECT_NEAR(pixel[2], 0.8f * 64.0f / 255.0f, 1.5f / 255.0f);
+}
+
+TEST(BaseColour, CPUAndGPUAgreeOnEightBitColours)
+{
+  // One colour rule for both paths: for an 8-bit colour array the CPU
+  // filter's Radiance equals the pass's pixel (both take v / 255, no
+  // transfer function, and both multiply k_a and k_d by it).
+  vtkSmartPointer<vtkPolyData> mesh = sphere(64);
+  const shadelab::Scene scene = headOnLambert(5.0f);
+  vtkNew<vtkUnsignedCharArray> colours;
+  colours->SetName("Colours");
+  colours->SetNumberOfComponents(3);
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    colours->InsertNextTuple3(200, 90, 30);
+  }
+  mesh->GetPointData()->SetScalars(colours);
+  vtkNew<slScene> sceneObject;
+  sceneObject->SetScene(scene);
+  vtkNew<slRadianceFilter> cpu;
+  cpu->SetScene(sceneObject);
+  cpu->SetDiffuseColorArrayName("Colours");
+  cpu->SetInputData(mesh);
+  cpu->Update();
+  double front[3] = { 0.0, 0.0, 1.0 }; // the point facing the camera and the light
+  const vtkIdType id = cpu->GetOutput()->FindPoint(front);
+  double radiance[3];
+  cpu->GetOutput()->GetPointData()->GetArray("Radiance")->GetTuple(id, radiance);
+
+  passtest::Stage stage = passtest::litStage(mesh, scene, 100, 100);
+  stage.actor->GetMapper()->ScalarVisibilityOn();
+  const float* pixel = stage.render().at(50, 50);
+  for (int c = 0; c < 3; ++c)
+  {
+    EXPECT_NEAR(pixel[c], radiance[c], 1.5 / 255.0) << c;
+  }
+  EXPECT_NEAR(radiance[1], 0.8 * 90.0 / 255.0, 1e-3); // k_d 0.8 times v / 255, lit head-on
 }
 
 TEST(BaseColour, ActorTextureMultipliesKd)
