@@ -15,6 +15,8 @@
 #include "ShadingPanel.h"
 #include "ViewerDocument.h"
 
+#include "ImageComparison.h"
+
 #include "slImageReader.h"
 #include "slMeshReader.h"
 #include "slScene.h"
@@ -40,6 +42,8 @@
 #include <QLabel>
 #include <QListWidget>
 #include <QMimeData>
+#include <QProcess>
+#include <QProcessEnvironment>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -449,6 +453,44 @@ private slots:
     }
     QVERIFY(!this->Window->saveScreenshot(this->path("no/such/folder/shot.png"), &error));
     QVERIFY2(error.contains("no/such/folder/shot.png"), qPrintable(error));
+  }
+
+  void matchesTheRegressionBaselines()
+  {
+    // The viewer's captures against the same baselines as `shadelab render`
+    // (tests/regression): Spot under every light type, Blinn-Phong, at each
+    // frequency chosen in the shading panel.
+    QString error;
+    QVERIFY2(this->Window->openFile(SHADELAB_DATA_DIR "/scenes/regression/all-lights.json", &error), qPrintable(error));
+    const Scene& scene = this->Window->document()->scene();
+    this->Window->setViewSize(scene.width, scene.height);
+    QTRY_COMPARE(this->Window->view()->size(), QSize(scene.width, scene.height));
+    this->Window->shadingPanel()->modelBox()->setCurrentText("blinn-phong");
+    for (const char* frequency : { "flat", "gouraud", "phong" })
+    {
+      this->Window->shadingPanel()->frequencyBox()->setCurrentText(frequency);
+      const std::string name = std::string("spot-blinn-phong-") + frequency;
+      const regression::Verdict verdict = regression::compareWithBaseline(this->Window->view()->grabImage(),
+        SHADELAB_DATA_DIR "/baselines/" + name + ".png", SHADELAB_TEST_OUTPUT_DIR, "viewer-" + name);
+      QVERIFY2(verdict.passed, qPrintable(QString::fromStdString(name + ": " + verdict.message)));
+    }
+  }
+
+  void noDisplayGivesOneLine()
+  {
+    // Without an X display the viewer says so in one line and exits with 1.
+    QProcess viewer;
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.remove("DISPLAY");
+    environment.remove("QT_QPA_PLATFORM");
+    environment.remove("WAYLAND_DISPLAY");
+    viewer.setProcessEnvironment(environment);
+    viewer.start(QString(SHADELAB_VIEWER_PROGRAM), QStringList());
+    QVERIFY(viewer.waitForFinished(30000));
+    QCOMPARE(viewer.exitCode(), 1);
+    const QString message = QString::fromUtf8(viewer.readAllStandardError()).trimmed();
+    QVERIFY2(message.startsWith("shadelab-viewer: ") && !message.contains('\n'), qPrintable(message));
+    QVERIFY2(message.contains("DISPLAY"), qPrintable(message));
   }
 
   void normalsPanelRecomputesNormals()
