@@ -33,19 +33,43 @@ enum class Weighting : int
   Max = 3
 };
 
-/// acos(x) for x in [-1, 1], Abramowitz & Stegun 4.4.46 (|error| <= 2e-8 rad),
-/// about four times faster than std::acos.
+/// atan(t) for t in [0, 1]: an odd minimax polynomial of degree 15,
+/// |error| <= 3.8e-8 rad (fitted in double; in float, rounding (about 1e-7) dominates).
 template <typename T>
-inline T fastAcos(T x)
+inline T atanUnit(T t)
 {
-  const T a = std::fabs(x) < T(1) ? std::fabs(x) : T(1);
-  const T p = T(1.5707963050) +
-    a * (T(-0.2145988016) +
-      a * (T(0.0889789874) +
-        a * (T(-0.0501743046) +
-          a * (T(0.0308918810) + a * (T(-0.0170881256) + a * (T(0.0066700901) + a * T(-0.0012624911)))))));
-  const T r = std::sqrt(T(1) - a) * p;
-  return x < T(0) ? T(3.14159265358979323846) - r : r;
+  const T t2 = t * t;
+  return t *
+    (T(0.9999993355789613) +
+      t2 *
+        (T(-0.3332986078429252) +
+          t2 *
+            (T(0.1994656563634464) +
+              t2 *
+                (T(-0.13908629429161432) +
+                  t2 *
+                    (T(0.09642196935391509) +
+                      t2 * (T(-0.055912320537255436) + t2 * (T(0.02186295306984301) + t2 * T(-0.004054565772727919))))))));
+}
+
+/// The angle in [0, pi] between two vectors from the length of their cross
+/// product @p crossLength (>= 0) and their dot product @p dot: atan2(crossLength,
+/// dot), and 0 when both are 0. Unlike acos(dot / (|e1| |e2|)) it needs no
+/// square root per corner (a triangle's three corners share |e1 x e2|, twice
+/// its area) and stays accurate near 0 and pi, where acos loses digits.
+/// Selects only, no branch, so that loops over it vectorise. |error| <= 4e-8
+/// rad in double, <= 3.2e-7 rad in float, against std::atan2.
+template <typename T>
+inline T cornerAngle(T crossLength, T dot)
+{
+  const T x = std::fabs(dot);
+  const bool steep = crossLength > x;
+  const T lo = steep ? x : crossLength;
+  const T hi = steep ? crossLength : x;
+  // hi is 0 only when lo is too; dividing by 1 then keeps the loop trap-free.
+  const T r = atanUnit(lo / (hi > T(0) ? hi : T(1)));
+  const T firstQuadrant = steep ? T(1.5707963267948966) - r : r;
+  return dot < T(0) ? T(3.141592653589793) - firstQuadrant : firstQuadrant;
 }
 
 /// The corner weight times the unit normal, for the corner at @p p whose
@@ -66,12 +90,7 @@ inline glm::vec<3, T> cornerContribution(Weighting weighting, const glm::vec<3, 
     {
       const glm::vec<3, T> e1 = next - p;
       const glm::vec<3, T> e2 = prev - p;
-      const T l = std::sqrt(glm::dot(e1, e1) * glm::dot(e2, e2));
-      if (!(l > T(0)))
-      {
-        return glm::vec<3, T>(0);
-      }
-      return unitNormal * fastAcos(glm::dot(e1, e2) / l);
+      return unitNormal * cornerAngle(glm::length(glm::cross(e1, e2)), glm::dot(e1, e2));
     }
     case Weighting::Max:
     {

@@ -100,8 +100,7 @@ void accumulateTangents(const Polygons<Id>& polys, int64_t numPoints, Pos&& pos,
           continue;
         }
         const glm::dvec3 e1 = pos(v[(i + 1) % 3]) - pos(v[i]), e2 = pos(v[(i + 2) % 3]) - pos(v[i]);
-        const double l = std::sqrt(glm::dot(e1, e1) * glm::dot(e2, e2));
-        const double angle = l > 0.0 ? fastAcos(glm::dot(e1, e2) / l) : 0.0;
+        const double angle = cornerAngle(glm::length(glm::cross(e1, e2)), glm::dot(e1, e2));
         sums.sum[slot][static_cast<size_t>(v[i])] += tp / len * angle;
         sums.used[slot][static_cast<size_t>(v[i])] = 1;
       }

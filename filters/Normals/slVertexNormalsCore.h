@@ -5,7 +5,8 @@
  * @brief Vertex normals without splitting: weighted face normals summed at
  * each vertex. VTK-free. Internal to ShadeLab::Normals.
  *
- * The polygons are cut into as many contiguous chunks as there are threads;
+ * Triangles are weighed in vectorised blocks (slTriangleBlock.h). The
+ * polygons are cut into as many contiguous chunks as there are threads;
  * each chunk scatters its corner contributions into its own accumulator, and a
  * parallel pass over the points adds the accumulators and normalises. The
  * result does not depend on scheduling (the sum order is fixed).
@@ -14,6 +15,7 @@
 #include "slCornerWeights.h"
 #include "slFaceNormalsCore.h"
 #include "slNormalsParallel.h"
+#include "slTriangleBlock.h"
 
 #include <glm/glm.hpp>
 
@@ -35,72 +37,43 @@ inline void add(T* acc, int64_t id, const glm::vec<3, T>& v)
 }
 
 /// Adds the corner contributions of polygons [b, e) into @p acc, at the
-/// corners' entries of @p accIds (same layout as the connectivity).
+/// corners' entries of @p accIds (same layout as the connectivity). Runs of
+/// consecutive triangles go through TriangleBlock; other polygons one by one.
 template <Weighting W, typename T, typename Id, typename AccId>
 void scatter(const Polygons<Id>& polys, const AccId* accIds, const T* xyz, int64_t b, int64_t e, T* acc)
 {
   using V = glm::vec<3, T>;
+  TriangleBlock<T> block;
+  const auto flush = [&]() {
+    block.template weigh<W>();
+    block.scatter(accIds, acc);
+    block.count = 0;
+  };
   for (int64_t f = b; f < e; ++f)
   {
     const int64_t o = polys.begin(f);
     const int64_t n = polys.size(f);
-    const Id* ids = polys.connectivity + o;
-    const AccId* to = accIds + o;
     if (n == 3)
     {
-      const V p0 = point(xyz, ids[0]), p1 = point(xyz, ids[1]), p2 = point(xyz, ids[2]);
-      const V nv = glm::cross(p1 - p0, p2 - p0);
-      const T len = glm::length(nv);
-      if (!(len > T(0)))
+      if (!block.continues(o))
       {
-        continue;
+        flush();
       }
-      if (W == Weighting::Area)
+      block.add(polys.connectivity, xyz, o);
+      if (block.count == TriangleBlock<T>::Capacity)
       {
-        add(acc, to[0], nv);
-        add(acc, to[1], nv);
-        add(acc, to[2], nv);
-        continue;
+        flush();
       }
-      const V u = nv / len;
-      if (W == Weighting::Uniform)
-      {
-        add(acc, to[0], u);
-        add(acc, to[1], u);
-        add(acc, to[2], u);
-        continue;
-      }
-      if (W == Weighting::Angle)
-      {
-        // Two angles by acos, the third from the angle sum.
-        const V a = p1 - p0, bb = p2 - p1, c = p0 - p2;
-        const T la = glm::dot(a, a), lb = glm::dot(bb, bb), lc = glm::dot(c, c);
-        const T t0 = fastAcos(-glm::dot(c, a) / std::sqrt(lc * la));
-        const T t1 = fastAcos(-glm::dot(a, bb) / std::sqrt(la * lb));
-        const T t2 = T(3.14159265358979323846) - t0 - t1;
-        add(acc, to[0], u * t0);
-        add(acc, to[1], u * t1);
-        add(acc, to[2], u * (t2 > T(0) ? t2 : T(0)));
-        continue;
-      }
-      // Max: |e1 x e2| / (|e1|^2 |e2|^2) at every corner; |e1 x e2| = len.
-      const V a = p1 - p0, bb = p2 - p1, c = p0 - p2;
-      const T la = glm::dot(a, a), lb = glm::dot(bb, bb), lc = glm::dot(c, c);
-      add(acc, to[0], u * (len / (lc * la)));
-      add(acc, to[1], u * (len / (la * lb)));
-      add(acc, to[2], u * (len / (lb * lc)));
-      continue;
-    }
-    if (n < 3)
-    {
       continue;
     }
     const V nv = newellVector(polys, xyz, f);
     const T len = glm::length(nv);
-    if (!(len > T(0)))
+    if (n < 3 || !(len > T(0)))
     {
       continue;
     }
+    const Id* ids = polys.connectivity + o;
+    const AccId* to = accIds + o;
     const V u = nv / len;
     for (int64_t i = 0; i < n; ++i)
     {
@@ -108,6 +81,26 @@ void scatter(const Polygons<Id>& polys, const AccId* accIds, const T* xyz, int64
       const V next = point(xyz, ids[(i + 1) % n]);
       add(acc, to[i], cornerContribution(W, prev, point(xyz, ids[i]), next, u, len));
     }
+  }
+  if (block.count > 0)
+  {
+    flush();
+  }
+}
+
+/// Where chunk 0 accumulates: straight into the float output when the
+/// points are float (saves one accumulator), else nowhere (null).
+template <typename T>
+inline T* inPlaceAccumulator(float* out)
+{
+  if constexpr (std::is_same<T, float>::value)
+  {
+    return out;
+  }
+  else
+  {
+    (void)out;
+    return nullptr;
   }
 }
 } // namespace detail
@@ -121,17 +114,14 @@ void accumulateNormals(const Polygons<Id>& polys, const AccId* accIds, const T* 
 {
   const int64_t chunks =
     polys.numPolygons < 65536 ? 1 : std::max<int64_t>(1, std::min<int64_t>(parallel.threads, 64));
-  // With float points, the first chunk accumulates straight into the output.
-  constexpr bool inPlace = std::is_same<T, float>::value;
   std::vector<std::vector<T>> acc(static_cast<size_t>(chunks));
   std::vector<T*> target(static_cast<size_t>(chunks));
   parallel.forRange(0, chunks, 1, [&](int64_t cb, int64_t ce) {
     for (int64_t k = cb; k < ce; ++k)
     {
-      T* a;
-      if (inPlace && k == 0)
+      T* a = k == 0 ? detail::inPlaceAccumulator<T>(out) : nullptr;
+      if (a)
       {
-        a = reinterpret_cast<T*>(out);
         std::fill(a, a + 3 * numPoints, T(0));
       }
       else
