@@ -2,8 +2,9 @@
 #define slParallelFillArray_h
 /**
  * @file slParallelFillArray.h
- * @brief Internal: a new vtkFloatArray that the caller is about to fill
- * completely, in parallel, with one write per value. Not wrapped.
+ * @brief A new vtkFloatArray that the caller is about to fill completely,
+ * in parallel, with one write per value (the radiance filter's outputs, the
+ * normals filter's Normals). C++ only, not wrapped.
  *
  * A freshly allocated array of many megabytes is not memory yet: the kernel
  * maps it page by page at the first write, and for the radiance filter's
@@ -16,6 +17,8 @@
  * VTK owns the memory and frees it with free().
  */
 
+#include "ShadeLabIOModule.h"
+
 #include <vtkFloatArray.h>
 #include <vtkSmartPointer.h>
 
@@ -25,7 +28,7 @@ namespace shadelab
 {
 
 /// A float array named @p name with @p components × @p tuples values, uninitialised.
-vtkSmartPointer<vtkFloatArray> newParallelFillArray(const std::string& name, int components, vtkIdType tuples);
+SHADELABIO_EXPORT vtkSmartPointer<vtkFloatArray> newParallelFillArray(const std::string& name, int components, vtkIdType tuples);
 
 } // namespace shadelab
 
