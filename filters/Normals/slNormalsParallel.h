@@ -14,6 +14,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 
 namespace slnormals
 {
@@ -32,6 +33,15 @@ struct Parallel
       }
     };
 };
+
+/// An array of @p n values left uninitialised, for scratch arrays that a
+/// parallel pass overwrites completely: std::vector would first zero-fill
+/// them serially (and take the page faults on one thread).
+template <typename T>
+std::unique_ptr<T[]> uninitialisedArray(size_t n)
+{
+  return std::unique_ptr<T[]>(new T[n]);
+}
 
 /// Polygons as VTK 9 stores them: polygon f has the point ids
 /// connectivity[offsets[f]] .. connectivity[offsets[f+1]-1].

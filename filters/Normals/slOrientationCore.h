@@ -97,6 +97,27 @@ inline void reversePolygon(Polygons<Id>& polys, int64_t f)
 }
 } // namespace detail
 
+namespace detail
+{
+/// True if two of the @p n values repeat: at a point, two corners whose
+/// next points repeat traverse that edge in the same direction. n is a
+/// point's valence, so comparing all pairs is cheaper than any set.
+inline bool hasRepeat(const int64_t* values, int n)
+{
+  for (int i = 1; i < n; ++i)
+  {
+    for (int j = 0; j < i; ++j)
+    {
+      if (values[i] == values[j])
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+} // namespace detail
+
 /// True if two polygons traverse some shared edge in the same direction:
 /// at some point v, two corners continue to the same next point.
 template <typename Id>
@@ -108,17 +129,16 @@ bool hasInconsistentEdge(const Polygons<Id>& polys, const VertexCorners<Id>& vc,
     std::vector<int64_t> next;
     for (int64_t v = b; v < e && !found.load(std::memory_order_relaxed); ++v)
     {
-      next.clear();
-      for (int32_t i = vc.offsets[static_cast<size_t>(v)]; i < vc.offsets[static_cast<size_t>(v) + 1]; ++i)
+      const int32_t first = vc.offsets[static_cast<size_t>(v)];
+      const int k = vc.offsets[static_cast<size_t>(v) + 1] - first;
+      next.resize(static_cast<size_t>(k));
+      for (int i = 0; i < k; ++i)
       {
-        const int64_t c = vc.corners[static_cast<size_t>(i)];
-        const int64_t n = polys.connectivity[vc.around(polys, c).next];
-        if (std::find(next.begin(), next.end(), n) != next.end())
-        {
-          found = true;
-          break;
-        }
-        next.push_back(n);
+        next[static_cast<size_t>(i)] = polys.connectivity[vc.around(polys, vc.corners[static_cast<size_t>(first + i)]).next];
+      }
+      if (detail::hasRepeat(next.data(), k))
+      {
+        found = true;
       }
     }
   });

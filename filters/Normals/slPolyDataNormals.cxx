@@ -97,7 +97,11 @@ public:
       topology.connectivity = t;
     }
 
-    // Orientation: reverse polygons in an owned copy, only if needed.
+    // Orientation: reverse polygons in an owned copy, only if needed. With
+    // splitting, the pass that builds the smooth groups looks for
+    // inconsistent edges itself (it reads the same corners), so a separate
+    // check runs only without splitting.
+    const bool splitting = this->S.pointNormals && this->S.split;
     slnormals::VertexCorners<Id> corners;
     bool cornersValid = false;
     flipped = 0;
@@ -105,31 +109,9 @@ public:
     {
       corners.build(topology, numPoints, this->Par);
       cornersValid = true;
-      if (this->S.outward || slnormals::hasInconsistentEdge(topology, corners, this->Par))
+      if (this->S.outward || (!splitting && slnormals::hasInconsistentEdge(topology, corners, this->Par)))
       {
-        if (!this->HasOwned)
-        {
-          this->Owned = slCopyPolygons<Id>(this->Input->GetPolys(), strips);
-          this->HasOwned = true;
-          const bool welded = topology.connectivity != polys.connectivity;
-          polys = this->Owned.view();
-          if (!welded)
-          {
-            topology = polys;
-          }
-        }
-        std::vector<char> flips;
-        flipped = slnormals::orientPolygons(topology, this->XYZ, corners, true, this->S.outward, this->Par, &flips);
-        if (topology.connectivity != polys.connectivity)
-        {
-          for (int64_t f = 0; f < polys.numPolygons; ++f)
-          {
-            if (flips[static_cast<size_t>(f)])
-            {
-              std::reverse(polys.connectivity + polys.begin(f), polys.connectivity + polys.end(f));
-            }
-          }
-        }
+        flipped = this->Orient(polys, topology, corners);
         cornersValid = flipped == 0;
       }
     }
@@ -141,13 +123,22 @@ public:
 
     // Points, point data and polygons.
     std::vector<vtkIdType> pointMap; // input point -> output point, when split
-    if (this->S.pointNormals && this->S.split)
+    if (splitting)
     {
       if (!cornersValid)
       {
         corners.build(topology, numPoints, this->Par);
       }
-      this->Split(polys, topology, numPoints, corners, pointMap);
+      const bool check = this->S.orient && !this->S.outward;
+      if (!this->Split(polys, topology, numPoints, corners, check, pointMap))
+      {
+        flipped = this->Orient(polys, topology, corners);
+        if (flipped != 0)
+        {
+          corners.build(topology, numPoints, this->Par);
+        }
+        this->Split(polys, topology, numPoints, corners, false, pointMap);
+      }
     }
     else
     {
@@ -232,24 +223,62 @@ public:
   }
 
 private:
-  void Split(const slnormals::Polygons<Id>& polys, const slnormals::Polygons<Id>& topology, int64_t numPoints,
-    const slnormals::VertexCorners<Id>& corners, std::vector<vtkIdType>& pointMap)
+  /// Makes neighbouring polygons agree (and closed pieces face outward if
+  /// asked) in an owned copy of the polygons; @p polys and @p topology then
+  /// view the copy (the welded topology is reversed in place too). Returns
+  /// the number of polygons reversed.
+  vtkIdType Orient(slnormals::Polygons<Id>& polys, slnormals::Polygons<Id>& topology,
+    const slnormals::VertexCorners<Id>& corners)
+  {
+    if (!this->HasOwned)
+    {
+      this->Owned = slCopyPolygons<Id>(this->Input->GetPolys(), this->Input->GetStrips());
+      this->HasOwned = true;
+      const bool welded = topology.connectivity != polys.connectivity;
+      polys = this->Owned.view();
+      if (!welded)
+      {
+        topology = polys;
+      }
+    }
+    std::vector<char> flips;
+    const vtkIdType flipped =
+      slnormals::orientPolygons(topology, this->XYZ, corners, true, this->S.outward, this->Par, &flips);
+    if (topology.connectivity != polys.connectivity)
+    {
+      for (int64_t f = 0; f < polys.numPolygons; ++f)
+      {
+        if (flips[static_cast<size_t>(f)])
+        {
+          std::reverse(polys.connectivity + polys.begin(f), polys.connectivity + polys.end(f));
+        }
+      }
+    }
+    return flipped;
+  }
+
+  /// Splits points along feature edges into the output. With
+  /// @p checkOrientation, returns false and outputs nothing if some polygons
+  /// run the same way along an edge (then orient them and call again).
+  bool Split(const slnormals::Polygons<Id>& polys, const slnormals::Polygons<Id>& topology, int64_t numPoints,
+    const slnormals::VertexCorners<Id>& corners, bool checkOrientation, std::vector<vtkIdType>& pointMap)
   {
     const int64_t numCorners = polys.numPolygons ? polys.end(polys.numPolygons - 1) : 0;
     vtkNew<vtkTypeInt32Array> conn;
     conn->SetNumberOfValues(numCorners);
-    // Points used by no polygon are kept after the split ones, with (0,0,0).
-    // Counted on the polygons as given: with welding, a seam duplicate has no
-    // corners in the welded topology, yet the split emits it as a point.
-    std::vector<char> used(static_cast<size_t>(numPoints), 0);
-    for (int64_t c = 0; c < numCorners; ++c)
-    {
-      used[static_cast<size_t>(polys.connectivity[c])] = 1;
-    }
-    const int64_t unused = std::count(used.begin(), used.end(), 0);
+    int64_t unused = 0;
     vtkSmartPointer<vtkFloatArray> normals;
     std::vector<int64_t> source;
     auto allocate = [&](int64_t splitPoints) {
+      // Points used by no polygon are kept after the split ones, with (0,0,0).
+      // Counted on the polygons as given: with welding, a seam duplicate has no
+      // corners in the welded topology, yet the split emits it as a point.
+      std::vector<char> used(static_cast<size_t>(numPoints), 0);
+      for (int64_t c = 0; c < numCorners; ++c)
+      {
+        used[static_cast<size_t>(polys.connectivity[c])] = 1;
+      }
+      unused = std::count(used.begin(), used.end(), 0);
       normals = slMakeNormalsArray(splitPoints + unused);
       source.resize(static_cast<size_t>(splitPoints + unused));
       slnormals::SplitOutput out;
@@ -259,8 +288,14 @@ private:
     };
     const bool welded = topology.connectivity != polys.connectivity;
     const T cosFeature = static_cast<T>(std::cos(vtkMath::RadiansFromDegrees(this->S.featureAngle)));
+    bool inconsistent = false;
     const int64_t split = slnormals::splitVertexNormals(topology, welded ? polys.connectivity : nullptr, this->XYZ,
-      numPoints, corners, this->S.weighting, cosFeature, conn->GetPointer(0), allocate, this->Par);
+      numPoints, corners, this->S.weighting, cosFeature, conn->GetPointer(0), allocate, this->Par,
+      checkOrientation ? &inconsistent : nullptr);
+    if (inconsistent)
+    {
+      return false;
+    }
 
     pointMap.assign(static_cast<size_t>(numPoints), -1);
     for (int64_t i = split - 1; i >= 0; --i)
@@ -332,6 +367,7 @@ private:
       cells->SetData(offsets, conn);
     }
     this->Output->SetPolys(cells);
+    return true;
   }
 
   const Settings S;

@@ -414,3 +414,68 @@ TEST(Normals, WeldingWithSplittingLeavesNoOrphanPoints)
     ASSERT_NEAR(std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]), 1.0, 1e-5) << "point " << i;
   }
 }
+
+TEST(Normals, PointsThatAreNotOneSmoothClosedFanTakeTheGeneralGrouping)
+{
+  // Most points are one smooth closed fan (one group, found by a walk around
+  // the fan); every other case must still group as the general pass does.
+  vtkSmartPointer<vtkPolyData> s = icosphere(2);
+  const vtkIdType n = s->GetNumberOfPoints();
+  auto rebuilt = [&](vtkIdType reverse, vtkIdType drop) {
+    vtkNew<vtkCellArray> cells;
+    vtkNew<vtkIdList> ids;
+    for (vtkIdType c = 0; c < s->GetNumberOfPolys(); ++c)
+    {
+      s->GetPolys()->GetCellAtId(c, ids);
+      if (c == reverse)
+      {
+        std::swap(ids->GetPointer(0)[1], ids->GetPointer(0)[2]);
+      }
+      if (c != drop)
+      {
+        cells->InsertNextCell(ids);
+      }
+    }
+    auto out = vtkSmartPointer<vtkPolyData>::New();
+    out->SetPoints(s->GetPoints());
+    out->SetPolys(cells);
+    return out;
+  };
+
+  // A reversed triangle, left reversed: its normal is opposite its
+  // neighbours', so its three points each gain a group.
+  Result wrongWay = run(rebuilt(3, -1), [](slPolyDataNormals* f) { f->ConsistencyOff(); });
+  EXPECT_EQ(wrongWay.out->GetNumberOfPoints(), n + 3);
+  // Found by the grouping pass itself and reversed: nothing splits.
+  Result fixed = run(rebuilt(3, -1));
+  EXPECT_EQ(fixed.flipped, 1);
+  EXPECT_EQ(fixed.out->GetNumberOfPoints(), n);
+
+  // A hole: the points around it are open fans, still one group each.
+  Result open = run(rebuilt(-1, 3));
+  EXPECT_EQ(open.out->GetNumberOfPoints(), n);
+
+  // A bowtie: two square pyramids meet at their apex (point 0). Each is a
+  // smooth closed fan of four triangles there, but the apex has eight
+  // corners in two fans, so it becomes two points, facing -z and +z.
+  auto bowtie = mesh({ { 0, 0, 0 }, { 1, 1, 1 }, { -1, 1, 1 }, { -1, -1, 1 }, { 1, -1, 1 }, { 1, 1, -1 },
+                       { 1, -1, -1 }, { -1, -1, -1 }, { -1, 1, -1 } },
+    { { 0, 1, 2 }, { 0, 2, 3 }, { 0, 3, 4 }, { 0, 4, 1 }, { 0, 5, 6 }, { 0, 6, 7 }, { 0, 7, 8 }, { 0, 8, 5 } });
+  Result tie = run(bowtie, [](slPolyDataNormals* f) { f->SetFeatureAngle(180); });
+  ASSERT_EQ(tie.out->GetNumberOfPoints(), 10);
+  vtkDataArray* normals = tie.out->GetPointData()->GetNormals();
+  std::vector<double> apexZ;
+  for (vtkIdType i = 0; i < tie.out->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    tie.out->GetPoint(i, p);
+    if (p[0] == 0 && p[1] == 0 && p[2] == 0)
+    {
+      const Vec nv = tuple(normals, i);
+      EXPECT_NEAR(std::fabs(nv[2]), 1.0, 1e-6);
+      apexZ.push_back(nv[2]);
+    }
+  }
+  ASSERT_EQ(apexZ.size(), 2u);
+  EXPECT_NEAR(apexZ[0] + apexZ[1], 0.0, 1e-6);
+}
