@@ -18,7 +18,9 @@
  * in the input (texture seams) stay apart.
  *
  * Work is parallel: unit polygon normals; a pass over points that builds
- * the groups (keeping each corner's group, 16 bits); then, without welding,
+ * the groups (keeping each corner's group, 16 bits; a point that is one
+ * smooth closed fan is one group without the general grouping work, see
+ * smoothClosedFan); then, without welding,
  * each corner's output point and a polygon-centric weighted sum as in
  * slVertexNormalsCore.h; with welding, a second pass over points.
  */
