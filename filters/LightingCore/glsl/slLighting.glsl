@@ -14,9 +14,9 @@
 //   * every function is prefixed SL_FUNC (inline in C++, empty in GLSL);
 //   * structs are filled member by member (no GLSL constructors, no C++
 //     brace initialisers), parameters are passed by value, no out/inout;
-//   * only built-ins that GLM also provides: dot, normalize, length, max,
-//     min, clamp, pow, exp2, smoothstep, and mix(a, b, c) with a bool (or
-//     bvec3) c, which is GLSL's per-component select: c ? b : a;
+//   * only built-ins that GLM also provides: dot, normalize, length,
+//     inversesqrt, max, min, clamp, pow, exp2, smoothstep, and mix(a, b, c)
+//     with a bool (or bvec3) c, which is GLSL's per-component select: c ? b : a;
 //   * a choice that depends on a float value (a length, a cosine, ...) is made
 //     with that select, never with if or ?: -- in the SIMD compilation each
 //     lane makes its own choice, and a branch cannot. Branches on int
@@ -78,12 +78,22 @@ struct slTerms
   vec3 emission;
 };
 
+// v times inverseLength = inversesqrt(dot(v, v)): the unit vector along v, or
+// the zero vector where v is too short, too long or not finite to have a
+// direction. Taking the inverse length from the caller lets slIncidenceAt
+// reuse it for the distance; multiplying by it is cheaper than dividing by a
+// length (one square root estimate, no divisions in the SIMD compilation).
+SL_FUNC vec3 slScaleToUnit(vec3 v, float inverseLength)
+{
+  float len = dot(v, v) * inverseLength;
+  return mix(vec3(0.0f), v * inverseLength, bvec3(len > SL_TINY_LENGTH && len < 3.0e38f));
+}
+
 // normalize() that returns the zero vector instead of NaN for zero-length or
 // non-finite input, so degenerate geometry shades as "no direction".
 SL_FUNC vec3 slSafeNormalize(vec3 v)
 {
-  float len = length(v);
-  return mix(vec3(0.0f), v / len, bvec3(len > SL_TINY_LENGTH && len < 3.0e38f));
+  return slScaleToUnit(v, inversesqrt(dot(v, v)));
 }
 
 // x^e for x clamped to >= 0, defined everywhere: GLSL leaves pow(0, e)
@@ -144,8 +154,9 @@ SL_FUNC slIncidence slIncidenceAt(slLight light, vec3 P)
     return inc;
   }
   vec3 toLight = light.position - P;
-  float d = length(toLight);
-  inc.L = mix(vec3(0.0f), toLight / d, bvec3(d > SL_TINY_LENGTH && d < 3.0e38f));
+  float inverseD = inversesqrt(dot(toLight, toLight));
+  float d = dot(toLight, toLight) * inverseD;
+  inc.L = slScaleToUnit(toLight, inverseD);
   inc.reach = slAttenuation(light.attenuation, d) * slSpotFactor(light, inc.L);
   return inc;
 }
@@ -245,9 +256,11 @@ SL_FUNC slTerms slShadeLightUnit(slLight light, slMaterial m, int model, vec3 P,
   }
   slIncidence inc = slIncidenceAt(light, P);
   float reach = light.intensity * inc.reach;
-  t.ambient = reach * light.ambient * m.ambient;
-  t.diffuse = reach * slDiffuseFactor(model, n, inc.L) * light.diffuse * m.diffuse;
-  t.specular = reach * slSpecularFactor(model, n, inc.L, v, m.shininess) * light.specular * m.specular;
+  // Colour products first: they are the same at every point, so a loop over
+  // points computes them once (the other order costs two vec3 products each).
+  t.ambient = reach * (light.ambient * m.ambient);
+  t.diffuse = (reach * slDiffuseFactor(model, n, inc.L)) * (light.diffuse * m.diffuse);
+  t.specular = (reach * slSpecularFactor(model, n, inc.L, v, m.shininess)) * (light.specular * m.specular);
   return t;
 }
 

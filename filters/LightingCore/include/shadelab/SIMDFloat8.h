@@ -13,7 +13,8 @@
  * per lane, which is how slLighting.glsl writes every float-dependent
  * choice. Nothing here knows about lighting.
  *
- * pow, exp2 and log2 are polynomial approximations (GLSL only asks for
+ * inversesqrt is the hardware estimate plus a Newton step; pow, exp2 and
+ * log2 are polynomial approximations (GLSL only asks for
  * pow(x, y) = exp2(y log2 x) "to the precision of" those two): measured
  * worst errors are 5.6e-6 relative for exp2 on [-100, 100] and 2e-6
  * absolute for log2 of a positive normal float, so pow's relative error is
@@ -88,6 +89,21 @@ inline vfloat8 sqrt(vfloat8 x)
     r[i] = __builtin_sqrtf(x.v[i]);
   }
   return vfloat8(r);
+#endif
+}
+
+/// GLSL inversesqrt, 1 / sqrt(x), without a square root or a division: the
+/// hardware's 12-bit estimate refined by one Newton step, to about 3e-7
+/// relative for normal positive x (SIMDBatch tests it against libm). For 0,
+/// subnormal, infinite or NaN x the result is NaN or infinite; slLighting.glsl
+/// selects around those (slScaleToUnit).
+inline vfloat8 inversesqrt(vfloat8 x)
+{
+#ifdef __AVX__
+  const v8sf estimate = _mm256_rsqrt_ps(x.v);
+  return vfloat8(estimate * (1.5f - (0.5f * x.v) * estimate * estimate));
+#else
+  return vfloat8(1.0f / sqrt(x).v);
 #endif
 }
 
