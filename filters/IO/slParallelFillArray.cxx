@@ -41,6 +41,16 @@ vtkSmartPointer<vtkFloatArray> newParallelFillArray(const std::string& name, int
   // Advice only: if the kernel has no huge page to give, it maps 4 KiB pages.
   madvise(memory, rounded, MADV_HUGEPAGE);
 #endif
+#if defined(__linux__) && defined(MADV_POPULATE_WRITE)
+  // Map all pages now, in one call on one thread. Left to the parallel fill,
+  // two threads writing near each other fault on the same huge page at once
+  // and both allocate and clear 2 MiB, one of them for nothing; splitting
+  // this call over the threads was slower too (faults on both vCPUs at once
+  // contend). Measured on the radiance bench: 0.035-0.041 s per Update()
+  // instead of 0.070-0.077 s, CPU time 65 ms instead of 110 ms. Linux < 5.14
+  // refuses the advice and the fill maps the pages as before.
+  madvise(memory, rounded, MADV_POPULATE_WRITE);
+#endif
   array->SetArray(static_cast<float*>(memory), values, 0, vtkAbstractArray::VTK_DATA_ARRAY_FREE);
   return array;
 }

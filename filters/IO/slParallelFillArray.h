@@ -12,7 +12,8 @@
  * CPU time as the lighting itself. This allocates on 2 MiB boundaries and
  * asks Linux for transparent huge pages (madvise(MADV_HUGEPAGE), honoured
  * when /sys/kernel/mm/transparent_hugepage/enabled is "madvise" or
- * "always"), so the first writes fault 2 MiB at a time. The values are left
+ * "always"), and maps the pages before returning (MADV_POPULATE_WRITE), so
+ * the fill itself takes no page faults. The values are left
  * uninitialised, as SetNumberOfTuples() leaves them; nothing else changes:
  * VTK owns the memory and frees it with free().
  */
