@@ -13,7 +13,9 @@
 #include <vtkProperty.h>
 #include <vtkSMPTools.h>
 
+#include <algorithm>
 #include <atomic>
+#include <limits>
 
 
 vtkCxxSetObjectMacro(slLitFilter, Scene, slScene);
@@ -77,16 +79,35 @@ bool slLitFilter::PrepareLighting(
     const vtkIdType n = normals->GetNumberOfTuples();
     std::atomic<vtkIdType> firstBad(n);
     vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType i = begin; i < end && i < firstBad.load(); ++i)
+      // Blocks without a bad normal (almost always all of them) are checked
+      // without a branch or a square root per point, so the compiler
+      // vectorises the test; only a block that has one is searched point by
+      // point. On squared lengths, conservatively: length > 1e-20 means
+      // dot > 1e-40 (a block with a dot <= 1e-39 gets the exact test), and a
+      // finite length below 3e38 means a finite dot.
+      const float* xyz = view.data();
+      constexpr vtkIdType kBlock = 1024;
+      for (vtkIdType first = begin; first < end && first < firstBad.load(); first += kBlock)
       {
-        const float length = glm::length(view[i]);
-        if (!(length > 1e-20f && length < 3.0e38f))
+        const vtkIdType last = std::min(end, first + kBlock);
+        bool blockBad = false;
+        for (vtkIdType i = first; i < last; ++i)
         {
-          vtkIdType current = firstBad.load();
-          while (i < current && !firstBad.compare_exchange_weak(current, i))
+          const float* p = xyz + 3 * i;
+          const float squared = p[0] * p[0] + p[1] * p[1] + p[2] * p[2];
+          blockBad |= !(squared > 1e-39f && squared <= std::numeric_limits<float>::max());
+        }
+        for (vtkIdType i = first; blockBad && i < last; ++i)
+        {
+          const float length = glm::length(view[i]);
+          if (!(length > 1e-20f && length < 3.0e38f))
           {
+            vtkIdType current = firstBad.load();
+            while (i < current && !firstBad.compare_exchange_weak(current, i))
+            {
+            }
+            return;
           }
-          return;
         }
       }
     });
