@@ -22,6 +22,7 @@
 #include <QPixmap>
 #include <QPushButton>
 #include <QSpinBox>
+#include <QTimer>
 #include <QVBoxLayout>
 
 #include <cmath>
@@ -53,11 +54,6 @@ QImage toQImage(vtkImageData* image)
   }
   return out;
 }
-
-float luminance(const glm::vec3& c)
-{
-  return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
-}
 } // namespace
 
 BrdfPanel::BrdfPanel(ViewerDocument* document, SceneView* view, QWidget* parent)
@@ -68,6 +64,7 @@ BrdfPanel::BrdfPanel(ViewerDocument* document, SceneView* view, QWidget* parent)
   , Light(new QSpinBox(this))
   , Info(new QLabel(tr("No point picked."), this))
   , Picture(new QLabel(this))
+  , Pending(new QTimer(this))
 {
   this->Pick->setCheckable(true);
   this->Light->setRange(0, 15);
@@ -82,10 +79,15 @@ BrdfPanel::BrdfPanel(ViewerDocument* document, SceneView* view, QWidget* parent)
   connect(this->Pick, &QPushButton::toggled, view, &SceneView::setPicking);
   connect(view, &SceneView::pointPicked, this, &BrdfPanel::showLobeAt);
   connect(this->Light, QOverload<int>::of(&QSpinBox::valueChanged), this, &BrdfPanel::update);
+  // A slider drag or a light drag changes the scene many times a second;
+  // the lobe and its offscreen picture follow once the edits pause.
+  this->Pending->setSingleShot(true);
+  this->Pending->setInterval(150);
+  connect(this->Pending, &QTimer::timeout, this, &BrdfPanel::update);
   connect(document, &ViewerDocument::sceneChanged, this, [this](int changes) {
     if (this->Point >= 0 && (changes & (MaterialChange | LightsChange | ShadingChange)))
     {
-      this->update();
+      this->Pending->start();
     }
   });
   connect(document, &ViewerDocument::meshChanged, this, [this] {
@@ -109,6 +111,7 @@ void BrdfPanel::showLobeAt(double x, double y, double z)
 
 void BrdfPanel::update()
 {
+  this->Pending->stop();
   vtkPolyData* mesh = this->View->meshWithNormals();
   const Scene& scene = this->Document->scene();
   if (this->Point < 0 || !mesh || this->Point >= mesh->GetNumberOfPoints())
@@ -173,8 +176,8 @@ void BrdfPanel::update()
   slBRDFLobeSource* parameters = picture->GetLobeParameters();
   parameters->SetShininess(scene.material.shininess);
   parameters->SetIncidenceAngle(this->Incidence);
-  parameters->SetDiffuseWeight(luminance(scene.material.diffuse));
-  parameters->SetSpecularWeight(luminance(scene.material.specular));
+  parameters->SetDiffuseWeight(glsl::slLuminance(scene.material.diffuse));
+  parameters->SetSpecularWeight(glsl::slLuminance(scene.material.specular));
   picture->SetPanelWidth(320);
   picture->SetPanelHeight(240);
   if (!picture->Render())

@@ -16,6 +16,7 @@
 class QLabel;
 class QPushButton;
 class QSpinBox;
+class QTimer;
 
 namespace shadelab
 {
@@ -52,6 +53,7 @@ private:
   QSpinBox* Light;
   QLabel* Info;
   QLabel* Picture;
+  QTimer* Pending; ///< coalesces bursts of scene edits into one update()
   vtkIdType Point = -1;
   double Incidence = 0.0;
 };

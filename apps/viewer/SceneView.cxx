@@ -357,11 +357,12 @@ void SceneView::onSceneChanged(int changes)
     this->rebuild(false); // a new scene: its camera replaces the view's
     return;
   }
-  if (changes & ShadingChange)
+  if ((changes & ShadingChange) && this->CurrentMode != FieldMode)
   {
     this->rebuild(true); // another frequency may need other normals
     return;
   }
+  // In field mode the fields panel recomputes the field and calls setField().
   // Material, lights and background are uniforms and clear colours.
   const Scene& scene = this->Document->scene();
   for (size_t i = 0; i < this->Panels.size(); ++i)

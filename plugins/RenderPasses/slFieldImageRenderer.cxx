@@ -1,5 +1,7 @@
 #include "slFieldImageRenderer.h"
 
+#include "shadelab/LightingGLSL.h"
+
 #include "slScene.h"
 #include "slOffscreen.h"
 
@@ -47,7 +49,7 @@ vtkSmartPointer<vtkFloatArray> scalarsOf(vtkDataArray* array)
   for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
   {
     const double v = array->GetNumberOfComponents() >= 3
-      ? 0.2126 * array->GetComponent(i, 0) + 0.7152 * array->GetComponent(i, 1) + 0.0722 * array->GetComponent(i, 2)
+      ? shadelab::glsl::slLuminance(glm::vec3(array->GetComponent(i, 0), array->GetComponent(i, 1), array->GetComponent(i, 2)))
       : array->GetComponent(i, 0);
     out->SetValue(i, static_cast<float>(std::isfinite(v) ? v : 0.0));
   }

@@ -261,3 +261,15 @@ TEST(Ambient, PerLightAmbientIsAttenuatedLikeTheLight)
   m.ambient = glm::vec3(0.5f);
   EXPECT_NEAR(shadeOne(light, m, 0, glm::vec3(0, 0, 5)).ambient.x, 0.5 / 4.0, 1e-6);
 }
+
+TEST(Luminance, WhiteIsOneAndGreenWeighsMost)
+{
+  // Rec. 709 weights sum to 1, so a grey g has luminance g; green counts most, blue least.
+  EXPECT_NEAR(shadelab::glsl::slLuminance(glm::vec3(0.37f)), 0.37f, 1e-6f);
+  const float r = shadelab::glsl::slLuminance(glm::vec3(1, 0, 0));
+  const float g = shadelab::glsl::slLuminance(glm::vec3(0, 1, 0));
+  const float b = shadelab::glsl::slLuminance(glm::vec3(0, 0, 1));
+  EXPECT_GT(g, r);
+  EXPECT_GT(r, b);
+  EXPECT_NEAR(r + g + b, 1.0f, 1e-6f);
+}

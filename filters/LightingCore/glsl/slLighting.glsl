@@ -300,6 +300,14 @@ SL_FUNC vec3 slTotal(slTerms t)
 // there rather than dividing by (almost) zero.
 const float SL_MIN_COS_THETA = 1.0e-6f;
 
+// Relative luminance of a linear RGB colour (Rec. 709 primaries): what false-
+// colour views and field images show of an RGB term, and what environment-map
+// importance sampling follows.
+SL_FUNC float slLuminance(vec3 c)
+{
+  return dot(c, vec3(0.2126f, 0.7152f, 0.0722f));
+}
+
 // The raw cosine N.L between the unit normal and the unit direction toward the
 // light, unclamped: negative where the surface faces away from the light (it
 // shadows itself). 0 for ambient lights, zero-length normals and a light at P.

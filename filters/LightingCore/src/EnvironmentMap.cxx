@@ -1,5 +1,7 @@
 #include "shadelab/EnvironmentMap.h"
 
+#include "shadelab/LightingGLSL.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -56,7 +58,7 @@ std::string EnvironmentMap::set(int width, int height, std::vector<float> rgb)
     for (int x = 0; x < width; ++x)
     {
       const float* c = &this->RGB[3 * (static_cast<size_t>(y) * width + x)];
-      const float luminance = 0.2126f * c[0] + 0.7152f * c[1] + 0.0722f * c[2];
+      const float luminance = glsl::slLuminance(glm::vec3(c[0], c[1], c[2]));
       const float w = (luminance + 1e-6f) * sinTheta;
       this->Weights[static_cast<size_t>(y) * width + x] = w;
       cdf[x + 1] = cdf[x] + w;
