@@ -467,6 +467,19 @@ namespace
 /// Lambert, k_d = 0.8, no ambient or emission, one white directional light
 /// along the view from a camera at (0, 0, z): where N faces the camera the
 /// pixel is 0.8 x base colour.
+/// The same 8-bit RGB colour at every point, as the active scalars "Colours".
+void setUniformColours(vtkPolyData* mesh, unsigned char r, unsigned char g, unsigned char b)
+{
+  vtkNew<vtkUnsignedCharArray> colours;
+  colours->SetName("Colours");
+  colours->SetNumberOfComponents(3);
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    colours->InsertNextTuple3(r, g, b);
+  }
+  mesh->GetPointData()->SetScalars(colours);
+}
+
 shadelab::Scene headOnLambert(float z)
 {
   shadelab::Scene scene = sphereScene(shadelab::ShadingModel::Lambert);
@@ -487,13 +500,7 @@ TEST(BaseColour, PointScalarsMultiplyKd)
   vtkSmartPointer<vtkPolyData> mesh = sphere(64);
   const shadelab::Scene scene = headOnLambert(5.0f);
 
-  vtkNew<vtkUnsignedCharArray> colours; // base colour (255, 128, 64) everywhere
-  colours->SetNumberOfComponents(3);
-  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
-  {
-    colours->InsertNextTuple3(255, 128, 64);
-  }
-  mesh->GetPointData()->SetScalars(colours);
+  setUniformColours(mesh, 255, 128, 64); // base colour everywhere
   passtest::Stage stage = passtest::litStage(mesh, scene, 100, 100);
   stage.actor->GetMapper()->ScalarVisibilityOn();
   const float* pixel = stage.render().at(50, 50);
@@ -509,14 +516,7 @@ TEST(BaseColour, CPUAndGPUAgreeOnEightBitColours)
   // transfer function, and both multiply k_a and k_d by it).
   vtkSmartPointer<vtkPolyData> mesh = sphere(64);
   const shadelab::Scene scene = headOnLambert(5.0f);
-  vtkNew<vtkUnsignedCharArray> colours;
-  colours->SetName("Colours");
-  colours->SetNumberOfComponents(3);
-  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
-  {
-    colours->InsertNextTuple3(200, 90, 30);
-  }
-  mesh->GetPointData()->SetScalars(colours);
+  setUniformColours(mesh, 200, 90, 30);
   vtkNew<slScene> sceneObject;
   sceneObject->SetScene(scene);
   vtkNew<slRadianceFilter> cpu;
