@@ -6,7 +6,7 @@
 // It also measures Monte Carlo throughput of slRadianceReference, and with
 // --rmse-table prints the RMSE-against-N table of docs/lighting-cpu.md.
 //
-// usage: shadelab_bench_lighting [--grid N] [--repetitions R] [--no-numpy] [--rmse-table]
+// usage: shadelab_bench_lighting [--grid N] [--repetitions R] [--no-numpy] [--no-reference] [--rmse-table]
 #include "shadelab/Scene.h"
 #include "slRadianceFilter.h"
 #include "slRadianceReference.h"
@@ -243,7 +243,7 @@ void rmseTable(bool lights)
 int main(int argc, char** argv)
 {
   int grid = 1000, repetitions = 7;
-  bool numpy = true, table = false;
+  bool numpy = true, reference = true, table = false;
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -259,13 +259,17 @@ int main(int argc, char** argv)
     {
       numpy = false;
     }
+    else if (a == "--no-reference")
+    {
+      reference = false;
+    }
     else if (a == "--rmse-table")
     {
       table = true;
     }
     else
     {
-      std::cerr << "usage: shadelab_bench_lighting [--grid N] [--repetitions R] [--no-numpy] [--rmse-table]\n";
+      std::cerr << "usage: shadelab_bench_lighting [--grid N] [--repetitions R] [--no-numpy] [--no-reference] [--rmse-table]\n";
       return 2;
     }
   }
@@ -331,7 +335,10 @@ int main(int argc, char** argv)
         pyCpu, pyCpu / (0.5 * cppCpu));
     }
   }
-  monteCarloThroughput(repetitions);
+  if (reference)
+  {
+    monteCarloThroughput(repetitions);
+  }
   if (table)
   {
     rmseTable(false);

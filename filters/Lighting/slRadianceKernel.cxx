@@ -11,19 +11,22 @@ namespace shadelab
 namespace
 {
 using simd::vec3x8;
+using simd::vfloat8;
 
-/// The same struct in the batch compilation of slLighting.glsl: every lane
-/// holds the light's values.
-glsl8::slLight toBatch(const glsl::slLight& l)
+/// The light in the batch compilation of slLighting.glsl (every lane holds
+/// its values), with the light's intensity and the material's k_a, k_d, k_s
+/// multiplied into its colours: what slWeightedTerms() multiplies each
+/// weight by, computed once per light.
+glsl8::slLight foldLight(const glsl::slLight& l, const glsl::slMaterial& m)
 {
   glsl8::slLight v;
   v.type = l.type;
   v.position = l.position;
   v.direction = l.direction;
-  v.ambient = l.ambient;
-  v.diffuse = l.diffuse;
-  v.specular = l.specular;
-  v.intensity = l.intensity;
+  v.ambient = l.intensity * l.ambient * m.ambient;
+  v.diffuse = l.intensity * l.diffuse * m.diffuse;
+  v.specular = l.intensity * l.specular * m.specular;
+  v.intensity = 1.0f;
   v.attenuation = l.attenuation;
   v.cosCutoff = l.cosCutoff;
   v.cosInner = l.cosInner;
@@ -31,77 +34,93 @@ glsl8::slLight toBatch(const glsl::slLight& l)
   return v;
 }
 
-glsl8::slMaterial toBatch(const glsl::slMaterial& m)
-{
-  glsl8::slMaterial v;
-  v.ambient = m.ambient;
-  v.diffuse = m.diffuse;
-  v.specular = m.specular;
-  v.emission = m.emission;
-  v.shininess = m.shininess;
-  return v;
-}
-
-/// slShadeLightUnit() with the light's type fixed at compile time, so that
-/// the compiler drops the other types' branches.
+/// slLightWeightsAt() with the light's type fixed at compile time, so that
+/// the compiler drops the other types' branches, and its intensity fixed at
+/// 1: foldLight() has put the intensity into the colours.
 template <int MODEL, int TYPE>
-__attribute__((always_inline)) inline glsl8::slTerms shadeLight(glsl8::slLight light, const glsl8::slMaterial& m,
-  const vec3x8& P, const vec3x8& n, const vec3x8& v)
+__attribute__((always_inline)) inline glsl8::slLightWeights weightsOf(glsl8::slLight light, const vec3x8& P,
+  const vec3x8& n, const vec3x8& v, const vfloat8& shininess)
 {
   light.type = TYPE;
-  return glsl8::slShadeLightUnit(light, m, MODEL, P, n, v);
+  light.intensity = 1.0f;
+  return glsl8::slLightWeightsAt(light, MODEL, P, n, v, shininess);
 }
 
 template <int MODEL>
-__attribute__((always_inline)) inline glsl8::slTerms shadeAnyLight(const glsl8::slLight& light,
-  const glsl8::slMaterial& m, const vec3x8& P, const vec3x8& n, const vec3x8& v)
+__attribute__((always_inline)) inline glsl8::slLightWeights weightsOfAnyLight(const glsl8::slLight& light,
+  const vec3x8& P, const vec3x8& n, const vec3x8& v, const vfloat8& shininess)
 {
   switch (light.type)
   {
     case glsl::SL_LIGHT_DIRECTIONAL:
-      return shadeLight<MODEL, glsl::SL_LIGHT_DIRECTIONAL>(light, m, P, n, v);
+      return weightsOf<MODEL, glsl::SL_LIGHT_DIRECTIONAL>(light, P, n, v, shininess);
     case glsl::SL_LIGHT_POINT:
-      return shadeLight<MODEL, glsl::SL_LIGHT_POINT>(light, m, P, n, v);
+      return weightsOf<MODEL, glsl::SL_LIGHT_POINT>(light, P, n, v, shininess);
     case glsl::SL_LIGHT_SPOT:
-      return shadeLight<MODEL, glsl::SL_LIGHT_SPOT>(light, m, P, n, v);
+      return weightsOf<MODEL, glsl::SL_LIGHT_SPOT>(light, P, n, v, shininess);
     default:
-      return shadeLight<MODEL, glsl::SL_LIGHT_AMBIENT>(light, m, P, n, v);
+      return weightsOf<MODEL, glsl::SL_LIGHT_AMBIENT>(light, P, n, v, shininess);
   }
 }
 
-/// Points [begin, end), 8 at a time: all lights for one batch of 8 points
-/// before the next, so the sums stay in registers. flatten inlines every
-/// lighting function, so that its batches live in registers, not memory.
+/// k_a, k_d and k_s of 1: the lights carry the material's colours
+/// (foldLight), so slWeightedTerms() multiplies by constants the compiler
+/// removes.
+glsl8::slMaterial unitMaterial()
+{
+  glsl8::slMaterial m;
+  m.ambient = vec3x8(vfloat8(1.0f));
+  m.diffuse = vec3x8(vfloat8(1.0f));
+  m.specular = vec3x8(vfloat8(1.0f));
+  m.emission = vec3x8(vfloat8(0.0f));
+  m.shininess = 1.0f;
+  return m;
+}
+
+/// Points [begin, end), 8 at a time. For each batch of 8 points, first the
+/// scalar weights of every light (slLightWeightsAt, the costly part), then
+/// their colour products summed in registers. The terms are linear in the
+/// colours, so the light colours, each light's intensity and the material's
+/// k_a, k_d, k_s are multiplied once per light (foldLight), and a base colour
+/// once per point after the sum, instead of once per point and light.
+/// flatten inlines every lighting function, so that its batches live in
+/// registers, not memory.
 template <int MODEL, bool PER_LIGHT>
 __attribute__((flatten)) void shadeBatches(const RadianceKernelInput& in, const RadianceKernelOutput& out,
-  const std::vector<glsl8::slLight>& lights, const glsl8::slMaterial& material, long long begin, long long end)
+  const std::vector<glsl8::slLight>& lights, long long begin, long long end)
 {
   const vec3x8 eye(in.eye);
+  const vfloat8 shininess(in.material.shininess);
+  const vec3x8 emission(in.material.emission);
+  const glsl8::slMaterial unit = unitMaterial();
+  std::vector<glsl8::slLightWeights> weights(lights.size());
   for (long long first = begin; first < end; first += 8)
   {
     const BatchRange batch{ first, static_cast<int>(std::min<long long>(8, end - first)) };
-    glsl8::slMaterial m = material;
-    if (in.baseColour)
-    {
-      const vec3x8 base = loadBatch(in.baseColour, batch);
-      m.ambient = material.ambient * base;
-      m.diffuse = material.diffuse * base;
-    }
     // Normalised once per point, not once per light (slShadeLight does the same).
     const vec3x8 P = loadBatch(in.points, batch);
     const vec3x8 n = glsl8::slSafeNormalize(loadBatch(in.normals, batch));
     const vec3x8 v = glsl8::slSafeNormalize(eye - P);
+    for (size_t l = 0; l < lights.size(); ++l)
+    {
+      weights[l] = weightsOfAnyLight<MODEL>(lights[l], P, n, v, shininess);
+    }
+    const vec3x8 base = in.baseColour ? loadBatch(in.baseColour, batch) : vec3x8(vfloat8(1.0f));
     glsl8::slTerms sum = glsl8::slZeroTerms();
     for (size_t l = 0; l < lights.size(); ++l)
     {
-      const glsl8::slTerms t = shadeAnyLight<MODEL>(lights[l], m, P, n, v);
+      glsl8::slTerms t = glsl8::slWeightedTerms(weights[l], lights[l], unit);
       sum = glsl8::slAddTerms(sum, t);
       if (PER_LIGHT)
       {
+        t.ambient = t.ambient * base;
+        t.diffuse = t.diffuse * base;
         storeBatch(out.perLight[l], batch, glsl8::slTotal(t));
       }
     }
-    sum = glsl8::slAddEmission(sum, m);
+    sum.ambient = sum.ambient * base;
+    sum.diffuse = sum.diffuse * base;
+    sum.emission = emission;
     storeBatch(out.ambient, batch, sum.ambient);
     storeBatch(out.diffuse, batch, sum.diffuse);
     storeBatch(out.specular, batch, sum.specular);
@@ -112,15 +131,15 @@ __attribute__((flatten)) void shadeBatches(const RadianceKernelInput& in, const 
 
 template <int MODEL>
 void shadeModel(const RadianceKernelInput& in, const RadianceKernelOutput& out,
-  const std::vector<glsl8::slLight>& lights, const glsl8::slMaterial& material, long long begin, long long end)
+  const std::vector<glsl8::slLight>& lights, long long begin, long long end)
 {
   if (out.perLight.empty())
   {
-    shadeBatches<MODEL, false>(in, out, lights, material, begin, end);
+    shadeBatches<MODEL, false>(in, out, lights, begin, end);
   }
   else
   {
-    shadeBatches<MODEL, true>(in, out, lights, material, begin, end);
+    shadeBatches<MODEL, true>(in, out, lights, begin, end);
   }
 }
 } // namespace
@@ -130,23 +149,22 @@ void shadeRange(const RadianceKernelInput& in, const RadianceKernelOutput& out, 
   std::vector<glsl8::slLight> lights;
   for (const glsl::slLight& l : in.lights)
   {
-    lights.push_back(toBatch(l));
+    lights.push_back(foldLight(l, in.material));
   }
-  const glsl8::slMaterial material = toBatch(in.material);
   switch (in.model)
   {
     case glsl::SL_MODEL_LAMBERT:
-      return shadeModel<glsl::SL_MODEL_LAMBERT>(in, out, lights, material, begin, end);
+      return shadeModel<glsl::SL_MODEL_LAMBERT>(in, out, lights, begin, end);
     case glsl::SL_MODEL_PHONG:
-      return shadeModel<glsl::SL_MODEL_PHONG>(in, out, lights, material, begin, end);
+      return shadeModel<glsl::SL_MODEL_PHONG>(in, out, lights, begin, end);
     case glsl::SL_MODEL_BLINN_PHONG:
-      return shadeModel<glsl::SL_MODEL_BLINN_PHONG>(in, out, lights, material, begin, end);
+      return shadeModel<glsl::SL_MODEL_BLINN_PHONG>(in, out, lights, begin, end);
     case glsl::SL_MODEL_LAMBERT_NORMALIZED:
-      return shadeModel<glsl::SL_MODEL_LAMBERT_NORMALIZED>(in, out, lights, material, begin, end);
+      return shadeModel<glsl::SL_MODEL_LAMBERT_NORMALIZED>(in, out, lights, begin, end);
     case glsl::SL_MODEL_PHONG_NORMALIZED:
-      return shadeModel<glsl::SL_MODEL_PHONG_NORMALIZED>(in, out, lights, material, begin, end);
+      return shadeModel<glsl::SL_MODEL_PHONG_NORMALIZED>(in, out, lights, begin, end);
     default:
-      return shadeModel<glsl::SL_MODEL_BLINN_PHONG_NORMALIZED>(in, out, lights, material, begin, end);
+      return shadeModel<glsl::SL_MODEL_BLINN_PHONG_NORMALIZED>(in, out, lights, begin, end);
   }
 }
 

@@ -83,10 +83,12 @@ struct slTerms
 // direction. Taking the inverse length from the caller lets slIncidenceAt
 // reuse it for the distance; multiplying by it is cheaper than dividing by a
 // length (one square root estimate, no divisions in the SIMD compilation).
+// One test covers all three cases: len is NaN, which fails every comparison,
+// when dot(v, v) is 0 (0 * inf), infinite (inf * 0) or NaN.
 SL_FUNC vec3 slScaleToUnit(vec3 v, float inverseLength)
 {
   float len = dot(v, v) * inverseLength;
-  return mix(vec3(0.0f), v * inverseLength, bvec3(len > SL_TINY_LENGTH && len < 3.0e38f));
+  return mix(vec3(0.0f), v * inverseLength, bvec3(len > SL_TINY_LENGTH));
 }
 
 // normalize() that returns the zero vector instead of NaN for zero-length or
@@ -113,7 +115,7 @@ SL_FUNC bool slIsNormalizedModel(int model)
 SL_FUNC float slAttenuation(vec3 c, float d)
 {
   float denominator = c.x + c.y * d + c.z * d * d;
-  return mix(1.0f, 1.0f / denominator, denominator > 1.0f);
+  return 1.0f / max(1.0f, denominator);
 }
 
 // Spot cone factor for a unit vector L toward the light: 0 outside the cutoff,
@@ -222,8 +224,13 @@ SL_FUNC float slSpecularFactor(int model, vec3 N, vec3 L, vec3 V, float n)
   }
   else
   {
-    vec3 H = slSafeNormalize(L + V);
-    factor = slPow(max(dot(N, H), 0.0f), n);
+    // N.H with H = (L + V) / |L + V|, as (N.L + N.V) / |L + V| (N.V is the
+    // same for every light), and 0 where L + V has no direction.
+    vec3 halfway = L + V;
+    float inverseLength = inversesqrt(dot(halfway, halfway));
+    float cosHalf = (cosTheta + dot(N, V)) * inverseLength;
+    cosHalf = mix(0.0f, cosHalf, dot(halfway, halfway) * inverseLength > SL_TINY_LENGTH);
+    factor = slPow(max(cosHalf, 0.0f), n);
     if (model == SL_MODEL_BLINN_PHONG_NORMALIZED)
     {
       factor = factor * slBlinnPhongNormalization(n) * cosTheta;
@@ -242,26 +249,56 @@ SL_FUNC slTerms slZeroTerms()
   return t;
 }
 
-// What one light contributes at surface point P with unit normal n and unit
-// direction v toward the eye (either may be zero: no direction): ambient,
-// diffuse and specular; emission stays zero (it belongs to the material, see
-// slAddEmission). Shaders normalise n and v once for all lights.
-SL_FUNC slTerms slShadeLightUnit(slLight light, slMaterial m, int model, vec3 P, vec3 n, vec3 v)
+// How strongly one light shows at surface point P with unit normal n and
+// unit direction v toward the eye (either may be zero: no direction): the
+// scalars that multiply its ambient, diffuse and specular colour products
+// (light colour times k_a, k_d, k_s). They are its intensity times its reach
+// (attenuation and spot factor), times 1, the diffuse factor and the
+// specular factor.
+struct slLightWeights
 {
-  slTerms t = slZeroTerms();
+  float ambient;
+  float diffuse;
+  float specular;
+};
+
+SL_FUNC slLightWeights slLightWeightsAt(slLight light, int model, vec3 P, vec3 n, vec3 v, float shininess)
+{
+  slLightWeights w;
   if (light.type == SL_LIGHT_AMBIENT)
   {
-    t.ambient = light.intensity * light.ambient * m.ambient;
-    return t;
+    w.ambient = light.intensity;
+    w.diffuse = 0.0f;
+    w.specular = 0.0f;
+    return w;
   }
   slIncidence inc = slIncidenceAt(light, P);
   float reach = light.intensity * inc.reach;
-  // Colour products first: they are the same at every point, so a loop over
-  // points computes them once (the other order costs two vec3 products each).
-  t.ambient = reach * (light.ambient * m.ambient);
-  t.diffuse = (reach * slDiffuseFactor(model, n, inc.L)) * (light.diffuse * m.diffuse);
-  t.specular = (reach * slSpecularFactor(model, n, inc.L, v, m.shininess)) * (light.specular * m.specular);
+  w.ambient = reach;
+  w.diffuse = reach * slDiffuseFactor(model, n, inc.L);
+  w.specular = reach * slSpecularFactor(model, n, inc.L, v, shininess);
+  return w;
+}
+
+// A light's terms from its weights: each weight times light colour times
+// material coefficient; emission stays zero (it belongs to the material, see
+// slAddEmission).
+SL_FUNC slTerms slWeightedTerms(slLightWeights w, slLight light, slMaterial m)
+{
+  slTerms t;
+  t.ambient = w.ambient * (light.ambient * m.ambient);
+  t.diffuse = w.diffuse * (light.diffuse * m.diffuse);
+  t.specular = w.specular * (light.specular * m.specular);
+  t.emission = vec3(0.0f);
   return t;
+}
+
+// What one light contributes at surface point P with unit normal n and unit
+// direction v toward the eye: ambient, diffuse and specular. Shaders
+// normalise n and v once for all lights.
+SL_FUNC slTerms slShadeLightUnit(slLight light, slMaterial m, int model, vec3 P, vec3 n, vec3 v)
+{
+  return slWeightedTerms(slLightWeightsAt(light, model, P, n, v, m.shininess), light, m);
 }
 
 // slShadeLightUnit for any normal N (need not be unit length) and the eye at E.
