@@ -58,8 +58,14 @@ int slLitFilter::Fail(vtkPolyData* output, const std::string& message)
   return 0;
 }
 
+int slLitFilter::FailOnZeroNormal(vtkPolyData* output, vtkIdType point, vtkIdType points)
+{
+  return this->Fail(output, "input mesh: point " + std::to_string(point) + " of " + std::to_string(points) +
+      " has a zero-length or non-finite normal (ZeroNormalsAreErrors is on)");
+}
+
 bool slLitFilter::PrepareLighting(
-  vtkPolyData* input, vtkPolyData* output, bool needLight, shadelab::LightingSetup& setup)
+  vtkPolyData* input, vtkPolyData* output, bool needLight, shadelab::LightingSetup& setup, bool checkNormals)
 {
   if (!input || input->GetNumberOfPoints() == 0)
   {
@@ -72,7 +78,7 @@ bool slLitFilter::PrepareLighting(
     this->Fail(output, "input mesh: it has no point normals (3-component Normals array); compute them first");
     return false;
   }
-  if (this->ZeroNormalsAreErrors)
+  if (this->ZeroNormalsAreErrors && checkNormals)
   {
     // The first point whose normal has no direction, found in parallel.
     const shadelab::Float3View view(normals);
@@ -113,8 +119,7 @@ bool slLitFilter::PrepareLighting(
     });
     if (firstBad.load() < n)
     {
-      this->Fail(output, "input mesh: point " + std::to_string(firstBad.load()) + " of " + std::to_string(n) +
-          " has a zero-length or non-finite normal (ZeroNormalsAreErrors is on)");
+      this->FailOnZeroNormal(output, firstBad.load(), n);
       return false;
     }
   }

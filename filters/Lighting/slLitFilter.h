@@ -96,10 +96,16 @@ protected:
 
 #ifndef __VTK_WRAP__
   /// Checks @p input and gathers the lighting; on failure reports through
-  /// Fail() (emptying @p output) and returns false. @p needLight: a scene without lights fails.
-  bool PrepareLighting(
-    vtkPolyData* input, vtkPolyData* output, bool needLight, shadelab::LightingSetup& setup);
+  /// Fail() (emptying @p output) and returns false. @p needLight: a scene
+  /// without lights fails. @p checkNormals: look for normals without a
+  /// direction here (when ZeroNormalsAreErrors is on); a filter that visits
+  /// every normal anyway passes false and calls FailOnZeroNormal() itself.
+  bool PrepareLighting(vtkPolyData* input, vtkPolyData* output, bool needLight, shadelab::LightingSetup& setup,
+    bool checkNormals = true);
 #endif
+
+  /// Fail() for point @p point of @p points, whose normal has no direction.
+  int FailOnZeroNormal(vtkPolyData* output, vtkIdType point, vtkIdType points);
 
   /// Records @p message (one line), reports it with vtkErrorMacro and empties
   /// @p output. Returns 0 for RequestData to return.

@@ -16,6 +16,7 @@
 #include <vtkSMPTools.h>
 #include <vtkSmartPointer.h>
 
+#include <atomic>
 #include <vector>
 
 vtkStandardNewMacro(slRadianceFilter);
@@ -55,7 +56,9 @@ int slRadianceFilter::RequestData(vtkInformation*, vtkInformationVector** inputV
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   this->ClearError();
   LightingSetup setup;
-  if (!this->PrepareLighting(input, output, true, setup))
+  // The kernel finds normals without a direction as it shades (one pass over
+  // them, not two).
+  if (!this->PrepareLighting(input, output, true, setup, false))
   {
     return 0;
   }
@@ -103,7 +106,21 @@ int slRadianceFilter::RequestData(vtkInformation*, vtkInformationVector** inputV
   in.material = setup.material;
   in.model = setup.model;
   in.eye = setup.eye;
-  vtkSMPTools::For(0, n, 1024, [&](vtkIdType begin, vtkIdType end) { shadeRange(in, out, begin, end); });
+  std::atomic<vtkIdType> firstWithoutNormal(n);
+  vtkSMPTools::For(0, n, 1024, [&](vtkIdType begin, vtkIdType end) {
+    const vtkIdType first = shadeRange(in, out, begin, end);
+    if (first < end) // else none in this range
+    {
+      vtkIdType current = firstWithoutNormal.load();
+      while (first < current && !firstWithoutNormal.compare_exchange_weak(current, first))
+      {
+      }
+    }
+  });
+  if (this->ZeroNormalsAreErrors && firstWithoutNormal.load() < n)
+  {
+    return this->FailOnZeroNormal(output, firstWithoutNormal.load(), n);
+  }
 
   vtkPointData* pd = output->GetPointData();
   for (vtkFloatArray* a : { ambient.Get(), diffuseOut.Get(), specular.Get(), emission.Get(), radiance.Get() })

@@ -13,6 +13,26 @@ namespace
 using simd::vec3x8;
 using simd::vfloat8;
 
+/// The first point of @p batch whose lane of @p squaredLength is not about 1
+/// (slSafeNormalize gave the zero vector), or @p none. The common case, a
+/// batch of unit normals, costs one comparison and one mask test.
+long long firstZeroLane(vfloat8 squaredLength, BatchRange batch, long long none)
+{
+  const simd::vmask8 zero = squaredLength < 0.5f;
+  if (!simd::any(zero))
+  {
+    return none;
+  }
+  for (int i = 0; i < batch.count; ++i)
+  {
+    if (zero.m[i])
+    {
+      return batch.first + i;
+    }
+  }
+  return none;
+}
+
 /// The light in the batch compilation of slLighting.glsl (every lane holds
 /// its values), with the light's intensity and the material's k_a, k_d, k_s
 /// multiplied into its colours: what slWeightedTerms() multiplies each
@@ -86,7 +106,7 @@ glsl8::slMaterial unitMaterial()
 /// flatten inlines every lighting function, so that its batches live in
 /// registers, not memory.
 template <int MODEL, bool PER_LIGHT>
-__attribute__((flatten)) void shadeBatches(const RadianceKernelInput& in, const RadianceKernelOutput& out,
+__attribute__((flatten)) long long shadeBatches(const RadianceKernelInput& in, const RadianceKernelOutput& out,
   const std::vector<glsl8::slLight>& lights, long long begin, long long end)
 {
   const vec3x8 eye(in.eye);
@@ -94,6 +114,7 @@ __attribute__((flatten)) void shadeBatches(const RadianceKernelInput& in, const 
   const vec3x8 emission(in.material.emission);
   const glsl8::slMaterial unit = unitMaterial();
   std::vector<glsl8::slLightWeights> weights(lights.size());
+  long long firstWithoutNormal = end;
   for (long long first = begin; first < end; first += 8)
   {
     const BatchRange batch{ first, static_cast<int>(std::min<long long>(8, end - first)) };
@@ -101,6 +122,10 @@ __attribute__((flatten)) void shadeBatches(const RadianceKernelInput& in, const 
     const vec3x8 P = loadBatch(in.points, batch);
     const vec3x8 n = glsl8::slSafeNormalize(loadBatch(in.normals, batch));
     const vec3x8 v = glsl8::slSafeNormalize(eye - P);
+    if (firstWithoutNormal == end)
+    {
+      firstWithoutNormal = firstZeroLane(simd::dot(n, n), batch, end);
+    }
     for (size_t l = 0; l < lights.size(); ++l)
     {
       weights[l] = weightsOfAnyLight<MODEL>(lights[l], P, n, v, shininess);
@@ -127,24 +152,22 @@ __attribute__((flatten)) void shadeBatches(const RadianceKernelInput& in, const 
     storeBatch(out.emission, batch, sum.emission);
     storeBatch(out.radiance, batch, glsl8::slTotal(sum));
   }
+  return firstWithoutNormal;
 }
 
 template <int MODEL>
-void shadeModel(const RadianceKernelInput& in, const RadianceKernelOutput& out,
+long long shadeModel(const RadianceKernelInput& in, const RadianceKernelOutput& out,
   const std::vector<glsl8::slLight>& lights, long long begin, long long end)
 {
   if (out.perLight.empty())
   {
-    shadeBatches<MODEL, false>(in, out, lights, begin, end);
+    return shadeBatches<MODEL, false>(in, out, lights, begin, end);
   }
-  else
-  {
-    shadeBatches<MODEL, true>(in, out, lights, begin, end);
-  }
+  return shadeBatches<MODEL, true>(in, out, lights, begin, end);
 }
 } // namespace
 
-void shadeRange(const RadianceKernelInput& in, const RadianceKernelOutput& out, long long begin, long long end)
+long long shadeRange(const RadianceKernelInput& in, const RadianceKernelOutput& out, long long begin, long long end)
 {
   std::vector<glsl8::slLight> lights;
   for (const glsl::slLight& l : in.lights)

@@ -45,8 +45,10 @@ struct RadianceKernelOutput
   std::vector<float*> perLight;
 };
 
-/// Shades points [begin, end).
-void shadeRange(const RadianceKernelInput& in, const RadianceKernelOutput& out, long long begin, long long end);
+/// Shades points [begin, end). Returns the first of them whose normal has no
+/// direction (zero-length or not finite: slSafeNormalize gives the zero
+/// vector, and the point gets no diffuse or specular light), or @p end.
+long long shadeRange(const RadianceKernelInput& in, const RadianceKernelOutput& out, long long begin, long long end);
 
 } // namespace shadelab
 

@@ -69,6 +69,33 @@ TEST(LightingBadInput, ZeroLengthNormal)
     "input mesh: point 0 of 6 has a zero-length or non-finite normal (ZeroNormalsAreErrors is on)");
 }
 
+TEST(LightingBadInput, FirstNormalWithoutDirectionOfALargeMesh)
+{
+  // slRadianceFilter finds these while it shades, in parallel ranges: the
+  // error names the first bad point of the mesh, whichever range finds one
+  // first, and a mesh without one shades without error whatever its ranges.
+  vtkSmartPointer<vtkPolyData> mesh = sphere(400);
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  ASSERT_GT(n, 100000);
+  vtkSmartPointer<slScene> scene = makeScene({ someLight() }, ShadingModel::BlinnPhong);
+  {
+    vtkNew<slRadianceFilter> filter;
+    filter->SetScene(scene);
+    filter->SetInputData(mesh);
+    filter->Update();
+    EXPECT_STREQ(filter->GetErrorMessage(), "");
+    EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), n);
+  }
+  vtkDataArray* normals = mesh->GetPointData()->GetNormals();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  normals->SetTuple3(n - 1, 0.0, 0.0, 0.0);
+  normals->SetTuple3(n / 2 + 3, nan, 0.0, 1.0);
+  normals->SetTuple3(n / 3 + 5, 1e30, 0.0, 0.0); // too long to square in float
+  expectError<slRadianceFilter>(mesh, scene,
+    "input mesh: point " + std::to_string(n / 3 + 5) + " of " + std::to_string(n) +
+      " has a zero-length or non-finite normal (ZeroNormalsAreErrors is on)");
+}
+
 TEST(LightingBadInput, NoLight)
 {
   expectError<slRadianceFilter>(sphere(6), makeScene({}, ShadingModel::Phong), "scene: it has no lights");

@@ -79,6 +79,21 @@ inline vmask8 operator>=(vfloat8 a, vfloat8 b) { return { a.v >= b.v }; }
 inline vmask8 operator&&(vmask8 a, vmask8 b) { return { a.m & b.m }; }
 inline vmask8 operator||(vmask8 a, vmask8 b) { return { a.m | b.m }; }
 
+/// GLSL any(): true if the condition holds in some lane.
+inline bool any(vmask8 c)
+{
+#ifdef __AVX__
+  return _mm256_movemask_ps(reinterpret_cast<__m256>(c.m)) != 0;
+#else
+  bool result = false;
+  for (int i = 0; i < 8; ++i)
+  {
+    result |= c.m[i] != 0;
+  }
+  return result;
+#endif
+}
+
 /// GLSL mix(a, b, bool c): per lane, c ? b : a.
 inline vfloat8 mix(vfloat8 a, vfloat8 b, vmask8 c) { return vfloat8(c.m ? b.v : a.v); }
 
