@@ -83,17 +83,17 @@ __attribute__((always_inline)) inline glsl8::slLightWeights weightsOfAnyLight(co
   }
 }
 
-/// k_a, k_d and k_s of 1: the lights carry the material's colours
+/// The material with k_a, k_d and k_s of 1: the lights carry its colours
 /// (foldLight), so slWeightedTerms() multiplies by constants the compiler
-/// removes.
-glsl8::slMaterial unitMaterial()
+/// removes. Emission and shininess are the material's.
+glsl8::slMaterial unitMaterial(const glsl::slMaterial& material)
 {
   glsl8::slMaterial m;
   m.ambient = vec3x8(vfloat8(1.0f));
   m.diffuse = vec3x8(vfloat8(1.0f));
   m.specular = vec3x8(vfloat8(1.0f));
-  m.emission = vec3x8(vfloat8(0.0f));
-  m.shininess = 1.0f;
+  m.emission = material.emission;
+  m.shininess = material.shininess;
   return m;
 }
 
@@ -110,9 +110,7 @@ __attribute__((flatten)) long long shadeBatches(const RadianceKernelInput& in, c
   const std::vector<glsl8::slLight>& lights, long long begin, long long end)
 {
   const vec3x8 eye(in.eye);
-  const vfloat8 shininess(in.material.shininess);
-  const vec3x8 emission(in.material.emission);
-  const glsl8::slMaterial unit = unitMaterial();
+  const glsl8::slMaterial unit = unitMaterial(in.material);
   std::vector<glsl8::slLightWeights> weights(lights.size());
   long long firstWithoutNormal = end;
   for (long long first = begin; first < end; first += 8)
@@ -128,7 +126,7 @@ __attribute__((flatten)) long long shadeBatches(const RadianceKernelInput& in, c
     }
     for (size_t l = 0; l < lights.size(); ++l)
     {
-      weights[l] = weightsOfAnyLight<MODEL>(lights[l], P, n, v, shininess);
+      weights[l] = weightsOfAnyLight<MODEL>(lights[l], P, n, v, unit.shininess);
     }
     const vec3x8 base = in.baseColour ? loadBatch(in.baseColour, batch) : vec3x8(vfloat8(1.0f));
     glsl8::slTerms sum = glsl8::slZeroTerms();
@@ -145,7 +143,7 @@ __attribute__((flatten)) long long shadeBatches(const RadianceKernelInput& in, c
     }
     sum.ambient = sum.ambient * base;
     sum.diffuse = sum.diffuse * base;
-    sum.emission = emission;
+    sum = glsl8::slAddEmission(sum, unit);
     storeBatch(out.ambient, batch, sum.ambient);
     storeBatch(out.diffuse, batch, sum.diffuse);
     storeBatch(out.specular, batch, sum.specular);

@@ -5,6 +5,7 @@
 #include "slRadianceFilter.h"
 
 #include <vtkCamera.h>
+#include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkLight.h>
 #include <vtkLightCollection.h>
@@ -84,48 +85,85 @@ TEST(RadianceFilter, BlinnPhongPointLightWithAttenuation)
 
 TEST(RadianceFilter, VectorizedLoopAgreesWithShadePointForEveryModelAndLightType)
 {
-  // The filter's vectorised loop against the lighting core's scalar
-  // shadePoint() on a sphere under a directional, a point, a spot (smooth
-  // edge) and an ambient light, for every model.
+  // The filter's vectorised loop against the lighting core's exact scalar
+  // slShadeLight() on a sphere under a directional, a point, a spot (smooth
+  // edge) and an ambient light, for every model: every output term, and each
+  // light's own array. The lights have their own colours and intensities and
+  // the points a base colour, since the loop multiplies those once per light
+  // and once per point rather than where slShadeLight does.
   SceneLight directional = whiteLight(LightType::Directional);
   directional.direction = glm::vec3(-0.3f, -0.5f, -1.0f);
+  directional.diffuse = glm::vec3(1.0f, 0.6f, 0.3f);
+  directional.ambient = glm::vec3(0.1f, 0.2f, 0.3f);
+  directional.intensity = 0.7f;
   SceneLight point = whiteLight(LightType::Point);
   point.position = glm::vec3(2.0f, 1.0f, 1.5f);
   point.attenuation = glm::vec3(0.2f, 0.3f, 0.1f);
+  point.specular = glm::vec3(0.4f, 0.9f, 0.6f);
+  point.intensity = 1.3f;
   SceneLight spot = whiteLight(LightType::Spot);
   spot.position = glm::vec3(0.0f, 0.0f, 3.0f);
   spot.direction = glm::vec3(0.1f, 0.0f, -1.0f);
   spot.cutoffDegrees = 25.0f;
   spot.edgeDegrees = 5.0f;
   spot.exponent = 3.0f;
+  spot.diffuse = glm::vec3(0.5f, 1.0f, 0.8f);
+  spot.intensity = 0.9f;
   SceneLight ambient = whiteLight(LightType::Ambient);
-  ambient.ambient = glm::vec3(0.3f);
+  ambient.ambient = glm::vec3(0.3f, 0.25f, 0.2f);
+  ambient.intensity = 0.6f;
   vtkSmartPointer<vtkPolyData> mesh = sphere(20);
+  vtkNew<vtkFloatArray> base;
+  base->SetName("Base");
+  base->SetNumberOfComponents(3);
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    base->InsertNextTuple3(0.2 + 0.8 * (i % 7) / 6.0, 1.0 - 0.5 * (i % 3) / 2.0, 0.5 + 0.5 * (i % 2));
+  }
+  mesh->GetPointData()->AddArray(base);
+  const glm::vec3 eye(1, 2, 5);
+  const char* terms[] = { "Ambient", "Diffuse", "Specular", "Radiance" };
   for (int model = 0; model < 6; ++model)
   {
     vtkSmartPointer<slScene> scene =
-      makeScene({ directional, point, spot, ambient }, static_cast<ShadingModel>(model), glm::vec3(1, 2, 5));
+      makeScene({ directional, point, spot, ambient }, static_cast<ShadingModel>(model), eye);
     vtkNew<slRadianceFilter> filter;
     filter->SetScene(scene);
+    filter->SetDiffuseColorArrayName("Base");
+    filter->PerLightArraysOn();
     vtkPolyData* out = run(filter, mesh);
     std::vector<glsl::slLight> lights;
     for (const SceneLight& l : scene->GetScene().lights)
     {
       lights.push_back(toEvaluationLight(l));
     }
-    const glsl::slMaterial m = toEvaluationMaterial(scene->GetScene().material);
     double worst = 0.0;
-    for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
-    {
-      double p[3], n[3];
-      mesh->GetPoint(i, p);
-      mesh->GetPointData()->GetNormals()->GetTuple(i, n);
-      const glm::vec3 expected = glsl::slTotal(shadePoint(
-        lights, m, model, glm::vec3(p[0], p[1], p[2]), glm::vec3(n[0], n[1], n[2]), glm::vec3(1, 2, 5)));
-      const auto got = tuple3(out, "Radiance", i);
+    auto compare = [&worst](const std::array<double, 3>& got, const glm::vec3& expected) {
       for (int c = 0; c < 3; ++c)
       {
         worst = std::max(worst, std::abs(got[c] - expected[c]) / std::max(1e-3, double(std::abs(expected[c]))));
+      }
+    };
+    for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+    {
+      double p[3], n[3], b[3];
+      mesh->GetPoint(i, p);
+      mesh->GetPointData()->GetNormals()->GetTuple(i, n);
+      base->GetTuple(i, b);
+      glsl::slMaterial m = toEvaluationMaterial(scene->GetScene().material);
+      m.ambient *= glm::vec3(b[0], b[1], b[2]);
+      m.diffuse *= glm::vec3(b[0], b[1], b[2]);
+      const glm::vec3 P(p[0], p[1], p[2]), N(n[0], n[1], n[2]);
+      const glsl::slTerms expected = shadePoint(lights, m, model, P, N, eye);
+      const glm::vec3 values[] = { expected.ambient, expected.diffuse, expected.specular, glsl::slTotal(expected) };
+      for (int t = 0; t < 4; ++t)
+      {
+        compare(tuple3(out, terms[t], i), values[t]);
+      }
+      for (size_t l = 0; l < lights.size(); ++l)
+      {
+        const std::string name = "Radiance_" + std::to_string(l);
+        compare(tuple3(out, name.c_str(), i), glsl::slTotal(glsl::slShadeLight(lights[l], m, model, P, N, eye)));
       }
     }
     EXPECT_LT(worst, 1e-4) << "model " << model;

@@ -227,9 +227,10 @@ SL_FUNC float slSpecularFactor(int model, vec3 N, vec3 L, vec3 V, float n)
     // N.H with H = (L + V) / |L + V|, as (N.L + N.V) / |L + V| (N.V is the
     // same for every light), and 0 where L + V has no direction.
     vec3 halfway = L + V;
-    float inverseLength = inversesqrt(dot(halfway, halfway));
+    float squaredLength = dot(halfway, halfway);
+    float inverseLength = inversesqrt(squaredLength);
     float cosHalf = (cosTheta + dot(N, V)) * inverseLength;
-    cosHalf = mix(0.0f, cosHalf, dot(halfway, halfway) * inverseLength > SL_TINY_LENGTH);
+    cosHalf = mix(0.0f, cosHalf, squaredLength * inverseLength > SL_TINY_LENGTH);
     factor = slPow(max(cosHalf, 0.0f), n);
     if (model == SL_MODEL_BLINN_PHONG_NORMALIZED)
     {
