@@ -26,7 +26,7 @@ def grid(n):
 
 def normalize(v):
     length = np.sqrt(np.einsum("ij,ij->i", v, v))[:, None]
-    return np.divide(v, length, out=np.zeros_like(v), where=length > 1e-20)
+    return np.divide(v, length, out=np.zeros_like(v), where=length > 1e-18)  # SL_TINY_LENGTH
 
 
 def shade(P, N, eye, lights, m):

@@ -2,6 +2,7 @@
 
 #include "slFloat3View.h"
 #include "slLightingSetup.h"
+#include "shadelab/LightingGLSL.h"
 #include "shadelab/Scene.h"
 #include "slScene.h"
 
@@ -88,9 +89,10 @@ bool slLitFilter::PrepareLighting(
       // Blocks without a bad normal (almost always all of them) are checked
       // without a branch or a square root per point, so the compiler
       // vectorises the test; only a block that has one is searched point by
-      // point. On squared lengths, conservatively: length > 1e-20 means
-      // dot > 1e-40 (a block with a dot <= 1e-39 gets the exact test), and a
-      // finite length below 3e38 means a finite dot.
+      // point, with slSafeNormalize itself (what the lighting will use). On
+      // squared lengths, conservatively: a direction needs a length above
+      // SL_TINY_LENGTH = 1e-18, so dot > 1e-36 (a block with a dot <= 1e-35
+      // gets the exact test), and a finite dot.
       const float* xyz = view.data();
       constexpr vtkIdType kBlock = 1024;
       for (vtkIdType first = begin; first < end && first < firstBad.load(); first += kBlock)
@@ -101,12 +103,12 @@ bool slLitFilter::PrepareLighting(
         {
           const float* p = xyz + 3 * i;
           const float squared = p[0] * p[0] + p[1] * p[1] + p[2] * p[2];
-          blockBad |= !(squared > 1e-39f && squared <= std::numeric_limits<float>::max());
+          blockBad |= !(squared > 1e-35f && squared <= std::numeric_limits<float>::max());
         }
         for (vtkIdType i = first; blockBad && i < last; ++i)
         {
-          const float length = glm::length(view[i]);
-          if (!(length > 1e-20f && length < 3.0e38f))
+          const glm::vec3 unit = shadelab::glsl::slSafeNormalize(view[i]);
+          if (glm::dot(unit, unit) < 0.5f) // the zero vector: no direction
           {
             vtkIdType current = firstBad.load();
             while (i < current && !firstBad.compare_exchange_weak(current, i))

@@ -96,6 +96,33 @@ TEST(LightingBadInput, FirstNormalWithoutDirectionOfALargeMesh)
       " has a zero-length or non-finite normal (ZeroNormalsAreErrors is on)");
 }
 
+TEST(LightingBadInput, TinyNormalsGetTheSameAnswerFromEveryFilter)
+{
+  // A normal of length 5e-20 has no direction (below SL_TINY_LENGTH = 1e-18,
+  // where its square is subnormal and the SIMD estimate takes it for 0): the
+  // radiance filter (which checks while it shades) and the cosine field
+  // (which checks first) both say so. One of length 1e-17 is a direction
+  // for both, lit like a unit normal.
+  vtkSmartPointer<slScene> scene = makeScene({ someLight() }, ShadingModel::Lambert);
+  const std::string message =
+    "input mesh: point 0 of 2 has a zero-length or non-finite normal (ZeroNormalsAreErrors is on)";
+  expectError<slRadianceFilter>(pointsWithNormals({ { 0, 0, 0, 5e-20, 0, 0 }, { 1, 0, 0, 0, 0, 1 } }), scene, message);
+  expectError<slCosineField>(pointsWithNormals({ { 0, 0, 0, 5e-20, 0, 0 }, { 1, 0, 0, 0, 0, 1 } }), scene, message);
+  vtkSmartPointer<vtkPolyData> mesh = pointsWithNormals({ { 0, 0, 0, 0, 0, 1e-17 }, { 0, 0, 0, 0, 0, 1 } });
+  vtkNew<slRadianceFilter> radiance;
+  radiance->SetScene(scene);
+  radiance->SetInputData(mesh);
+  radiance->Update();
+  EXPECT_STREQ(radiance->GetErrorMessage(), "");
+  EXPECT_GT(tuple3(radiance->GetOutput(), "Diffuse", 1)[0], 0.0);
+  EXPECT_NEAR(tuple3(radiance->GetOutput(), "Diffuse", 0)[0], tuple3(radiance->GetOutput(), "Diffuse", 1)[0], 1e-6);
+  vtkNew<slCosineField> cosine;
+  cosine->SetScene(scene);
+  cosine->SetInputData(mesh);
+  cosine->Update();
+  EXPECT_STREQ(cosine->GetErrorMessage(), "");
+}
+
 TEST(LightingBadInput, NoLight)
 {
   expectError<slRadianceFilter>(sphere(6), makeScene({}, ShadingModel::Phong), "scene: it has no lights");

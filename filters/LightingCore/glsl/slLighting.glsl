@@ -40,8 +40,11 @@ const int SL_MODEL_PHONG_NORMALIZED = 4;
 const int SL_MODEL_BLINN_PHONG_NORMALIZED = 5;
 
 const float SL_PI = 3.14159265358979f;
-// Below this length a vector has no direction; see slSafeNormalize.
-const float SL_TINY_LENGTH = 1e-20f;
+// Below this length a vector has no direction; see slSafeNormalize. The
+// squares of longer lengths are normal floats (FLT_MIN is 1.2e-38), so every
+// compilation -- libm, the SIMD estimate (which takes a subnormal for 0),
+// GPUs that flush subnormals -- agrees on which vectors have one.
+const float SL_TINY_LENGTH = 1e-18f;
 
 // One light, ready for evaluation (angles already turned into cosines).
 struct slLight
