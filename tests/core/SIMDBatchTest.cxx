@@ -58,6 +58,50 @@ TEST(SIMDBatch, Exp2Log2AndPowAgreeWithLibm)
   }
 }
 
+TEST(SIMDBatch, PowByRepeatedSquaringForAUniformWholeExponent)
+{
+  // A shininess that is the same whole n in every lane takes powWhole: at most
+  // (n - 1) 2^-24 relative (one rounding per product), tighter than the
+  // polynomial path's bound (1.2e-5 for x = 0.2, n = 40), so this also fails
+  // if the polynomial path were taken. Checked against libm in double, with
+  // 1% margin, over the normal float range of x^n.
+  namespace simd = shadelab::simd;
+  std::mt19937 random(13);
+  std::uniform_real_distribution<float> base(0.0f, 1.0f);
+  for (unsigned n : { 1u, 2u, 3u, 7u, 8u, 40u, 64u, 100u, 255u, 1024u })
+  {
+    ASSERT_EQ(simd::uniformWholeExponent(vfloat8(float(n))), n);
+    for (int round = 0; round < 200; ++round)
+    {
+      float x[8];
+      for (int i = 0; i < 8; ++i)
+      {
+        x[i] = base(random) * (i == 0 ? 1.05f : 1.0f); // a cosine may round above 1
+      }
+      const vfloat8 p = simd::pow(lanes(x), vfloat8(float(n)));
+      for (int i = 0; i < 8; ++i)
+      {
+        const double exact = std::pow(double(x[i]), double(n));
+        if (exact > 1.2e-38 && exact < 3e38)
+        {
+          EXPECT_NEAR(p.v[i] / exact, 1.0, 1.01 * (n - 1) * 0x1p-24 + 1e-12) << x[i] << "^" << n;
+        }
+      }
+    }
+  }
+  // Anything else takes exp2(y log2 x): fractions, 0, negative, too large,
+  // NaN, or lanes that differ.
+  const float nan = NAN;
+  for (float y : { 40.5f, 0.0f, -2.0f, 1025.0f, 4096.0f, nan })
+  {
+    EXPECT_EQ(simd::uniformWholeExponent(vfloat8(y)), 0u) << y;
+  }
+  const float mixed[8] = { 40, 40, 40, 40, 40, 40, 40, 41 };
+  const float mixedNaN[8] = { 40, 40, 40, nan, 40, 40, 40, 40 };
+  EXPECT_EQ(simd::uniformWholeExponent(lanes(mixed)), 0u);
+  EXPECT_EQ(simd::uniformWholeExponent(lanes(mixedNaN)), 0u);
+}
+
 TEST(SIMDBatch, InversesqrtAgreesWithLibm)
 {
   // The hardware estimate plus one Newton step (SIMDFloat8.h): 3e-7 relative

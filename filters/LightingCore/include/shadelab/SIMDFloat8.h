@@ -195,10 +195,65 @@ inline vfloat8 log2(vfloat8 x)
   return t * p + vfloat8(__builtin_convertvector(e, v8sf));
 }
 
-/// GLSL's definition: pow(x, y) = exp2(y log2 x), for x > 0.
+/// The largest exponent powWhole() is used for: its error bound (n - 1) 2^-24
+/// is then still below that of exp2(y log2 x) for the same exponent.
+constexpr unsigned maxWholeExponent = 1024;
+
+/// x^n for a whole n >= 1 by repeated squaring: floor(log2 n) squarings and
+/// one multiplication per further set bit of n (x^40: 6 instead of about 25
+/// operations, and a third of the latency). Each product adds one rounding,
+/// so the relative error is at most (n - 1) 2^-24 while x^n is a normal
+/// float; beyond the float range it overflows to infinity or underflows to
+/// 0 (exp2 clamps instead).
+inline vfloat8 powWhole(vfloat8 x, unsigned n)
+{
+  vfloat8 square = x;
+  for (; (n & 1u) == 0; n >>= 1)
+  {
+    square = square * square;
+  }
+  vfloat8 result = square;
+  for (n >>= 1; n != 0; n >>= 1)
+  {
+    square = square * square;
+    if (n & 1u)
+    {
+      result = result * square;
+    }
+  }
+  return result;
+}
+
+/// The exponent n if every lane of y holds the same whole number in
+/// [1, maxWholeExponent], else 0. A material's shininess is the same in
+/// every lane, and usually whole.
+inline unsigned uniformWholeExponent(vfloat8 y)
+{
+  const float first = y.v[0];
+  if (!(first >= 1.0f && first <= float(maxWholeExponent)) || first != float(unsigned(first)))
+  {
+    return 0;
+  }
+  const v8si same = y.v == first;
+#ifdef __AVX__
+  const bool uniform = _mm256_movemask_ps(reinterpret_cast<__m256>(same)) == 0xff;
+#else
+  bool uniform = true;
+  for (int i = 0; i < 8; ++i)
+  {
+    uniform &= same[i] != 0;
+  }
+#endif
+  return uniform ? unsigned(first) : 0u;
+}
+
+/// GLSL's definition: pow(x, y) = exp2(y log2 x), for x > 0; by repeated
+/// squaring (more exact and about twice as fast) when y is the same whole
+/// number in every lane.
 inline vfloat8 pow(vfloat8 x, vfloat8 y)
 {
-  return exp2(y * log2(x));
+  const unsigned n = uniformWholeExponent(y);
+  return n != 0 ? powWhole(x, n) : exp2(y * log2(x));
 }
 
 } // namespace simd
