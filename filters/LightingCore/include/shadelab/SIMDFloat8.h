@@ -13,9 +13,12 @@
  * per lane, which is how slLighting.glsl writes every float-dependent
  * choice. Nothing here knows about lighting.
  *
- * inversesqrt is the hardware estimate plus a Newton step; pow, exp2 and
- * log2 are polynomial approximations without a division (GLSL only asks
- * for pow(x, y) = exp2(y log2 x) "to the precision of" those two):
+ * inversesqrt is the hardware estimate plus a Newton step. pow is repeated
+ * squaring when the exponent is the same whole number in every lane (a
+ * material's shininess usually is; (n - 1) 2^-24 relative, see powWhole);
+ * otherwise pow, exp2 and log2 are polynomial approximations without a
+ * division (GLSL only asks for pow(x, y) = exp2(y log2 x) "to the precision
+ * of" those two):
  * measured worst errors, in float arithmetic, are 2.2e-7 relative for exp2
  * and 1.5e-7 absolute for log2 of a positive normal float (plus the float
  * rounding of its result, 6e-8 |log2 x|), so pow's relative error is at most
