@@ -72,8 +72,8 @@ std::vector<double> timeRuns(int repetitions, F&& run, std::vector<double>* cpu 
 /// Wall seconds of @p repetitions calls as a user pays for one: a new
 /// filter, Update(), the output arrays allocated and filled, and the filter
 /// with its output freed again (no buffers carried over from the previous
-/// call). CPU seconds (both threads) go to @p cpu.
-std::vector<double> timeFreshUpdates(vtkPolyData* mesh, slScene* scene, int repetitions, std::vector<double>& cpu)
+/// call). CPU seconds (both threads) go to @p cpu if given.
+std::vector<double> timeFreshUpdates(vtkPolyData* mesh, slScene* scene, int repetitions, std::vector<double>* cpu = nullptr)
 {
   return timeRuns(
     repetitions,
@@ -83,7 +83,7 @@ std::vector<double> timeFreshUpdates(vtkPolyData* mesh, slScene* scene, int repe
       fresh->SetScene(scene);
       fresh->Update();
     },
-    &cpu);
+    cpu);
 }
 
 /// 8 point lights above the unit grid, attenuated, coloured; Blinn-Phong.
@@ -311,7 +311,7 @@ int main(int argc, char** argv)
     vtkSMPTools::GetEstimatedNumberOfThreads());
   filter->Update(); // warm-up
   std::vector<double> cpuRuns;
-  const double cpp = median(timeFreshUpdates(mesh, slscene, repetitions, cpuRuns));
+  const double cpp = median(timeFreshUpdates(mesh, slscene, repetitions, &cpuRuns));
   const double cppCpu = median(cpuRuns);
   std::printf("slRadianceFilter: median %.4f s over %d runs = %.1f M vertex.lights/s (target >= 300)\n", cpp,
     repetitions, vertexLights / cpp * 1e-6);
@@ -323,8 +323,7 @@ int main(int argc, char** argv)
   fractional.material.shininess += 0.5f;
   vtkNew<slScene> fractionalScene;
   fractionalScene->SetScene(fractional);
-  std::vector<double> fractionalCpu;
-  const double cppFractional = median(timeFreshUpdates(mesh, fractionalScene, repetitions, fractionalCpu));
+  const double cppFractional = median(timeFreshUpdates(mesh, fractionalScene, repetitions));
   std::printf("  with shininess %g (pow as exp2(y log2 x)): median %.4f s = %.1f M vertex.lights/s\n",
     fractional.material.shininess, cppFractional, vertexLights / cppFractional * 1e-6);
   const float* r = vtkFloatArray::SafeDownCast(filter->GetOutput()->GetPointData()->GetArray("Radiance"))->GetPointer(0);

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <random>
 
 using namespace shadelab;
 using namespace shadelab::test;
@@ -159,5 +160,55 @@ TEST(LightingBadInput, DegenerateMeshGivesNoNaN)
     cosine->Update();
     EXPECT_STREQ(cosine->GetErrorMessage(), "");
     EXPECT_TRUE(allFinite(cosine->GetOutput())) << model;
+  }
+}
+
+TEST(LightingBadInput, EyeSeeingTheLightThroughTheSurfaceGivesNoInfinity)
+{
+  // Points on the segment from the eye to a point light, lit from the far
+  // side (N.L > 0, N.V < 0): L is nearly -V, |L + V| is rounding noise, and
+  // Blinn-Phong's (N.L + N.V) / |L + V| could reach 16 here, whose 40th power
+  // overflows. N.H is clamped to 1 (slSpecularFactor), so the lecture
+  // models' specular term stays at most k_s times the light's colour.
+  const glm::vec3 eye(-2.0f, -3.5f, 0.75f), lightAt(1.25f, 1.25f, 1.0f);
+  SceneLight light = whiteLight(LightType::Point);
+  light.position = lightAt;
+  std::vector<std::array<double, 6>> points{ { -0.578125, -1.421875, 0.859375, 0.3225, 0.5386, -0.7784 } };
+  std::mt19937 random(3);
+  std::normal_distribution<double> gaussian;
+  for (int k = 1; k < 256; ++k)
+  {
+    const glm::dvec3 P = glm::dvec3(eye) + (k / 256.0) * glm::dvec3(lightAt - eye);
+    glm::dvec3 N(gaussian(random), gaussian(random), gaussian(random));
+    if (glm::dot(N, glm::dvec3(lightAt) - P) < 0.0)
+    {
+      N = -N;
+    }
+    points.push_back({ P.x, P.y, P.z, N.x, N.y, N.z });
+  }
+  vtkSmartPointer<vtkPolyData> mesh = pointsWithNormals(points);
+  for (float shininess : { 40.0f, 1024.0f, 40.5f })
+  {
+    for (int model = 0; model < 6; ++model)
+    {
+      vtkSmartPointer<slScene> scene = makeScene({ light }, static_cast<ShadingModel>(model), eye);
+      Scene s = scene->GetScene();
+      s.material.shininess = shininess;
+      scene->SetScene(s);
+      vtkNew<slRadianceFilter> radiance;
+      radiance->SetScene(scene);
+      radiance->SetInputData(mesh);
+      radiance->Update();
+      ASSERT_STREQ(radiance->GetErrorMessage(), "");
+      EXPECT_TRUE(allFinite(radiance->GetOutput())) << "model " << model << ", shininess " << shininess;
+      if (model == static_cast<int>(ShadingModel::Phong) || model == static_cast<int>(ShadingModel::BlinnPhong))
+      {
+        for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+        {
+          EXPECT_LE(tuple3(radiance->GetOutput(), "Specular", i)[0], s.material.specular.x * (1.0 + 1e-6))
+            << "point " << i << ", model " << model << ", shininess " << shininess;
+        }
+      }
+    }
   }
 }

@@ -90,7 +90,9 @@ TEST(RadianceFilter, VectorizedLoopAgreesWithShadePointForEveryModelAndLightType
   // edge) and an ambient light, for every model: every output term, and each
   // light's own array. The lights have their own colours and intensities and
   // the points a base colour, since the loop multiplies those once per light
-  // and once per point rather than where slShadeLight does.
+  // and once per point rather than where slShadeLight does. Whole and
+  // fractional shininess and spot exponents, since the loop's pow squares
+  // for whole exponents and uses exp2(y log2 x) otherwise.
   SceneLight directional = whiteLight(LightType::Directional);
   directional.direction = glm::vec3(-0.3f, -0.5f, -1.0f);
   directional.diffuse = glm::vec3(1.0f, 0.6f, 0.3f);
@@ -123,10 +125,16 @@ TEST(RadianceFilter, VectorizedLoopAgreesWithShadePointForEveryModelAndLightType
   mesh->GetPointData()->AddArray(base);
   const glm::vec3 eye(1, 2, 5);
   const char* terms[] = { "Ambient", "Diffuse", "Specular", "Radiance" };
-  for (int model = 0; model < 6; ++model)
+  for (int variant = 0; variant < 12; ++variant)
   {
+    const int model = variant % 6;
+    const float fraction = variant < 6 ? 0.0f : 0.5f;
+    spot.exponent = 3.0f + fraction;
     vtkSmartPointer<slScene> scene =
       makeScene({ directional, point, spot, ambient }, static_cast<ShadingModel>(model), eye);
+    Scene withShininess = scene->GetScene();
+    withShininess.material.shininess = 20.0f + fraction;
+    scene->SetScene(withShininess);
     vtkNew<slRadianceFilter> filter;
     filter->SetScene(scene);
     filter->SetDiffuseColorArrayName("Base");
@@ -166,7 +174,7 @@ TEST(RadianceFilter, VectorizedLoopAgreesWithShadePointForEveryModelAndLightType
         compare(tuple3(out, name.c_str(), i), glsl::slTotal(glsl::slShadeLight(lights[l], m, model, P, N, eye)));
       }
     }
-    EXPECT_LT(worst, 1e-4) << "model " << model;
+    EXPECT_LT(worst, 1e-4) << "model " << model << ", shininess " << withShininess.material.shininess;
   }
 }
 

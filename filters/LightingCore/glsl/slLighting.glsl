@@ -234,7 +234,10 @@ SL_FUNC float slSpecularFactor(int model, vec3 N, vec3 L, vec3 V, float n)
     float inverseLength = inversesqrt(squaredLength);
     float cosHalf = (cosTheta + dot(N, V)) * inverseLength;
     cosHalf = mix(0.0f, cosHalf, squaredLength * inverseLength > SL_TINY_LENGTH);
-    factor = slPow(max(cosHalf, 0.0f), n);
+    // Clamped above too: where L is nearly -V (the eye looks at the light
+    // through the surface) |L + V| is tiny and the quotient is rounding
+    // noise that can exceed 1 by any amount, and x^n would overflow.
+    factor = slPow(clamp(cosHalf, 0.0f, 1.0f), n);
     if (model == SL_MODEL_BLINN_PHONG_NORMALIZED)
     {
       factor = factor * slBlinnPhongNormalization(n) * cosTheta;

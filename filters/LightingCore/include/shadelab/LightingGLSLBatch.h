@@ -12,10 +12,11 @@
  * ordinary branches (give them constants and the compiler removes them). The
  * file makes every float-dependent choice with mix(a, b, condition), which
  * the batch types evaluate lane by lane. pow and exp2 are SIMDFloat8.h's
- * (repeated squaring for a whole shininess, polynomials otherwise); struct fields are batches too (a light's values
- * repeated in every lane). Use shadelab::glsl (LightingGLSL.h, exact libm)
- * unless 8 points are shaded together; the CPU radiance filter's loop uses
- * this and is tested against shadelab::glsl.
+ * (repeated squaring for a whole shininess, polynomials otherwise); struct
+ * fields are batches too (a light's values repeated in every lane). Use
+ * shadelab::glsl (LightingGLSL.h, exact libm) unless 8 points are shaded
+ * together; the CPU radiance filter's loop uses this and is tested against
+ * shadelab::glsl.
  */
 
 #include "shadelab/SIMDFloat8.h"

@@ -78,24 +78,29 @@ inline vmask8 operator<(vfloat8 a, vfloat8 b) { return { a.v < b.v }; }
 inline vmask8 operator>(vfloat8 a, vfloat8 b) { return { a.v > b.v }; }
 inline vmask8 operator<=(vfloat8 a, vfloat8 b) { return { a.v <= b.v }; }
 inline vmask8 operator>=(vfloat8 a, vfloat8 b) { return { a.v >= b.v }; }
+inline vmask8 operator==(vfloat8 a, vfloat8 b) { return { a.v == b.v }; }
 /// Lane-wise; both sides are evaluated (as for every select in the batch).
 inline vmask8 operator&&(vmask8 a, vmask8 b) { return { a.m & b.m }; }
 inline vmask8 operator||(vmask8 a, vmask8 b) { return { a.m | b.m }; }
 
-/// GLSL any(): true if the condition holds in some lane.
-inline bool any(vmask8 c)
+/// Bit i set if lane i of @p c holds.
+inline unsigned laneBits(vmask8 c)
 {
 #ifdef __AVX__
-  return _mm256_movemask_ps(reinterpret_cast<__m256>(c.m)) != 0;
+  return static_cast<unsigned>(_mm256_movemask_ps(reinterpret_cast<__m256>(c.m)));
 #else
-  bool result = false;
+  unsigned bits = 0;
   for (int i = 0; i < 8; ++i)
   {
-    result |= c.m[i] != 0;
+    bits |= (c.m[i] != 0 ? 1u : 0u) << i;
   }
-  return result;
+  return bits;
 #endif
 }
+
+/// GLSL any() and all(): the condition holds in some lane, in every lane.
+inline bool any(vmask8 c) { return laneBits(c) != 0; }
+inline bool all(vmask8 c) { return laneBits(c) == 0xffu; }
 
 /// GLSL mix(a, b, bool c): per lane, c ? b : a.
 inline vfloat8 mix(vfloat8 a, vfloat8 b, vmask8 c) { return vfloat8(c.m ? b.v : a.v); }
@@ -166,7 +171,8 @@ inline vfloat8 exp2(vfloat8 x)
   const vfloat8 shifted = x + roundAndBias;
   const vfloat8 f = x - (shifted - roundAndBias);
   // Estrin's scheme: pairs first, so the chain of dependent operations is 3
-  // multiply-adds long instead of Horner's 5 (the loop is latency-bound).
+  // multiply-adds long instead of Horner's 5 (measured faster in the
+  // radiance loop, docs/lighting-cpu.md).
   const vfloat8 f2 = f * f;
   const vfloat8 p01 = 6.931469440460205e-1f * f + 1.0000001192092896f;
   const vfloat8 p23 = 5.550713464617729e-2f * f + 2.4022120237350464e-1f;
@@ -198,18 +204,26 @@ inline vfloat8 log2(vfloat8 x)
   return t * p + vfloat8(__builtin_convertvector(e, v8sf));
 }
 
-/// The largest exponent powWhole() is used for: its error bound (n - 1) 2^-24
-/// is then still below that of exp2(y log2 x) for the same exponent.
+/// The largest exponent pow() squares for. Its (n - 1) 2^-24 bound stays
+/// below the polynomials' for every n; the cap is about cost: up to
+/// 2 floor(log2 n) multiplications (18 for n = 1023) against about 25
+/// operations for exp2(y log2 x).
 constexpr unsigned maxWholeExponent = 1024;
 
-/// x^n for a whole n >= 1 by repeated squaring: floor(log2 n) squarings and
-/// one multiplication per further set bit of n (x^40: 6 instead of about 25
-/// operations, and a third of the latency). Each product adds one rounding,
-/// so the relative error is at most (n - 1) 2^-24 while x^n is a normal
-/// float; beyond the float range it overflows to infinity or underflows to
-/// 0 (exp2 clamps instead).
+/// x^n by repeated squaring: floor(log2 n) squarings and one multiplication
+/// per further set bit of n (x^40: 6 instead of about 25 operations), 1 for
+/// n = 0. Relative error at most (n - 1) 2^-24 to first order while x^n is
+/// a normal float: the rounding of each square x^(2^k) is raised to the
+/// power floor(n / 2^k) in the result (those powers add up to
+/// n - popcount(n)), and the popcount(n) - 1 other products add one each.
+/// Beyond the float range it overflows to infinity, or underflows gradually
+/// through the subnormals to 0 (exp2 clamps instead).
 inline vfloat8 powWhole(vfloat8 x, unsigned n)
 {
+  if (n == 0)
+  {
+    return vfloat8(1.0f);
+  }
   vfloat8 square = x;
   for (; (n & 1u) == 0; n >>= 1)
   {
@@ -237,17 +251,7 @@ inline unsigned uniformWholeExponent(vfloat8 y)
   {
     return 0;
   }
-  const v8si same = y.v == first;
-#ifdef __AVX__
-  const bool uniform = _mm256_movemask_ps(reinterpret_cast<__m256>(same)) == 0xff;
-#else
-  bool uniform = true;
-  for (int i = 0; i < 8; ++i)
-  {
-    uniform &= same[i] != 0;
-  }
-#endif
-  return uniform ? unsigned(first) : 0u;
+  return all(y == first) ? unsigned(first) : 0u;
 }
 
 /// GLSL's definition: pow(x, y) = exp2(y log2 x), for x > 0; by repeated
