@@ -6,6 +6,9 @@
 #include <vtkPolyData.h>
 #include <vtkUnsignedCharArray.h>
 
+#include "shadelab/SceneLimits.h"
+
+#include <algorithm>
 #include <cmath>
 
 namespace shadelab
@@ -15,7 +18,9 @@ namespace
 {
 /// Component @p c of tuple @p i as a colour value in the lighting equation:
 /// 8-bit values v mean v / 255, as VTK and ShadeLab's render pass use them
-/// (no transfer function on either path, so CPU and GPU agree).
+/// (no transfer function on either path, so CPU and GPU agree). Values that
+/// are not finite count as 0; the others are clamped to ±kMaxColourValue,
+/// the scene's own limit, so that no product with the lights can overflow.
 float linearComponent(vtkDataArray* a, vtkIdType i, int c)
 {
   const double v = a->GetComponent(i, c);
@@ -23,7 +28,7 @@ float linearComponent(vtkDataArray* a, vtkIdType i, int c)
   {
     return static_cast<float>(v / 255.0);
   }
-  return std::isfinite(v) ? static_cast<float>(v) : 0.0f;
+  return std::isfinite(v) ? static_cast<float>(std::max(-kMaxColourValue, std::min(v, kMaxColourValue))) : 0.0f;
 }
 
 glm::vec3 colourOf(vtkDataArray* a, vtkIdType i)
@@ -82,6 +87,12 @@ std::string diffuseFromTexture(vtkPolyData* mesh, vtkImageData* texture, std::ve
   out.resize(static_cast<size_t>(mesh->GetNumberOfPoints()));
   for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
   {
+    if (!std::isfinite(uv->GetComponent(i, 0)) || !std::isfinite(uv->GetComponent(i, 1)))
+    {
+      // No place in the image: colour 0, like a colour value that is not finite.
+      out[static_cast<size_t>(i)] = glm::vec3(0.0f);
+      continue;
+    }
     // Bilinear lookup with repeat wrapping, texel centres at (k + 0.5) / size.
     const float x = wrap(uv->GetComponent(i, 0)) * dims[0] - 0.5f;
     const float y = wrap(uv->GetComponent(i, 1)) * dims[1] - 0.5f;

@@ -8,8 +8,11 @@
  * Colours are used as given, as VTK and slLightingPass use them: 8-bit
  * values v mean v / 255, float values are taken as they are. No sRGB
  * transfer function is applied on either path, so `shadelab light` and
- * `shadelab render` agree on textured and colour-mapped meshes. Textures are sampled bilinearly with
- * repeat wrapping; texture row 0 is the bottom (as slImageReader gives it).
+ * `shadelab render` agree on textured and colour-mapped meshes. Textures are
+ * sampled bilinearly with repeat wrapping; texture row 0 is the bottom (as
+ * slImageReader gives it). A value that is not finite, or a point whose
+ * texture coordinates are not, gives colour 0; other values are clamped to
+ * ±kMaxColourValue (SceneLimits.h), so no lighting term can overflow.
  */
 
 #include <glm/glm.hpp>

@@ -2,6 +2,7 @@
 
 #include "shadelab/DefaultScene.h"
 #include "shadelab/Scene.h"
+#include "shadelab/SceneLimits.h"
 #include "slScene.h"
 
 #include <vtkCamera.h>
@@ -37,6 +38,12 @@ LightingSetup makeLightingSetup(slScene* scene, vtkLightCollection* lights, vtkP
     merged->SetCameraFromVTK(camera);
   }
   const Scene& s = merged->GetScene();
+  LightingSetup setup;
+  setup.problem = sceneValueProblem(s);
+  if (!setup.problem.empty())
+  {
+    return setup;
+  }
 
   // Place the camera as the renderer would (fitting the mesh when the scene
   // gives no position), then read the eye back.
@@ -54,7 +61,6 @@ LightingSetup makeLightingSetup(slScene* scene, vtkLightCollection* lights, vtkP
     placed->OrthogonalizeViewUp();
   }
 
-  LightingSetup setup;
   setup.eye = toVec3(placed->GetPosition());
   const glm::vec3 focal = toVec3(placed->GetFocalPoint());
   const glm::vec3 up = toVec3(placed->GetViewUp());

@@ -27,6 +27,10 @@ struct LightingSetup
   glsl::slMaterial material;
   int model = glsl::SL_MODEL_BLINN_PHONG;
   glm::vec3 eye{ 0.0f, 0.0f, 1.0f };
+  /// "" or the first value of the merged scene out of range or not finite
+  /// (sceneValueProblem): lights, materials and cameras from VTK objects or
+  /// code are not checked anywhere else.
+  std::string problem;
 };
 
 /// Builds the setup. @p scene may be null (ShadeLab's default scene); each

@@ -126,9 +126,18 @@ bool slLitFilter::PrepareLighting(
     }
   }
   setup = shadelab::makeLightingSetup(this->Scene, this->Lights, this->Property, this->Camera, input->GetBounds());
+  const bool fromFile = this->Scene && !this->Lights && !this->Scene->GetScene().sourceFile.empty();
+  if (!setup.problem.empty())
+  {
+    const bool fromVTK = this->Lights || this->Property || this->Camera;
+    this->Fail(output,
+      (fromVTK ? std::string("scene (with the VTK lights, property or camera)")
+               : fromFile ? this->Scene->GetScene().sourceFile : std::string("scene")) +
+        ": " + setup.problem);
+    return false;
+  }
   if (needLight && setup.lights.empty())
   {
-    const bool fromFile = this->Scene && !this->Lights && !this->Scene->GetScene().sourceFile.empty();
     this->Fail(output, (fromFile ? this->Scene->GetScene().sourceFile + ": lights" : std::string("scene")) +
         ": it has no lights");
     return false;

@@ -30,7 +30,7 @@ void frame(const LobeSpec& spec, glm::vec3& N, glm::vec3& T, glm::vec3& B)
 vtkIdType addPoint(const LobeSpec& spec, const glm::vec3& direction, vtkPoints* points, vtkFloatArray* values)
 {
   const float r = lobeRadius(spec, direction);
-  const glm::vec3 p = spec.origin + spec.scale * r * direction;
+  const glm::dvec3 p = glm::dvec3(spec.origin) + (spec.scale * r) * glm::dvec3(direction);
   values->InsertNextValue(r);
   return points->InsertNextPoint(p.x, p.y, p.z);
 }

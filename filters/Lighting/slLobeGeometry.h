@@ -31,7 +31,9 @@ struct LobeSpec
   int thetaResolution = 32; ///< rings from the normal to the horizon
   int phiResolution = 64;   ///< segments around the normal
   glm::vec3 origin{ 0.0f };
-  float scale = 1.0f;
+  /// Length per unit of r. A double: a lobe scaled to a visible size may
+  /// have a largest r below float's smallest normal value (k_d = 1e-40).
+  double scale = 1.0;
 };
 
 /// r(w_o) for one outgoing direction (0 below the horizon).

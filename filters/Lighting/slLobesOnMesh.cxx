@@ -82,6 +82,14 @@ int slLobesOnMesh::RequestData(vtkInformation*, vtkInformationVector** inputVect
 
   const Float3View points(input->GetPoints()->GetData());
   const Float3View normals(input->GetPointData()->GetNormals());
+  for (vtkIdType id : ids)
+  {
+    const glm::vec3 p = points[id];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+    {
+      return this->Fail(output, "input mesh: point " + std::to_string(id) + " has a coordinate that is not finite");
+    }
+  }
   auto lobeAt = [&](vtkIdType id) {
     LobeSpec spec;
     spec.material = setup.material;
@@ -105,7 +113,7 @@ int slLobesOnMesh::RequestData(vtkInformation*, vtkInformationVector** inputVect
     appendLobe(lobeAt(id), p, c, v);
     largest = std::max(largest, static_cast<float>(v->GetRange()[1]));
   }
-  const float scale = largest > 0.0f ? static_cast<float>(this->Scale * input->GetLength()) / largest : 0.0f;
+  const double scale = largest > 0.0f ? this->Scale * input->GetLength() / largest : 0.0;
 
   vtkNew<vtkPoints> outPoints;
   vtkNew<vtkCellArray> polys;

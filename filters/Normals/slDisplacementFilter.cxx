@@ -57,6 +57,11 @@ int slDisplacementFilter::RequestData(vtkInformation*, vtkInformationVector** in
   normals->SplittingOff();
   normals->ConsistencyOff();
   normals->Update();
+  if (*normals->GetErrorMessage())
+  {
+    // For example points moved beyond the float range by a large Scale.
+    return this->Fail(std::string("displaced mesh: ") + normals->GetErrorMessage(), output);
+  }
   output->ShallowCopy(normals->GetOutput());
   return 1;
 }

@@ -23,6 +23,8 @@
 #include <vtkPolyData.h>
 #include <vtkSMPTools.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <numeric>
@@ -40,16 +42,46 @@ struct Settings
   bool split, orient, outward, weld, pointNormals, cellNormals;
 };
 
+/// Float coordinates to compute normals from. Normals are in float when the
+/// points are, and a cross product of two edges squared is about the 4th
+/// power of the mesh's size: beyond about 1e9 it overflows and below about
+/// 1e-9 it underflows, so a mesh of astronomical or molecular size would get
+/// NaN or zero normals. Normals do not change when a mesh is scaled, so such
+/// a mesh is scaled by a power of two (exact) to a size between 1 and 2, in
+/// @p scaled; any other mesh is used as it is.
+const float* geometryOf(vtkFloatArray* points, const double bounds[6], std::vector<float>& scaled)
+{
+  const double size = std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
+  const float* xyz = points->GetPointer(0);
+  if (!(size > 0.0) || !std::isfinite(size) || (size >= 0x1p-10 && size <= 0x1p10))
+  {
+    return xyz;
+  }
+  const int exponent = -std::ilogb(size);
+  scaled.resize(static_cast<size_t>(points->GetNumberOfValues()));
+  vtkSMPTools::For(0, points->GetNumberOfValues(), 65536, [&](vtkIdType b, vtkIdType e) {
+    for (vtkIdType i = b; i < e; ++i)
+    {
+      scaled[static_cast<size_t>(i)] = std::ldexp(xyz[i], exponent);
+    }
+  });
+  return scaled.data();
+}
+
 /// The job on points of type T and polygon ids of type Id.
 template <typename T, typename Id>
 class NormalsJob
 {
 public:
-  NormalsJob(const Settings& s, vtkPolyData* input, vtkPolyData* output, const T* xyz)
+  /// @p xyz: the input's coordinates, or a copy scaled by a power of two
+  /// (geometryOf) for the arithmetic; @p inputXyz: the input's own, copied
+  /// to the output points.
+  NormalsJob(const Settings& s, vtkPolyData* input, vtkPolyData* output, const T* xyz, const T* inputXyz)
     : S(s)
     , Input(input)
     , Output(output)
     , XYZ(xyz)
+    , InputXYZ(inputXyz)
     , Par(slSMPParallel())
   {
   }
@@ -322,7 +354,7 @@ private:
     this->Par.forRange(0, total, 65536, [&](int64_t b, int64_t e) {
       for (int64_t i = b; i < e; ++i)
       {
-        std::memcpy(out + 3 * i, this->XYZ + 3 * source[static_cast<size_t>(i)], 3 * sizeof(T));
+        std::memcpy(out + 3 * i, this->InputXYZ + 3 * source[static_cast<size_t>(i)], 3 * sizeof(T));
       }
     });
     this->Output->SetPoints(points);
@@ -374,6 +406,7 @@ private:
   vtkPolyData* Input;
   vtkPolyData* Output;
   const T* XYZ;
+  const T* InputXYZ;
   slnormals::Parallel Par;
   slOwnedPolygons<Id> Owned;
   bool HasOwned = false;
@@ -446,12 +479,14 @@ int slPolyDataNormals::RequestData(vtkInformation*, vtkInformationVector** input
     using Id = decltype(id);
     if (auto* f = vtkFloatArray::SafeDownCast(data))
     {
-      NormalsJob<float, Id> job(s, input, output, f->GetPointer(0));
+      std::vector<float> scaled;
+      NormalsJob<float, Id> job(s, input, output, geometryOf(f, input->GetBounds(), scaled), f->GetPointer(0));
       problem = job.Run(flipped);
     }
     else
     {
-      NormalsJob<double, Id> job(s, input, output, vtkDoubleArray::SafeDownCast(data)->GetPointer(0));
+      const double* xyz = vtkDoubleArray::SafeDownCast(data)->GetPointer(0);
+      NormalsJob<double, Id> job(s, input, output, xyz, xyz);
       problem = job.Run(flipped);
     }
     return 0;

@@ -245,6 +245,7 @@ void slScene::SetLightsFromVTK(vtkLightCollection* lights)
       continue;
     }
     shadelab::SceneLight l;
+    l.name = "VTK light " + std::to_string(index); // what messages about it call it
     l.ambient = toVec3(light->GetAmbientColor());
     l.diffuse = toVec3(light->GetDiffuseColor());
     l.specular = toVec3(light->GetSpecularColor());

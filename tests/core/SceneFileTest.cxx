@@ -142,9 +142,19 @@ TEST(SceneFile, OutOfRangeValues)
   EXPECT_EQ(errorFor(withLight(R"({"type": "point", "attenuation": [1, -0.5, 0]})")),
     "bad.json: lights[1].attenuation[1]: -0.5 is out of range [0, inf)");
   EXPECT_EQ(errorFor(withLight(R"({"type": "point", "intensity": -2})")),
-    "bad.json: lights[1].intensity: -2 is out of range [0, inf)");
+    "bad.json: lights[1].intensity: -2 is out of range [0, 1e+06]");
   EXPECT_EQ(errorFor(R"({"material": {"diffuse": [0.5, -0.1, 0]}})"),
-    "bad.json: material.diffuse[1]: -0.1 is out of range [0, inf)");
+    "bad.json: material.diffuse[1]: -0.1 is out of range [0, 1e+06]");
+  // Upper limits, so that no product of intensity, colours and BRDF factors
+  // overflows a float (SceneLimits.h), and the float range itself.
+  EXPECT_EQ(errorFor(withLight(R"({"type": "point", "intensity": 2e6})")),
+    "bad.json: lights[1].intensity: 2e+06 is out of range [0, 1e+06]");
+  EXPECT_EQ(errorFor(withLight(R"({"type": "point", "specular": [1, 1, 3e38]})")),
+    "bad.json: lights[1].specular[2]: 3e+38 is out of range [0, 1e+06]");
+  EXPECT_EQ(errorFor(R"({"material": {"emission": [1e39, 0, 0]}})"),
+    "bad.json: material.emission[0]: expected a finite number (within the float range)");
+  EXPECT_EQ(errorFor(withLight(R"({"type": "point", "position": [0, -1e39, 0]})")),
+    "bad.json: lights[1].position[1]: expected a finite number (within the float range)");
   EXPECT_EQ(errorFor(R"({"camera": {"viewAngle": 180}})"), "bad.json: camera.viewAngle: 180 is out of range (0, 180)");
   EXPECT_EQ(errorFor(R"({"imageSize": [8, 480]})"), "bad.json: imageSize[0]: 8 is out of range [16, 8192]");
 }

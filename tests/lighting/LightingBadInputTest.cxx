@@ -5,7 +5,15 @@
 #include "slCosineField.h"
 #include "slRadianceFilter.h"
 
+#include "shadelab/SceneLimits.h"
+
+#include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkLight.h>
+#include <vtkLightCollection.h>
 #include <vtkPointData.h>
+#include <vtkProperty.h>
 
 #include <gtest/gtest.h>
 
@@ -211,4 +219,151 @@ TEST(LightingBadInput, EyeSeeingTheLightThroughTheSurfaceGivesNoInfinity)
       }
     }
   }
+}
+
+TEST(LightingBadInput, ValuesAtTheSceneLimitsGiveFiniteTerms)
+{
+  // Every colour, intensity and coefficient at kMaxColourValue, shininess at
+  // kMaxShininess, 8 lights of each kind: the largest terms a valid scene can
+  // produce must still be finite (SceneLimits.h's reason for its limits).
+  const float big = static_cast<float>(kMaxColourValue);
+  std::vector<SceneLight> lights;
+  for (LightType type : { LightType::Directional, LightType::Point, LightType::Spot, LightType::Ambient })
+  {
+    for (int k = 0; k < 2; ++k)
+    {
+      SceneLight l = whiteLight(type);
+      l.position = glm::vec3(0.2f * k, 0.1f, 2.0f);
+      l.direction = glm::vec3(0.0f, 0.0f, -1.0f);
+      l.ambient = l.diffuse = l.specular = glm::vec3(big);
+      l.intensity = big;
+      l.attenuation = glm::vec3(0.0f);
+      lights.push_back(l);
+    }
+  }
+  for (int model = 0; model < 6; ++model)
+  {
+    vtkSmartPointer<slScene> scene = makeScene(lights, static_cast<ShadingModel>(model), glm::vec3(0.0f, 0.0f, 5.0f));
+    Scene s = scene->GetScene();
+    s.material.ambient = s.material.diffuse = s.material.specular = s.material.emission = glm::vec3(big);
+    s.material.shininess = static_cast<float>(kMaxShininess);
+    scene->SetScene(s);
+    vtkNew<slRadianceFilter> radiance;
+    radiance->SetScene(scene);
+    radiance->PerLightArraysOn();
+    radiance->SetInputData(sphere(24));
+    radiance->Update();
+    ASSERT_STREQ(radiance->GetErrorMessage(), "") << model;
+    EXPECT_TRUE(allFinite(radiance->GetOutput())) << "model " << model;
+    // Not vacuous: the terms are large.
+    EXPECT_GT(tuple3(radiance->GetOutput(), "Radiance", 0)[0], 1e12) << model;
+  }
+}
+
+TEST(LightingBadInput, VTKLightsAndPropertiesAreCheckedLikeSceneFiles)
+{
+  // A VTK user's lights and property bypass the scene file reader: a NaN or
+  // out-of-range value is a one-line error naming it, not NaN output.
+  vtkNew<vtkLightCollection> lights;
+  vtkNew<vtkLight> light;
+  light->SetPosition(1.0, 1.0, 1.0);
+  light->SetIntensity(std::numeric_limits<double>::quiet_NaN());
+  lights->AddItem(light);
+  vtkNew<slRadianceFilter> radiance;
+  radiance->SetLights(lights);
+  radiance->SetInputData(sphere(8));
+  radiance->Update();
+  EXPECT_STREQ(radiance->GetErrorMessage(),
+    "scene (with the VTK lights, property or camera): lights[1] (\"VTK light 0\").intensity: nan is not a finite "
+    "number");
+  EXPECT_EQ(radiance->GetOutput()->GetNumberOfPoints(), 0);
+
+  light->SetIntensity(1.0);
+  vtkNew<vtkProperty> property;
+  property->SetSpecularPower(std::numeric_limits<double>::quiet_NaN());
+  radiance->SetProperty(property);
+  radiance->Update();
+  EXPECT_STREQ(radiance->GetErrorMessage(),
+    "scene (with the VTK lights, property or camera): material.shininess: nan is not a finite number");
+  property->SetSpecularPower(20.0);
+  property->SetDiffuseColor(1.0, 2e6, 1.0);
+  radiance->Update();
+  EXPECT_STREQ(radiance->GetErrorMessage(),
+    "scene (with the VTK lights, property or camera): material.diffuse[1]: 2e+06 is out of range [0, 1e+06]");
+  property->SetDiffuseColor(1.0, 1.0, 1.0);
+  radiance->Update();
+  EXPECT_STREQ(radiance->GetErrorMessage(), "");
+  EXPECT_TRUE(allFinite(radiance->GetOutput()));
+}
+
+TEST(LightingBadInput, ColourValuesBeyondTheLimitsAndTextureCoordinatesThatAreNotFinite)
+{
+  // A double colour array beyond float's range is clamped to
+  // kMaxColourValue, not turned into infinity (then NaN next to a zero
+  // colour); a point whose texture coordinates are NaN or infinite gets
+  // colour 0, like a colour value that is not finite.
+  vtkNew<slRadianceFilter> radiance;
+  // Four copies of one point, so only the colour differs.
+  vtkSmartPointer<vtkPolyData> mesh =
+    pointsWithNormals({ { 0, 0, 0, 0, 0, 1 }, { 0, 0, 0, 0, 0, 1 }, { 0, 0, 0, 0, 0, 1 }, { 0, 0, 0, 0, 0, 1 } });
+  const auto computedArraysAreFinite = [&] {
+    for (const char* name : { "Ambient", "Diffuse", "Specular", "Emission", "Radiance" })
+    {
+      for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+      {
+        for (double v : tuple3(radiance->GetOutput(), name, i))
+        {
+          if (!std::isfinite(v))
+          {
+            return false;
+          }
+        }
+      }
+    }
+    return true;
+  };
+  vtkNew<vtkDoubleArray> colours;
+  colours->SetName("C");
+  colours->SetNumberOfComponents(3);
+  colours->InsertNextTuple3(1e300, 0.0, 0.5);
+  colours->InsertNextTuple3(-1e300, 1.0, 0.5);
+  colours->InsertNextTuple3(std::numeric_limits<double>::quiet_NaN(), 1.0, 0.5);
+  colours->InsertNextTuple3(0.5, 0.5, 0.5);
+  mesh->GetPointData()->AddArray(colours);
+  radiance->SetScene(makeScene({ someLight() }, ShadingModel::Phong, glm::vec3(0.0f, 0.0f, 10.0f)));
+  radiance->SetDiffuseColorArrayName("C");
+  radiance->SetInputData(mesh);
+  radiance->Update();
+  ASSERT_STREQ(radiance->GetErrorMessage(), "");
+  EXPECT_TRUE(computedArraysAreFinite()); // the input array "C" keeps its NaN
+  const double diffuse0 = tuple3(radiance->GetOutput(), "Diffuse", 0)[0];
+  const double diffuse3 = tuple3(radiance->GetOutput(), "Diffuse", 3)[0];
+  EXPECT_NEAR(diffuse0 / diffuse3, kMaxColourValue / 0.5, kMaxColourValue * 1e-5);
+  EXPECT_LT(tuple3(radiance->GetOutput(), "Diffuse", 1)[0], 0.0); // -1e6: used as given, clamped
+  EXPECT_EQ(tuple3(radiance->GetOutput(), "Diffuse", 2)[0], 0.0);  // NaN counts as 0
+
+  vtkNew<vtkImageData> texture;
+  texture->SetDimensions(1, 1, 1);
+  vtkNew<vtkFloatArray> pixels;
+  pixels->SetNumberOfComponents(3);
+  pixels->InsertNextTuple3(1, 1, 1);
+  texture->GetPointData()->SetScalars(pixels);
+  vtkNew<vtkDoubleArray> uv;
+  uv->SetNumberOfComponents(2);
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  uv->InsertNextTuple2(nan, 0.5);
+  uv->InsertNextTuple2(0.5, inf);
+  uv->InsertNextTuple2(-inf, nan);
+  uv->InsertNextTuple2(0.5, 0.5);
+  mesh->GetPointData()->SetTCoords(uv);
+  radiance->SetDiffuseColorArrayName(nullptr);
+  radiance->SetDiffuseTexture(texture);
+  radiance->Update();
+  ASSERT_STREQ(radiance->GetErrorMessage(), "");
+  EXPECT_TRUE(computedArraysAreFinite());
+  for (vtkIdType i = 0; i < 3; ++i)
+  {
+    EXPECT_EQ(tuple3(radiance->GetOutput(), "Diffuse", i)[0], 0.0) << i;
+  }
+  EXPECT_GT(tuple3(radiance->GetOutput(), "Diffuse", 3)[0], 0.0);
 }

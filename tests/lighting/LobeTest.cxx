@@ -143,3 +143,42 @@ TEST(LobesOnMesh, EachLobeSitsInItsPointsNormalFrame)
     }
   }
 }
+
+TEST(LobesOnMesh, TinyLobesAndPointsThatAreNotFinite)
+{
+  // A material so dark that the largest BRDF value is below float's normal
+  // range (k_d = 1e-40): the lobes are still scaled to the mesh, not to
+  // infinity. A chosen point with a NaN coordinate is a one-line error.
+  SceneLight light = whiteLight(LightType::Point);
+  light.position = glm::vec3(0.0f, 0.0f, 3.0f);
+  vtkSmartPointer<slScene> scene = makeScene({ light }, ShadingModel::Lambert);
+  Scene s = scene->GetScene();
+  s.material.diffuse = glm::vec3(1e-40f);
+  scene->SetScene(s);
+  vtkSmartPointer<vtkPolyData> mesh = sphere(12);
+  vtkNew<slLobesOnMesh> lobes;
+  lobes->SetScene(scene);
+  lobes->SetInputData(mesh);
+  lobes->Update();
+  ASSERT_STREQ(lobes->GetErrorMessage(), "");
+  vtkPolyData* out = lobes->GetOutput();
+  ASSERT_GT(out->GetNumberOfPoints(), 0);
+  double furthest = 0.0;
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double q[3];
+    out->GetPoint(i, q);
+    ASSERT_TRUE(std::isfinite(q[0]) && std::isfinite(q[1]) && std::isfinite(q[2])) << i;
+    furthest = std::max(furthest, std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]));
+  }
+  EXPECT_GT(furthest, 0.6); // lobes of a visible size around the unit sphere
+  EXPECT_LT(furthest, 1.0 + mesh->GetLength());
+
+  mesh->GetPoints()->SetPoint(0, std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0);
+  vtkNew<vtkIdList> ids;
+  ids->InsertNextId(0);
+  lobes->SetPointIds(ids);
+  lobes->SetInputData(mesh);
+  lobes->Update();
+  EXPECT_STREQ(lobes->GetErrorMessage(), "input mesh: point 0 has a coordinate that is not finite");
+}

@@ -251,6 +251,28 @@ TEST(Detail, DisplacementMovesPointsAndRecomputesNormals)
   }
 }
 
+TEST(Detail, DisplacementBeyondTheFloatRangeIsAnError)
+{
+  // Points moved past float's range cannot get normals: a one-line error
+  // (it was an empty mesh with no reason).
+  const TestFolder folder;
+  // A 2 x 2 float height map (PFM: header, then little-endian RGB floats) of 3e38.
+  std::string pfm = "PF\n2 2\n-1.0\n";
+  const float height = 3e38f;
+  for (int k = 0; k < 12; ++k)
+  {
+    pfm.append(reinterpret_cast<const char*>(&height), sizeof height);
+  }
+  folder.write("huge.pfm", pfm);
+  const std::string path = folder.path("huge.pfm");
+  vtkNew<slDisplacementFilter> f;
+  f->SetFileName(path.c_str());
+  f->SetScale(10.0);
+  Result r = update(f, plane(4));
+  EXPECT_NE(r.error.find("displaced mesh: point "), std::string::npos) << r.error;
+  EXPECT_EQ(r.out->GetNumberOfPoints(), 0);
+}
+
 TEST(Detail, BevyNormalMapAgreesWithItsInvertedDepthMap)
 {
   // The bevy normal map was authored from the depth map: bump normals from

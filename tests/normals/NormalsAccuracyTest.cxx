@@ -143,3 +143,51 @@ TEST(NormalsAccuracy, AreaWeightingMatchesVTKTriangleMeshPointNormals)
   ours->GetPointData()->AddArray(ref->GetPointData()->GetArray("VTKNormals"));
   EXPECT_LT(errorAgainst(ours, "VTKNormals").max, 1e-3);
 }
+
+TEST(NormalsAccuracy, FloatMeshesOfAnySizeGetTheSameNormals)
+{
+  // Float normals from float points: an edge cross product squared is about
+  // the 4th power of the mesh's size, which overflows float for sizes above
+  // about 1e9 and underflows below about 1e-9. A mesh of astronomical or
+  // molecular size, far from the origin too, must get the normals of the
+  // same mesh at size 1 (checked for every weighting and every point).
+  vtkSmartPointer<vtkPolyData> unit = normalstest::irregularEllipsoid({ 1.0, 0.7, 0.5 }, 5, 3);
+  for (int weighting = slPolyDataNormals::UNIFORM; weighting <= slPolyDataNormals::MAX; ++weighting)
+  {
+    vtkSmartPointer<vtkPolyData> reference = normalsOf(unit, weighting);
+    for (double size : { 1e-30, 1e-22, 1e-12, 1e12, 1e20, 1e30 })
+    {
+      vtkNew<vtkPoints> points;
+      points->SetDataTypeToFloat();
+      for (vtkIdType i = 0; i < unit->GetNumberOfPoints(); ++i)
+      {
+        double p[3];
+        unit->GetPoint(i, p);
+        points->InsertNextPoint(size * (p[0] + 3.0), size * p[1], size * p[2]);
+      }
+      vtkNew<vtkPolyData> mesh;
+      mesh->SetPoints(points);
+      mesh->SetPolys(unit->GetPolys());
+      vtkSmartPointer<vtkPolyData> out = normalsOf(mesh, weighting);
+      ASSERT_EQ(out->GetNumberOfPoints(), reference->GetNumberOfPoints()) << size;
+      double worst = 0.0;
+      for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+      {
+        double a[3], b[3];
+        out->GetPointData()->GetArray("Normals")->GetTuple(i, a);
+        reference->GetPointData()->GetArray("Normals")->GetTuple(i, b);
+        // A unit normal (not NaN, not the zero vector), close to the reference.
+        ASSERT_NEAR(std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]), 1.0, 1e-5) << size << ", point " << i;
+        const double angle = normalstest::angleDegrees(a, b);
+        ASSERT_TRUE(angle <= 180.0) << size << ", point " << i; // not NaN
+        worst = std::max(worst, angle);
+      }
+      // Float rounding of the scaled coordinates moves the normals by far
+      // less than this.
+      EXPECT_LT(worst, 1e-3) << "size " << size << ", weighting " << slPolyDataNormals::GetWeightingName(weighting);
+      double p[3];
+      out->GetPoint(0, p); // the output keeps the input's coordinates
+      EXPECT_EQ(static_cast<float>(p[1]), static_cast<float>(size * unit->GetPoint(0)[1]));
+    }
+  }
+}

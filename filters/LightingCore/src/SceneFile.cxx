@@ -1,6 +1,7 @@
 #include "shadelab/SceneFile.h"
 
 #include "shadelab/AtomicFile.h"
+#include "shadelab/SceneLimits.h"
 
 #include <nlohmann/json.hpp>
 
@@ -8,6 +9,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -159,9 +161,11 @@ private:
       this->fail(path, "expected a number, got " + typeName(value));
     }
     const double x = value.get<double>();
-    if (!std::isfinite(x))
+    // Every value is stored as a float: beyond its range it would become
+    // infinite.
+    if (!std::isfinite(x) || std::abs(x) > std::numeric_limits<float>::max())
     {
-      this->fail(path, "expected a finite number");
+      this->fail(path, "expected a finite number (within the float range)");
     }
     if (x < lo || x > hi || (openLo && x == lo) || (openHi && x == hi))
     {
@@ -172,7 +176,7 @@ private:
     return x;
   }
 
-  glm::vec3 triple(const json& value, const std::string& path, const char* what, double lo) const
+  glm::vec3 triple(const json& value, const std::string& path, const char* what, double lo, double hi = HUGE_VAL) const
   {
     if (!value.is_array() || value.size() != 3)
     {
@@ -184,14 +188,14 @@ private:
     for (int i = 0; i < 3; ++i)
     {
       out[i] = static_cast<float>(
-        this->number(value[i], path + "[" + std::to_string(i) + "]", lo, HUGE_VAL));
+        this->number(value[i], path + "[" + std::to_string(i) + "]", lo, hi));
     }
     return out;
   }
 
   glm::vec3 color(const json& value, const std::string& path) const
   {
-    return this->triple(value, path, "an RGB colour", 0.0);
+    return this->triple(value, path, "an RGB colour", 0.0, kMaxColourValue);
   }
 
   glm::vec3 point(const json& value, const std::string& path) const
@@ -268,7 +272,7 @@ private:
     }
     if (value.contains("shininess"))
     {
-      m.shininess = static_cast<float>(this->number(value["shininess"], childPath(path, "shininess"), 0, 1e5));
+      m.shininess = static_cast<float>(this->number(value["shininess"], childPath(path, "shininess"), 0, kMaxShininess));
     }
     if (value.contains("diffuseTexture"))
     {
@@ -368,7 +372,7 @@ private:
     }
     if (value.contains("intensity"))
     {
-      l.intensity = static_cast<float>(this->number(value["intensity"], childPath(path, "intensity"), 0, HUGE_VAL));
+      l.intensity = static_cast<float>(this->number(value["intensity"], childPath(path, "intensity"), 0, kMaxColourValue));
     }
     const std::pair<const char*, glm::vec3*> colors[] = { { "ambient", &l.ambient }, { "diffuse", &l.diffuse },
       { "specular", &l.specular } };
@@ -404,7 +408,7 @@ private:
     }
     if (value.contains("exponent"))
     {
-      l.exponent = static_cast<float>(this->number(value["exponent"], childPath(path, "exponent"), 0, 1e4));
+      l.exponent = static_cast<float>(this->number(value["exponent"], childPath(path, "exponent"), 0, kMaxSpotExponent));
     }
     if (value.contains("edge"))
     {
