@@ -1,4 +1,5 @@
 #include "slLitFilter.h"
+#include "slAtomicMinimum.h"
 
 #include "slFloat3View.h"
 #include "slLightingSetup.h"
@@ -110,10 +111,7 @@ bool slLitFilter::PrepareLighting(
           const glm::vec3 unit = shadelab::glsl::slSafeNormalize(view[i]);
           if (glm::dot(unit, unit) < 0.5f) // the zero vector: no direction
           {
-            vtkIdType current = firstBad.load();
-            while (i < current && !firstBad.compare_exchange_weak(current, i))
-            {
-            }
+            slAtomicMinimum(firstBad, i);
             return;
           }
         }

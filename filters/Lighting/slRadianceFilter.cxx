@@ -1,4 +1,5 @@
 #include "slRadianceFilter.h"
+#include "slAtomicMinimum.h"
 
 #include "slDiffuseColors.h"
 #include "slFloat3View.h"
@@ -111,10 +112,7 @@ int slRadianceFilter::RequestData(vtkInformation*, vtkInformationVector** inputV
     const vtkIdType first = shadeRange(in, out, begin, end);
     if (first < end) // else none in this range
     {
-      vtkIdType current = firstWithoutNormal.load();
-      while (first < current && !firstWithoutNormal.compare_exchange_weak(current, first))
-      {
-      }
+      slAtomicMinimum(firstWithoutNormal, first);
     }
   });
   if (this->ZeroNormalsAreErrors && firstWithoutNormal.load() < n)

@@ -1,4 +1,5 @@
 #include "slNormalsVTKBridge.h"
+#include "slAtomicMinimum.h"
 
 #include <vtkFloatArray.h>
 #include <vtkPoints.h>
@@ -38,10 +39,7 @@ vtkIdType slFirstNonFinitePoint(vtkPoints* points)
       }
       if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
       {
-        vtkIdType cur = first.load();
-        while (i < cur && !first.compare_exchange_weak(cur, i))
-        {
-        }
+        slAtomicMinimum(first, i);
         return;
       }
     }

@@ -129,34 +129,33 @@ TEST(SceneFile, UnknownNames)
 
 TEST(SceneFile, OutOfRangeValues)
 {
-  EXPECT_EQ(errorFor(R"({"material": {"shininess": -1}})"),
-    "bad.json: material.shininess: -1 is out of range [0, 100000]");
-  EXPECT_EQ(errorFor(withLight(R"({"type": "directional", "direction": [0, 0, 0]})")),
-    "bad.json: lights[1].direction: a direction must not have zero length");
-  EXPECT_EQ(errorFor(withLight(R"({"type": "spot", "cutoff": 0})")),
-    "bad.json: lights[1].cutoff: 0 is out of range (0, 90]");
-  EXPECT_EQ(errorFor(withLight(R"({"type": "spot", "cutoff": 90.5})")),
-    "bad.json: lights[1].cutoff: 90.5 is out of range (0, 90]");
-  EXPECT_EQ(errorFor(withLight(R"({"type": "spot", "cutoff": 20, "edge": 25})")),
-    "bad.json: lights[1].edge: 25 is out of range [0, 20]");
-  EXPECT_EQ(errorFor(withLight(R"({"type": "point", "attenuation": [1, -0.5, 0]})")),
-    "bad.json: lights[1].attenuation[1]: -0.5 is out of range [0, inf)");
-  EXPECT_EQ(errorFor(withLight(R"({"type": "point", "intensity": -2})")),
-    "bad.json: lights[1].intensity: -2 is out of range [0, 1e+06]");
-  EXPECT_EQ(errorFor(R"({"material": {"diffuse": [0.5, -0.1, 0]}})"),
-    "bad.json: material.diffuse[1]: -0.1 is out of range [0, 1e+06]");
-  // Upper limits, so that no product of intensity, colours and BRDF factors
-  // overflows a float (SceneLimits.h), and the float range itself.
-  EXPECT_EQ(errorFor(withLight(R"({"type": "point", "intensity": 2e6})")),
-    "bad.json: lights[1].intensity: 2e+06 is out of range [0, 1e+06]");
-  EXPECT_EQ(errorFor(withLight(R"({"type": "point", "specular": [1, 1, 3e38]})")),
-    "bad.json: lights[1].specular[2]: 3e+38 is out of range [0, 1e+06]");
-  EXPECT_EQ(errorFor(R"({"material": {"emission": [1e39, 0, 0]}})"),
-    "bad.json: material.emission[0]: expected a finite number (within the float range)");
-  EXPECT_EQ(errorFor(withLight(R"({"type": "point", "position": [0, -1e39, 0]})")),
-    "bad.json: lights[1].position[1]: expected a finite number (within the float range)");
-  EXPECT_EQ(errorFor(R"({"camera": {"viewAngle": 180}})"), "bad.json: camera.viewAngle: 180 is out of range (0, 180)");
-  EXPECT_EQ(errorFor(R"({"imageSize": [8, 480]})"), "bad.json: imageSize[0]: 8 is out of range [16, 8192]");
+  // { scene text, the error it gives }. The upper limits on colours and
+  // intensities keep every product of them with the BRDF factors finite
+  // in float (SceneLimits.h); every value must fit a float.
+  const std::pair<std::string, std::string> cases[] = {
+    { R"({"material": {"shininess": -1}})", "material.shininess: -1 is out of range [0, 100000]" },
+    { withLight(R"({"type": "directional", "direction": [0, 0, 0]})"),
+      "lights[1].direction: a direction must not have zero length" },
+    { withLight(R"({"type": "spot", "cutoff": 0})"), "lights[1].cutoff: 0 is out of range (0, 90]" },
+    { withLight(R"({"type": "spot", "cutoff": 90.5})"), "lights[1].cutoff: 90.5 is out of range (0, 90]" },
+    { withLight(R"({"type": "spot", "cutoff": 20, "edge": 25})"), "lights[1].edge: 25 is out of range [0, 20]" },
+    { withLight(R"({"type": "point", "attenuation": [1, -0.5, 0]})"),
+      "lights[1].attenuation[1]: -0.5 is out of range [0, inf)" },
+    { withLight(R"({"type": "point", "intensity": -2})"), "lights[1].intensity: -2 is out of range [0, 1e+06]" },
+    { R"({"material": {"diffuse": [0.5, -0.1, 0]}})", "material.diffuse[1]: -0.1 is out of range [0, 1e+06]" },
+    { withLight(R"({"type": "point", "intensity": 2e6})"), "lights[1].intensity: 2e+06 is out of range [0, 1e+06]" },
+    { withLight(R"({"type": "point", "specular": [1, 1, 3e38]})"),
+      "lights[1].specular[2]: 3e+38 is out of range [0, 1e+06]" },
+    { R"({"material": {"emission": [1e39, 0, 0]}})", "material.emission[0]: 1e+39 is beyond the float range" },
+    { withLight(R"({"type": "point", "position": [0, -1e39, 0]})"),
+      "lights[1].position[1]: -1e+39 is beyond the float range" },
+    { R"({"camera": {"viewAngle": 180}})", "camera.viewAngle: 180 is out of range (0, 180)" },
+    { R"({"imageSize": [8, 480]})", "imageSize[0]: 8 is out of range [16, 8192]" },
+  };
+  for (const auto& c : cases)
+  {
+    EXPECT_EQ(errorFor(c.first), "bad.json: " + c.second) << c.first;
+  }
 }
 
 TEST(SceneFile, WrongNumberOfComponents)

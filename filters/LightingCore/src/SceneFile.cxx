@@ -9,7 +9,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
-#include <limits>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -33,13 +32,6 @@ std::string join(const std::vector<std::string>& items)
 std::string childPath(const std::string& parent, const std::string& key)
 {
   return parent.empty() ? key : parent + "." + key;
-}
-
-std::string formatNumber(double value)
-{
-  std::ostringstream s;
-  s << value;
-  return s.str();
 }
 
 /// Reads one JSON document into a Scene, failing on the first problem with a
@@ -161,17 +153,10 @@ private:
       this->fail(path, "expected a number, got " + typeName(value));
     }
     const double x = value.get<double>();
-    // Every value is stored as a float: beyond its range it would become
-    // infinite.
-    if (!std::isfinite(x) || std::abs(x) > std::numeric_limits<float>::max())
+    const std::string problem = numberProblem(x, lo, hi, openLo, openHi);
+    if (!problem.empty())
     {
-      this->fail(path, "expected a finite number (within the float range)");
-    }
-    if (x < lo || x > hi || (openLo && x == lo) || (openHi && x == hi))
-    {
-      this->fail(path,
-        formatNumber(x) + " is out of range " + (openLo ? "(" : "[") + formatNumber(lo) + ", " +
-          (std::isinf(hi) ? std::string("inf") : formatNumber(hi)) + (openHi || std::isinf(hi) ? ")" : "]"));
+      this->fail(path, problem);
     }
     return x;
   }

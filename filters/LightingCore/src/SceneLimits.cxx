@@ -1,6 +1,8 @@
 #include "shadelab/SceneLimits.h"
 
 #include <cmath>
+#include <initializer_list>
+#include <limits>
 #include <sstream>
 
 namespace shadelab
@@ -15,25 +17,18 @@ std::string formatted(double x)
   return s.str();
 }
 
-/// "" if @p x is finite and in [lo, hi], else the problem for @p path.
-std::string numberProblem(const std::string& path, double x, double lo, double hi)
+/// numberProblem() for the value at @p path, "" or "path: problem".
+std::string problemAt(const std::string& path, double x, double lo, double hi, bool openLo = false)
 {
-  if (!std::isfinite(x))
-  {
-    return path + ": " + formatted(x) + " is not a finite number";
-  }
-  if (x < lo || x > hi)
-  {
-    return path + ": " + formatted(x) + " is out of range [" + formatted(lo) + ", " + formatted(hi) + "]";
-  }
-  return "";
+  const std::string p = numberProblem(x, lo, hi, openLo);
+  return p.empty() ? p : path + ": " + p;
 }
 
 std::string vectorProblem(const std::string& path, const glm::vec3& v, double lo, double hi)
 {
   for (int i = 0; i < 3; ++i)
   {
-    const std::string p = numberProblem(path + "[" + std::to_string(i) + "]", v[i], lo, hi);
+    const std::string p = problemAt(path + "[" + std::to_string(i) + "]", v[i], lo, hi);
     if (!p.empty())
     {
       return p;
@@ -42,26 +37,10 @@ std::string vectorProblem(const std::string& path, const glm::vec3& v, double lo
   return "";
 }
 
-std::string lightProblem(const SceneLight& l, const std::string& path)
+/// The first non-empty problem of @p problems, or "".
+std::string firstProblem(std::initializer_list<std::string> problems)
 {
-  const double big = HUGE_VAL;
-  const std::pair<const char*, const glm::vec3*> colours[] = { { "ambient", &l.ambient },
-    { "diffuse", &l.diffuse }, { "specular", &l.specular } };
-  for (const auto& c : colours)
-  {
-    const std::string p = vectorProblem(path + "." + c.first, *c.second, 0.0, kMaxColourValue);
-    if (!p.empty())
-    {
-      return p;
-    }
-  }
-  for (const std::string& p : { numberProblem(path + ".intensity", l.intensity, 0.0, kMaxColourValue),
-         vectorProblem(path + ".position", l.position, -big, big),
-         vectorProblem(path + ".direction", l.direction, -big, big),
-         vectorProblem(path + ".attenuation", l.attenuation, 0.0, big),
-         numberProblem(path + ".cutoff", l.cutoffDegrees, 0.0, 90.0),
-         numberProblem(path + ".exponent", l.exponent, 0.0, kMaxSpotExponent),
-         numberProblem(path + ".edge", l.edgeDegrees, 0.0, 90.0) })
+  for (const std::string& p : problems)
   {
     if (!p.empty())
     {
@@ -70,7 +49,44 @@ std::string lightProblem(const SceneLight& l, const std::string& path)
   }
   return "";
 }
+
+/// The values a scene file accepts for the light's type (the others are
+/// never used for it).
+std::string lightProblem(const SceneLight& l, const std::string& path)
+{
+  const bool positional = l.type == LightType::Point || l.type == LightType::Spot;
+  const bool aimed = l.type == LightType::Directional || l.type == LightType::Spot;
+  const bool spot = l.type == LightType::Spot;
+  return firstProblem({ vectorProblem(path + ".ambient", l.ambient, 0.0, kMaxColourValue),
+    vectorProblem(path + ".diffuse", l.diffuse, 0.0, kMaxColourValue),
+    vectorProblem(path + ".specular", l.specular, 0.0, kMaxColourValue),
+    problemAt(path + ".intensity", l.intensity, 0.0, kMaxColourValue),
+    positional ? vectorProblem(path + ".position", l.position, -HUGE_VAL, HUGE_VAL) : "",
+    positional ? vectorProblem(path + ".attenuation", l.attenuation, 0.0, HUGE_VAL) : "",
+    aimed ? vectorProblem(path + ".direction", l.direction, -HUGE_VAL, HUGE_VAL) : "",
+    spot ? problemAt(path + ".cutoff", l.cutoffDegrees, 0.0, 90.0, true) : "",
+    spot ? problemAt(path + ".exponent", l.exponent, 0.0, kMaxSpotExponent) : "",
+    spot ? problemAt(path + ".edge", l.edgeDegrees, 0.0, l.cutoffDegrees) : "" });
+}
 } // namespace
+
+std::string numberProblem(double x, double lo, double hi, bool openLo, bool openHi)
+{
+  if (!std::isfinite(x))
+  {
+    return formatted(x) + " is not a finite number";
+  }
+  if (std::abs(x) > std::numeric_limits<float>::max())
+  {
+    return formatted(x) + " is beyond the float range";
+  }
+  if (x < lo || x > hi || (openLo && x == lo) || (openHi && x == hi))
+  {
+    return formatted(x) + " is out of range " + (openLo ? "(" : "[") + formatted(lo) + ", " +
+      (std::isinf(hi) ? std::string("inf") : formatted(hi)) + (openHi || std::isinf(hi) ? ")" : "]");
+  }
+  return "";
+}
 
 std::string sceneValueProblem(const Scene& scene)
 {
@@ -85,20 +101,13 @@ std::string sceneValueProblem(const Scene& scene)
     }
   }
   const SceneMaterial& m = scene.material;
-  for (const std::string& p : { vectorProblem("material.ambient", m.ambient, 0.0, kMaxColourValue),
-         vectorProblem("material.diffuse", m.diffuse, 0.0, kMaxColourValue),
-         vectorProblem("material.specular", m.specular, 0.0, kMaxColourValue),
-         vectorProblem("material.emission", m.emission, 0.0, kMaxColourValue),
-         numberProblem("material.shininess", m.shininess, 0.0, kMaxShininess),
-         vectorProblem("camera.position", scene.camera.position, -HUGE_VAL, HUGE_VAL),
-         vectorProblem("camera.focalPoint", scene.camera.focalPoint, -HUGE_VAL, HUGE_VAL) })
-  {
-    if (!p.empty())
-    {
-      return p;
-    }
-  }
-  return "";
+  return firstProblem({ vectorProblem("material.ambient", m.ambient, 0.0, kMaxColourValue),
+    vectorProblem("material.diffuse", m.diffuse, 0.0, kMaxColourValue),
+    vectorProblem("material.specular", m.specular, 0.0, kMaxColourValue),
+    vectorProblem("material.emission", m.emission, 0.0, kMaxColourValue),
+    problemAt("material.shininess", m.shininess, 0.0, kMaxShininess),
+    vectorProblem("camera.position", scene.camera.position, -HUGE_VAL, HUGE_VAL),
+    vectorProblem("camera.focalPoint", scene.camera.focalPoint, -HUGE_VAL, HUGE_VAL) });
 }
 
 } // namespace shadelab

@@ -255,7 +255,7 @@ inline unsigned uniformWholeExponent(vfloat8 y)
 }
 
 /// GLSL's definition: pow(x, y) = exp2(y log2 x), for x > 0; by repeated
-/// squaring (more exact and about twice as fast) when y is the same whole
+/// squaring (more exact, and fewer operations) when y is the same whole
 /// number in every lane.
 inline vfloat8 pow(vfloat8 x, vfloat8 y)
 {

@@ -30,10 +30,18 @@ constexpr double kMaxShininess = 1e5;
 /// Largest spot-light exponent.
 constexpr double kMaxSpotExponent = 1e4;
 
+/// "" if @p x can be a scene value in [@p lo, @p hi] (an end excluded when
+/// its flag is set; an infinite end is open): a finite number within
+/// float's range, as every scene value is stored as a float. Else the
+/// problem: "1e+39 is beyond the float range", "2e+06 is out of range
+/// [0, 1e+06]". SceneFile and sceneValueProblem() word their errors with it.
+std::string numberProblem(double x, double lo, double hi, bool openLo = false, bool openHi = false);
+
 /// "" if every value of @p scene that reaches the lighting formulas is finite
 /// and in range; else the first problem, naming the value as a scene file
 /// would, with the light's name if it has one
 /// ("lights[1] (\"VTK light 0\").intensity: nan is not a finite number").
+/// Light cutoffs in (0, 90] and edges in [0, cutoff], as in scene files.
 std::string sceneValueProblem(const Scene& scene);
 
 } // namespace shadelab
