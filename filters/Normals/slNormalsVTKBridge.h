@@ -22,8 +22,10 @@ class vtkPoints;
 /// vtkSMPTools::For behind the VTK-free loop interface.
 slnormals::Parallel slSMPParallel();
 
-/// Index of the first point with a NaN or infinite coordinate, or -1.
-vtkIdType slFirstNonFinitePoint(vtkPoints* points);
+/// Index of the first point with a NaN or infinite coordinate, or -1. When
+/// all are finite and @p largestSide is given, it gets the longest side of
+/// their bounding box (from the same pass over the points).
+vtkIdType slFirstNonFinitePoint(vtkPoints* points, double* largestSide = nullptr);
 
 /// The VTK array that holds ids of type @p Id (vtkTypeInt32Array or vtkTypeInt64Array).
 template <typename Id>

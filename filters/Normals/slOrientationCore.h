@@ -95,10 +95,7 @@ inline void reversePolygon(Polygons<Id>& polys, int64_t f)
 {
   std::reverse(polys.connectivity + polys.begin(f), polys.connectivity + polys.end(f));
 }
-} // namespace detail
 
-namespace detail
-{
 /// True if two of the @p n values repeat: at a point, two corners whose
 /// next points repeat traverse that edge in the same direction. n is a
 /// point's valence, so comparing all pairs is cheaper than any set.
@@ -145,22 +142,16 @@ bool hasInconsistentEdge(const Polygons<Id>& polys, const VertexCorners<Id>& vc,
   return found;
 }
 
-/// Reverses polygons so that neighbours agree (if @p consistent) and closed
-/// pieces face outward (if @p outward, which implies consistent). Returns the
-/// number of polygons reversed; @p flippedOut (if given) gets 1 for each.
-/// @p vc must describe @p polys.
+/// Reverses polygons so that neighbours agree, and closed pieces face
+/// outward if @p outward. Returns the number of polygons reversed;
+/// @p flippedOut (if given) gets 1 for each. @p vc must describe @p polys.
+/// A full pass over the mesh: call it when an edge is known to be used the
+/// same way by two polygons (hasInconsistentEdge, or the split path's own
+/// check) or when @p outward is wanted, not to find out.
 template <typename T, typename Id>
-int64_t orientPolygons(Polygons<Id>& polys, const T* xyz, const VertexCorners<Id>& vc, bool consistent,
-  bool outward, const Parallel& parallel, std::vector<char>* flippedOut = nullptr)
+int64_t orientPolygons(
+  Polygons<Id>& polys, const T* xyz, const VertexCorners<Id>& vc, bool outward, std::vector<char>* flippedOut = nullptr)
 {
-  if (!consistent && !outward)
-  {
-    return 0;
-  }
-  if (!outward && !hasInconsistentEdge(polys, vc, parallel))
-  {
-    return 0;
-  }
   std::vector<int32_t> piece(static_cast<size_t>(polys.numPolygons), -1);
   std::vector<char> flipped(static_cast<size_t>(polys.numPolygons), 0);
   std::vector<char> closed;

@@ -29,6 +29,7 @@
 #include <limits>
 #include <numeric>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 vtkStandardNewMacro(slPolyDataNormals);
@@ -42,30 +43,15 @@ struct Settings
   bool split, orient, outward, weld, pointNormals, cellNormals;
 };
 
-/// Float coordinates to compute normals from. Normals are in float when the
-/// points are, and a cross product of two edges squared is about the 4th
-/// power of the mesh's size: beyond about 1e9 it overflows and below about
-/// 1e-9 it underflows, so a mesh of astronomical or molecular size would get
-/// NaN or zero normals. Normals do not change when a mesh is scaled, so such
-/// a mesh is scaled by a power of two (exact) to a size between 1 and 2, in
-/// @p scaled; any other mesh is used as it is.
-const float* geometryOf(vtkFloatArray* points, const double bounds[6], std::vector<float>& scaled)
+/// Whether float points can be computed in float. The edge cross products
+/// squared grow as the 4th power of the mesh's size: above about 1e9 they
+/// overflow a float and below about 1e-9 they underflow, which gave NaN or
+/// zero normals, silently. Double holds them for every float input, so a
+/// float mesh whose bounding box is not between 2^-10 and 2^20 across (one
+/// stray far point counts too) is computed in double.
+bool floatArithmeticSuffices(double largestSide)
 {
-  const double size = std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
-  const float* xyz = points->GetPointer(0);
-  if (!(size > 0.0) || !std::isfinite(size) || (size >= 0x1p-10 && size <= 0x1p10))
-  {
-    return xyz;
-  }
-  const int exponent = -std::ilogb(size);
-  scaled.resize(static_cast<size_t>(points->GetNumberOfValues()));
-  vtkSMPTools::For(0, points->GetNumberOfValues(), 65536, [&](vtkIdType b, vtkIdType e) {
-    for (vtkIdType i = b; i < e; ++i)
-    {
-      scaled[static_cast<size_t>(i)] = std::ldexp(xyz[i], exponent);
-    }
-  });
-  return scaled.data();
+  return largestSide >= 0x1p-10 && largestSide <= 0x1p20;
 }
 
 /// The job on points of type T and polygon ids of type Id.
@@ -73,15 +59,13 @@ template <typename T, typename Id>
 class NormalsJob
 {
 public:
-  /// @p xyz: the input's coordinates, or a copy scaled by a power of two
-  /// (geometryOf) for the arithmetic; @p inputXyz: the input's own, copied
-  /// to the output points.
-  NormalsJob(const Settings& s, vtkPolyData* input, vtkPolyData* output, const T* xyz, const T* inputXyz)
+  /// @p xyz: the input's coordinates as T (converted to double when they
+  /// are not T already).
+  NormalsJob(const Settings& s, vtkPolyData* input, vtkPolyData* output, const T* xyz)
     : S(s)
     , Input(input)
     , Output(output)
     , XYZ(xyz)
-    , InputXYZ(inputXyz)
     , Par(slSMPParallel())
   {
   }
@@ -275,7 +259,7 @@ private:
     }
     std::vector<char> flips;
     const vtkIdType flipped =
-      slnormals::orientPolygons(topology, this->XYZ, corners, true, this->S.outward, this->Par, &flips);
+      slnormals::orientPolygons(topology, this->XYZ, corners, this->S.outward, &flips);
     if (topology.connectivity != polys.connectivity)
     {
       for (int64_t f = 0; f < polys.numPolygons; ++f)
@@ -346,15 +330,16 @@ private:
       }
     }
 
-    vtkPoints* inPoints = this->Input->GetPoints();
+    // Output points of type T (the caller turns them back into the input's
+    // type if that differs).
     vtkNew<vtkPoints> points;
-    points->SetDataType(inPoints->GetDataType());
+    points->SetDataType(std::is_same<T, float>::value ? VTK_FLOAT : VTK_DOUBLE);
     points->SetNumberOfPoints(total);
     T* out = static_cast<T*>(points->GetData()->GetVoidPointer(0));
     this->Par.forRange(0, total, 65536, [&](int64_t b, int64_t e) {
       for (int64_t i = b; i < e; ++i)
       {
-        std::memcpy(out + 3 * i, this->InputXYZ + 3 * source[static_cast<size_t>(i)], 3 * sizeof(T));
+        std::memcpy(out + 3 * i, this->XYZ + 3 * source[static_cast<size_t>(i)], 3 * sizeof(T));
       }
     });
     this->Output->SetPoints(points);
@@ -406,7 +391,6 @@ private:
   vtkPolyData* Input;
   vtkPolyData* Output;
   const T* XYZ;
-  const T* InputXYZ;
   slnormals::Parallel Par;
   slOwnedPolygons<Id> Owned;
   bool HasOwned = false;
@@ -444,7 +428,8 @@ int slPolyDataNormals::RequestData(vtkInformation*, vtkInformationVector** input
   {
     return 1;
   }
-  const vtkIdType bad = slFirstNonFinitePoint(input->GetPoints());
+  double largestSide = 0.0;
+  const vtkIdType bad = slFirstNonFinitePoint(input->GetPoints(), &largestSide);
   if (bad >= 0)
   {
     return this->Fail("point " + std::to_string(bad) + " has a NaN or infinite coordinate", output);
@@ -465,9 +450,12 @@ int slPolyDataNormals::RequestData(vtkInformation*, vtkInformationVector** input
   s.pointNormals = this->ComputePointNormals;
   s.cellNormals = this->ComputeCellNormals;
 
-  // Points as float or double; anything else is converted to double.
+  // Points as float or double; anything else, and float points of a mesh
+  // too large or too small for float arithmetic, is converted to double.
   vtkSmartPointer<vtkDataArray> data = input->GetPoints()->GetData();
-  if (!vtkFloatArray::SafeDownCast(data) && !vtkDoubleArray::SafeDownCast(data))
+  const bool computeAsGiven = vtkDoubleArray::SafeDownCast(data) ||
+    (vtkFloatArray::SafeDownCast(data) && floatArithmeticSuffices(largestSide));
+  if (!computeAsGiven)
   {
     auto converted = vtkSmartPointer<vtkDoubleArray>::New();
     converted->DeepCopy(data);
@@ -479,14 +467,12 @@ int slPolyDataNormals::RequestData(vtkInformation*, vtkInformationVector** input
     using Id = decltype(id);
     if (auto* f = vtkFloatArray::SafeDownCast(data))
     {
-      std::vector<float> scaled;
-      NormalsJob<float, Id> job(s, input, output, geometryOf(f, input->GetBounds(), scaled), f->GetPointer(0));
+      NormalsJob<float, Id> job(s, input, output, f->GetPointer(0));
       problem = job.Run(flipped);
     }
     else
     {
-      const double* xyz = vtkDoubleArray::SafeDownCast(data)->GetPointer(0);
-      NormalsJob<double, Id> job(s, input, output, xyz, xyz);
+      NormalsJob<double, Id> job(s, input, output, vtkDoubleArray::SafeDownCast(data)->GetPointer(0));
       problem = job.Run(flipped);
     }
     return 0;
@@ -495,6 +481,15 @@ int slPolyDataNormals::RequestData(vtkInformation*, vtkInformationVector** input
   {
     output->Initialize();
     return this->Fail(problem, output);
+  }
+  vtkPoints* outPoints = output->GetPoints();
+  if (outPoints && outPoints != input->GetPoints() && outPoints->GetDataType() != input->GetPoints()->GetDataType())
+  {
+    // Split points made from converted coordinates: back to the input's type.
+    vtkNew<vtkPoints> asInput;
+    asInput->SetDataType(input->GetPoints()->GetDataType());
+    asInput->GetData()->DeepCopy(outPoints->GetData());
+    output->SetPoints(asInput);
   }
   this->NumberOfFlippedPolygons = flipped;
   output->GetFieldData()->PassData(input->GetFieldData());

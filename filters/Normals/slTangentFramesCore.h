@@ -89,6 +89,8 @@ void accumulateTangents(const Polygons<Id>& polys, int64_t numPoints, Pos&& pos,
         continue;
       }
       const int slot = s > 0 ? 0 : 1;
+      // Twice the triangle's area: the cross length all three corners share.
+      const double crossLength = glm::length(glm::cross(pos(v[1]) - pos(v[0]), pos(v[2]) - pos(v[0])));
       for (int i = 0; i < 3; ++i)
       {
         sign[static_cast<size_t>(c[i])] = static_cast<signed char>(s);
@@ -100,7 +102,7 @@ void accumulateTangents(const Polygons<Id>& polys, int64_t numPoints, Pos&& pos,
           continue;
         }
         const glm::dvec3 e1 = pos(v[(i + 1) % 3]) - pos(v[i]), e2 = pos(v[(i + 2) % 3]) - pos(v[i]);
-        const double angle = cornerAngle(glm::length(glm::cross(e1, e2)), glm::dot(e1, e2));
+        const double angle = cornerAngle(crossLength, glm::dot(e1, e2));
         sums.sum[slot][static_cast<size_t>(v[i])] += tp / len * angle;
         sums.used[slot][static_cast<size_t>(v[i])] = 1;
       }

@@ -153,4 +153,6 @@ struct TriangleBlock
 
 } // namespace slnormals
 
+#undef SL_VECTOR_CLONES
+
 #endif

@@ -262,14 +262,12 @@ TEST(Ambient, PerLightAmbientIsAttenuatedLikeTheLight)
   EXPECT_NEAR(shadeOne(light, m, 0, glm::vec3(0, 0, 5)).ambient.x, 0.5 / 4.0, 1e-6);
 }
 
-TEST(Luminance, WhiteIsOneAndGreenWeighsMost)
+TEST(Luminance, IsTheRec709Weighting)
 {
-  // Rec. 709 weights sum to 1, so a grey g has luminance g; green counts most, blue least.
+  // The published Rec. 709 / sRGB luminance weights (ITU-R BT.709-6, item
+  // 3.3), which sum to 1, so a grey g has luminance g.
+  EXPECT_NEAR(shadelab::glsl::slLuminance(glm::vec3(1, 0, 0)), 0.2126f, 1e-7f);
+  EXPECT_NEAR(shadelab::glsl::slLuminance(glm::vec3(0, 1, 0)), 0.7152f, 1e-7f);
+  EXPECT_NEAR(shadelab::glsl::slLuminance(glm::vec3(0, 0, 1)), 0.0722f, 1e-7f);
   EXPECT_NEAR(shadelab::glsl::slLuminance(glm::vec3(0.37f)), 0.37f, 1e-6f);
-  const float r = shadelab::glsl::slLuminance(glm::vec3(1, 0, 0));
-  const float g = shadelab::glsl::slLuminance(glm::vec3(0, 1, 0));
-  const float b = shadelab::glsl::slLuminance(glm::vec3(0, 0, 1));
-  EXPECT_GT(g, r);
-  EXPECT_GT(r, b);
-  EXPECT_NEAR(r + g + b, 1.0f, 1e-6f);
 }

@@ -19,7 +19,9 @@
 #include <vtkSphereSource.h>
 
 #include <array>
+#include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <string>
 
 namespace shadelab
@@ -106,8 +108,8 @@ inline std::array<double, 3> tuple3(vtkPolyData* mesh, const char* name, vtkIdTy
 }
 
 /// True when every value of every point and cell array is finite, except
-/// the (input) array @p skip.
-inline bool allFinite(vtkPolyData* mesh, const std::string& skip = "Normals")
+/// in the input arrays named in @p inputs (passed through as given).
+inline bool allFinite(vtkPolyData* mesh, std::initializer_list<std::string> inputs = { "Normals" })
 {
   for (vtkFieldData* data : { static_cast<vtkFieldData*>(mesh->GetPointData()),
          static_cast<vtkFieldData*>(mesh->GetCellData()) })
@@ -115,7 +117,7 @@ inline bool allFinite(vtkPolyData* mesh, const std::string& skip = "Normals")
     for (int a = 0; a < data->GetNumberOfArrays(); ++a)
     {
       vtkDataArray* array = data->GetArray(a);
-      if (array && array->GetName() && skip == array->GetName())
+      if (array && array->GetName() && std::find(inputs.begin(), inputs.end(), array->GetName()) != inputs.end())
       {
         continue;
       }

@@ -194,7 +194,10 @@ double maxDegreesOff(vtkPolyData* out, vtkPolyData* reference, const std::vector
       ADD_FAILURE() << "output point " << i << " is not an input point";
       return 180;
     }
-    worst = std::max(worst, normalstest::angleDegrees(n.data(), it->second.data()));
+    // A NaN or zero normal is as wrong as can be (std::max would drop a NaN).
+    const double angle = normalstest::angleDegrees(n.data(), it->second.data());
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    worst = std::abs(length - 1.0) < 1e-5 && angle <= 180.0 ? std::max(worst, angle) : 180.0;
   }
   return worst;
 }

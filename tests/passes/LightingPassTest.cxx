@@ -464,9 +464,6 @@ TEST(Parameters, ChangesUpdateTheImageAndVariantsComeBack)
 
 namespace
 {
-/// Lambert, k_d = 0.8, no ambient or emission, one white directional light
-/// along the view from a camera at (0, 0, z): where N faces the camera the
-/// pixel is 0.8 x base colour.
 /// The same 8-bit RGB colour at every point, as the active scalars "Colours".
 void setUniformColours(vtkPolyData* mesh, unsigned char r, unsigned char g, unsigned char b)
 {
@@ -480,6 +477,9 @@ void setUniformColours(vtkPolyData* mesh, unsigned char r, unsigned char g, unsi
   mesh->GetPointData()->SetScalars(colours);
 }
 
+/// Lambert, k_d = 0.8, no ambient or emission, one white directional light
+/// along the view from a camera at (0, 0, z): where N faces the camera the
+/// pixel is 0.8 x base colour.
 shadelab::Scene headOnLambert(float z)
 {
   shadelab::Scene scene = sphereScene(shadelab::ShadingModel::Lambert);
