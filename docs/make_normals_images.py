@@ -22,7 +22,7 @@ from vtkmodules.vtkFiltersCore import vtkCellCenters  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 IMAGES = os.path.join(ROOT, "docs", "images")
-SHARED = os.path.join(ROOT, "..", "shared", "data")
+DATA = os.path.join(ROOT, "data")
 SHADELAB = os.path.join(BUILD, "bin", "shadelab")
 
 
@@ -117,7 +117,7 @@ def main():
     face_and_vertex_glyphs()
     with tempfile.TemporaryDirectory() as tmp:
         t = lambda name: os.path.join(tmp, name)  # noqa: E731
-        fandisk = os.path.join(SHARED, "meshes", "fandisk.obj")
+        fandisk = os.path.join(DATA, "meshes", "fandisk.obj")
         shadelab_cmd("normals", fandisk, "-o", t("fandisk-split.vtp"))
         shadelab_cmd("normals", fandisk, "--no-split", "-o", t("fandisk-smooth.vtp"))
         with open(t("fandisk.json"), "w") as f:  # a view that shows the sharp edges
@@ -127,11 +127,11 @@ def main():
         for name in ("split", "smooth"):
             shadelab_cmd("render", t("fandisk-" + name + ".vtp"), "--scene", t("fandisk.json"), "--size", "480x400",
                          "-q", "-o", os.path.join(IMAGES, "normals-fandisk-" + name + ".png"))
-        normal_map = os.path.join(SHARED, "textures", "bevy_parallax_cube_normal.png")
+        normal_map = os.path.join(DATA, "textures", "bevy_parallax_cube_normal.png")
         plane_with_uvs(t("plane.vtp"), 200)
         shadelab_cmd("normals", t("plane.vtp"), "-o", t("plane-n.vtp"))
         shadelab_cmd("detail", t("plane-n.vtp"), "--normal-map", normal_map, "-o", t("plane-mapped.vtp"))
-        spot = os.path.join(SHARED, "meshes", "spot.obj")
+        spot = os.path.join(DATA, "meshes", "spot.obj")
         shadelab_cmd("normals", spot, "-o", t("spot-n.vtp"))
         shadelab_cmd("detail", t("spot-n.vtp"), "--normal-map", normal_map, "--strength", "2", "-o",
                      t("spot-mapped.vtp"))

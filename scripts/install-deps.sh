@@ -8,7 +8,7 @@ packages=(
   libvtk9-dev python3-vtk9 python3-dev  # VTK 9.1 C++ and Python (wrapping tools come with python3-vtk9)
   libglm-dev                        # lighting core
   nlohmann-json3-dev                # scene files
-  libopenimageio-dev                # every image read and written
+  libopenimageio-dev openimageio-tools  # every image read and written (OIIO's CMake config names its tools)
   libopenmesh-dev                   # half-edge meshes
   libgtest-dev libbenchmark-dev     # tests and benchmarks
   xvfb xauth                        # offscreen rendering: Debian's VTK is X11-only

@@ -163,7 +163,7 @@ double runNumpy(const std::string& setup, std::string& firstRadiance, double& cp
   }
   return seconds;
 }
-const std::string kEnvironment = std::string(SHADELAB_SHARED_DATA_DIR) + "/envmaps/venice_sunset_1k.hdr";
+const std::string kEnvironment = std::string(SHADELAB_DATA_DIR) + "/envmaps/venice_sunset_1k.hdr";
 
 vtkSmartPointer<vtkPolyData> sphereMesh(int resolution)
 {

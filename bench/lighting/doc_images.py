@@ -2,7 +2,7 @@
 
 usage (from the repository root, after building into BUILD):
   bash scripts/with-display.sh env PYTHONPATH=BUILD/python /usr/bin/python3 \
-      bench/lighting/doc_images.py BUILD/bin/shadelab ../shared/data docs/images
+      bench/lighting/doc_images.py BUILD/bin/shadelab data docs/images
 """
 import json
 import os
@@ -88,11 +88,11 @@ def render(actors, path, title, azimuth=140, elevation=12, bar=None):
 
 
 def main():
-    shadelab_exe, shared, out_dir = sys.argv[1:4]
+    shadelab_exe, data_dir, out_dir = sys.argv[1:4]
     data = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "data")
     spot = os.path.join(data, "meshes", "spot.obj")
     texture = os.path.join(data, "meshes", "spot_texture.png")
-    venice = os.path.join(shared, "envmaps", "venice_sunset_1k.hdr")
+    venice = os.path.join(data_dir, "envmaps", "venice_sunset_1k.hdr")
     with tempfile.TemporaryDirectory() as tmp:
         def job(*args):
             subprocess.run([shadelab_exe, *args], check=True, capture_output=True)

@@ -5,7 +5,6 @@ import tempfile
 import unittest
 
 SHADELAB = os.environ["SHADELAB_EXE"]
-SHARED = os.environ["SHADELAB_SHARED_DATA_DIR"]
 DATA = os.environ["SHADELAB_DATA_DIR"]
 SPOT = os.path.join(DATA, "meshes", "spot.obj")
 
@@ -61,7 +60,7 @@ class RenderTest(unittest.TestCase):
 
     def test_builtin_scene_size_and_formats(self):
         for mesh in ("fandisk.obj", "teapot.obj"):
-            r = run("render", os.path.join(SHARED, "meshes", mesh), "--size", "64x48", "-o", self.out)
+            r = run("render", os.path.join(DATA, "meshes", mesh), "--size", "64x48", "-o", self.out)
             self.assertEqual(r.returncode, 0, r.stderr)
             self.assertEqual(png_size(self.out), (64, 48))
 

@@ -96,7 +96,7 @@ TEST(ImageIO, EXRKeepsFloats)
 TEST(ImageIO, ReadsTheSharedHDREnvironmentMap)
 {
   vtkNew<slImageReader> reader;
-  reader->SetFileName((std::string(SHADELAB_SHARED_DATA_DIR) + "/envmaps/venice_sunset_1k.hdr").c_str());
+  reader->SetFileName((std::string(SHADELAB_DATA_DIR) + "/envmaps/venice_sunset_1k.hdr").c_str());
   reader->Update();
   ASSERT_STREQ(reader->GetErrorMessage(), "");
   int dims[3];

@@ -181,12 +181,12 @@ TEST(MeshReader, SharedDataMeshes)
   for (const Expected& e : { Expected{ "spot.obj", 5856 }, Expected{ "fandisk.obj", 12946 },
          Expected{ "teapot.obj", 6320 } })
   {
-    const ReadResult r = read(std::string(SHADELAB_SHARED_DATA_DIR) + "/meshes/" + e.name);
+    const ReadResult r = read(std::string(SHADELAB_DATA_DIR) + "/meshes/" + e.name);
     EXPECT_EQ(r.error, "") << e.name;
     EXPECT_EQ(r.mesh->GetNumberOfPolys(), e.faces) << e.name;
   }
   // Spot: 2930 positions, 3225 (position, UV) pairs.
-  EXPECT_EQ(read(std::string(SHADELAB_SHARED_DATA_DIR) + "/meshes/spot.obj").mesh->GetNumberOfPoints(), 3225);
+  EXPECT_EQ(read(std::string(SHADELAB_DATA_DIR) + "/meshes/spot.obj").mesh->GetNumberOfPoints(), 3225);
 }
 
 TEST(MeshReader, ReadsGLTFWithNodeTransforms)

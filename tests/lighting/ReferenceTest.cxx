@@ -164,7 +164,7 @@ TEST(RadianceReference, ErrorFollowsOneOverSqrtN)
 {
   // MIS on a Blinn-Phong surface under the studio environment:
   // RMSE against a 16384-sample MIS reference falls by ~2 per 4x samples.
-  const std::string envmap = std::string(SHADELAB_SHARED_DATA_DIR) + "/envmaps/studio_small_03_1k.hdr";
+  const std::string envmap = std::string(SHADELAB_DATA_DIR) + "/envmaps/studio_small_03_1k.hdr";
   vtkSmartPointer<vtkPolyData> mesh = sphere(6);
   auto run = [&](int strategy, int samples, int seed) {
     vtkNew<slRadianceReference> filter;

@@ -6,9 +6,9 @@ import tempfile
 import unittest
 
 SHADELAB = os.environ["SHADELAB_EXE"]
-SHARED = os.environ["SHADELAB_SHARED_DATA_DIR"]
+DATA = os.environ["SHADELAB_DATA_DIR"]
 SPOT = os.path.join(os.environ["SHADELAB_DATA_DIR"], "meshes", "spot.obj")
-VENICE = os.path.join(SHARED, "envmaps", "venice_sunset_1k.hdr")
+VENICE = os.path.join(DATA, "envmaps", "venice_sunset_1k.hdr")
 
 
 def run(*args):
@@ -61,7 +61,7 @@ class LightingCommandsTest(unittest.TestCase):
             (["light", SPOT, "--scene", no_lights, "-o", self.out("x.vtp")], "dark.json: lights: it has no lights"),
             (["light", SPOT, "-o", self.out("x.vtp"), "--scene", self.out("missing.json")], "missing.json"),
             (["reference", SPOT, "--envmap", bad, "-o", self.out("x.vtp")], "bad.hdr: cannot read image"),
-            (["reference", SPOT, "--envmap", os.path.join(SHARED, "meshes", "spot_texture.png"), "-o",
+            (["reference", SPOT, "--envmap", os.path.join(DATA, "meshes", "spot_texture.png"), "-o",
               self.out("x.vtp")], "twice as wide as it is high"),
             (["cosine", empty, "-o", self.out("x.vtp")], "empty.obj"),
             (["reference", SPOT, "--sampling", "magic", "-o", self.out("x.vtp")], "--sampling"),

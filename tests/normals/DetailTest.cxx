@@ -278,7 +278,7 @@ TEST(Detail, BevyNormalMapAgreesWithItsInvertedDepthMap)
   // The bevy normal map was authored from the depth map: bump normals from
   // height = 1 - depth must lean the same way as the map's (green up), and
   // the opposite way if the depth were used as height.
-  const std::string textures = SHADELAB_SHARED_DATA_DIR "/textures/";
+  const std::string textures = SHADELAB_DATA_DIR "/textures/";
   vtkNew<slNormalMapFilter> nm;
   nm->SetFileName((textures + "bevy_parallax_cube_normal.png").c_str());
   Result mapped = update(nm, plane(96));
@@ -309,10 +309,10 @@ TEST(Detail, BevyNormalMapAgreesWithItsInvertedDepthMap)
 TEST(Detail, SpotTakesTheNormalMapThroughItsUVs)
 {
   vtkNew<slMeshReader> reader;
-  reader->SetFileName(SHADELAB_SHARED_DATA_DIR "/meshes/spot.obj");
+  reader->SetFileName(SHADELAB_DATA_DIR "/meshes/spot.obj");
   reader->Update();
   vtkNew<slNormalMapFilter> f;
-  f->SetFileName(SHADELAB_SHARED_DATA_DIR "/textures/bevy_parallax_cube_normal.png");
+  f->SetFileName(SHADELAB_DATA_DIR "/textures/bevy_parallax_cube_normal.png");
   Result r = update(f, reader->GetOutput());
   ASSERT_EQ(r.error, "");
   ASSERT_GE(r.out->GetNumberOfPoints(), reader->GetOutput()->GetNumberOfPoints());
@@ -348,7 +348,7 @@ TEST(Detail, BadImagesAndMissingUVsGiveClearErrors)
   vtkSmartPointer<vtkPolyData> noUV = plane(2);
   noUV->GetPointData()->SetTCoords(nullptr);
   vtkNew<slBumpMapFilter> bump;
-  bump->SetFileName(SHADELAB_SHARED_DATA_DIR "/textures/bevy_parallax_cube_depth.png");
+  bump->SetFileName(SHADELAB_DATA_DIR "/textures/bevy_parallax_cube_depth.png");
   Result r = update(bump, noUV);
   EXPECT_NE(r.error.find("no texture coordinates"), std::string::npos) << r.error;
   EXPECT_EQ(r.out->GetNumberOfPoints(), 0);

@@ -343,7 +343,7 @@ TEST(Normals, WeldingHidesTheTeapotsUnweldedSeams)
   // normals of the mesh merged by VTK's own vtkCleanPolyData, while keeping
   // every input point; without welding the seams show as creases.
   vtkNew<slMeshReader> reader;
-  reader->SetFileName(SHADELAB_SHARED_DATA_DIR "/meshes/teapot.obj");
+  reader->SetFileName(SHADELAB_DATA_DIR "/meshes/teapot.obj");
   reader->MergeDuplicatePointsOff();
   reader->Update();
   vtkNew<vtkCleanPolyData> clean;
@@ -387,7 +387,7 @@ TEST(Normals, WeldingWithSplittingLeavesNoOrphanPoints)
   // output point must be used by a polygon and have a unit normal: seam
   // duplicates must not come back as extra unused points with zero normals.
   vtkNew<slMeshReader> reader;
-  reader->SetFileName(SHADELAB_SHARED_DATA_DIR "/meshes/spot.obj");
+  reader->SetFileName(SHADELAB_DATA_DIR "/meshes/spot.obj");
   reader->Update();
   Result r = run(reader->GetOutput(), [](slPolyDataNormals* f) {
     f->SplittingOn();

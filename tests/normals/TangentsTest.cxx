@@ -179,7 +179,7 @@ TEST(Tangents, MirrorSeamPointsAreDuplicated)
 TEST(Tangents, SpotAgreesWithAnIndependentPerTriangleComputation)
 {
   vtkNew<slMeshReader> reader;
-  reader->SetFileName(SHADELAB_SHARED_DATA_DIR "/meshes/spot.obj");
+  reader->SetFileName(SHADELAB_DATA_DIR "/meshes/spot.obj");
   reader->Update();
   Result r = tangentsOf(reader->GetOutput());
   ASSERT_EQ(r.errors, 0);
@@ -241,7 +241,7 @@ TEST(Tangents, SpotAgreesWithAnIndependentPerTriangleComputation)
 TEST(Tangents, NoUVsOrNaNGiveAnErrorAndAnEmptyOutput)
 {
   vtkNew<slMeshReader> reader;
-  reader->SetFileName(SHADELAB_SHARED_DATA_DIR "/meshes/fandisk.obj"); // no UVs
+  reader->SetFileName(SHADELAB_DATA_DIR "/meshes/fandisk.obj"); // no UVs
   reader->Update();
   Result r = tangentsOf(reader->GetOutput());
   EXPECT_EQ(r.errors, 1);

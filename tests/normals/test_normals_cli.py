@@ -6,8 +6,8 @@ import tempfile
 import unittest
 
 SHADELAB = os.environ["SHADELAB_EXE"]
-SHARED = os.environ["SHADELAB_SHARED_DATA_DIR"]
-FANDISK = os.path.join(SHARED, "meshes", "fandisk.obj")
+DATA = os.environ["SHADELAB_DATA_DIR"]
+FANDISK = os.path.join(DATA, "meshes", "fandisk.obj")
 
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader  # noqa: E402
 
@@ -61,9 +61,9 @@ class NormalsCommandTest(unittest.TestCase):
 
 
 class TangentsAndDetailCommandTest(unittest.TestCase):
-    SPOT = os.path.join(SHARED, "meshes", "spot.obj")
-    NORMAL_MAP = os.path.join(SHARED, "textures", "bevy_parallax_cube_normal.png")
-    DEPTH_MAP = os.path.join(SHARED, "textures", "bevy_parallax_cube_depth.png")
+    SPOT = os.path.join(DATA, "meshes", "spot.obj")
+    NORMAL_MAP = os.path.join(DATA, "textures", "bevy_parallax_cube_normal.png")
+    DEPTH_MAP = os.path.join(DATA, "textures", "bevy_parallax_cube_depth.png")
 
     def setUp(self):
         self.folder = tempfile.TemporaryDirectory()

@@ -5,7 +5,7 @@ import unittest
 import shadelab
 from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
 
-SHARED = os.environ["SHADELAB_SHARED_DATA_DIR"]
+DATA = os.environ["SHADELAB_DATA_DIR"]
 
 
 class NormalsFromPythonTest(unittest.TestCase):

@@ -7,7 +7,6 @@ import unittest
 import shadelab
 from vtkmodules.vtkRenderingCore import vtkLight, vtkRenderer
 
-SHARED = os.environ["SHADELAB_SHARED_DATA_DIR"]
 DATA = os.environ["SHADELAB_DATA_DIR"]
 
 
@@ -20,7 +19,7 @@ class ImportTest(unittest.TestCase):
 class MeshReaderTest(unittest.TestCase):
     def test_reads_fandisk(self):
         reader = shadelab.slMeshReader()
-        reader.SetFileName(os.path.join(SHARED, "meshes", "fandisk.obj"))
+        reader.SetFileName(os.path.join(DATA, "meshes", "fandisk.obj"))
         reader.Update()
         self.assertEqual(reader.GetErrorMessage(), "")
         self.assertEqual(reader.GetOutput().GetNumberOfPolys(), 12946)

@@ -44,7 +44,7 @@ std::string projectData(const std::string& relative)
 
 std::string sharedMesh(const std::string& name)
 {
-  return std::string(SHADELAB_SHARED_DATA_DIR) + "/meshes/" + name;
+  return std::string(SHADELAB_DATA_DIR) + "/meshes/" + name;
 }
 
 std::vector<Case> allCases()
