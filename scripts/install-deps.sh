@@ -1,6 +1,12 @@
 #!/usr/bin/env bash
 # Installs exactly the Debian 12 packages ShadeLab needs. Idempotent: runs
 # apt-get update and install only when something is missing.
+#
+#   bash scripts/install-deps.sh [EXTRA_PACKAGE ...]
+#
+# With no argument: what the README's two commands need (build, tests, demo).
+# CI steps that need more (a sanitizer or fuzzing compiler, ...) name their
+# extra packages as arguments, so there is one place that checks and installs.
 set -euo pipefail
 
 packages=(
@@ -10,11 +16,12 @@ packages=(
   nlohmann-json3-dev                # scene files
   libopenimageio-dev openimageio-tools  # every image read and written (OIIO's CMake config names its tools)
   libopenmesh-dev                   # half-edge meshes
-  libgtest-dev libbenchmark-dev     # tests and benchmarks
+  libgtest-dev                      # tests
   xvfb xauth                        # offscreen rendering: Debian's VTK is X11-only
   glslang-tools                     # checks that the lighting core is valid GLSL
   python3-numpy                     # the numpy peer in the lighting benchmark
   qtbase5-dev libvtk9-qt-dev        # shadelab-viewer (Qt 5, QVTKOpenGLNativeWidget, QtTest)
+  "$@"
 )
 
 missing=()
