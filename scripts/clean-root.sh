@@ -108,6 +108,10 @@ ln -s /proc/self/fd/1 "$root/dev/stdout"
 ln -s /proc/self/fd/2 "$root/dev/stderr"
 mkdir -p "$root/dev/shm" "$root/dev/pts"
 mount -t tmpfs -o mode=1777 shm "$root/dev/shm"
+# A private pseudo-terminal instance (dpkg logs through one); optional.
+if mount -t devpts -o newinstance,ptmxmode=0666,mode=620 devpts "$root/dev/pts" 2>/dev/null; then
+  ln -s pts/ptmx "$root/dev/ptmx"
+fi
 mount --bind "$debs" "$root/var/cache/apt/archives"
 cp /etc/resolv.conf "$root/etc/resolv.conf"
 if [ -n "$share" ]; then
@@ -131,6 +135,8 @@ for cmd in "$@"; do
     rc=$?
   fi
   echo "clean-root ($name): exit $rc in $((SECONDS - start)) s: $cmd (log $log)"
+  # What ctest concluded, if the command ran it.
+  grep -E '^[0-9]+% tests passed, [0-9]+ tests failed out of [0-9]+' "$log" || true
   if [ "$rc" -ne 0 ]; then
     tail -n 40 "$log"
     status=$rc
