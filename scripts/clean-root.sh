@@ -10,7 +10,8 @@
 #   --name NAME   the root's name (default: readme); its base is cached
 #   --share DIR   a host folder mounted at /root/share inside the root, to
 #                 bring files in or out (a .deb, say)
-#   --fresh       rebuild the cached base root first
+#   --fresh       start cold: rebuild the cached base root and forget the
+#                 downloaded packages
 #
 # The base root is built once and cached in $SHADELAB_ROOT_CACHE (default
 # /var/cache/shadelab); each run works on a throw-away overlay of it, so no
@@ -57,7 +58,11 @@ bash scripts/install-deps.sh --only debootstrap
 mirror=$(sed -n 's/^URIs: *//p' /etc/apt/sources.list.d/debian.sources 2>/dev/null | head -n 1)
 mirror=${mirror:-http://deb.debian.org/debian}
 
-if [ -n "$fresh" ] || [ ! -f "$base/.complete" ]; then
+if [ -n "$fresh" ]; then
+  rm -rf "$base" "$debs"
+  mkdir -p "$debs/partial"
+fi
+if [ ! -f "$base/.complete" ]; then
   start=$SECONDS
   rm -rf "$base"
   if ! debootstrap --variant=minbase bookworm "$base" "$mirror" > "$logs/debootstrap.log" 2>&1; then
