@@ -84,13 +84,21 @@ if [ ! -f "$base/.complete" ]; then
 fi
 
 # A throw-away overlay of the base: lower = base, upper = this run's changes.
+# The cached packages are hard-linked into the upper layer before it is
+# mounted, and the ones this run downloaded are linked back afterwards: no
+# copying, and no apt lock shared with a run under another --name.
+archives=var/cache/apt/archives
 teardown() {
   umount -R "$run/merged" 2>/dev/null || umount -R -l "$run/merged" 2>/dev/null || true
+  if [ -d "$run/upper/$archives" ]; then
+    find "$run/upper/$archives" -maxdepth 1 -name '*.deb' -type f -links 1 -exec ln -t "$debs" {} + || true
+  fi
   rm -rf "$run"
 }
 teardown
 trap teardown EXIT
-mkdir -p "$run/upper" "$run/work" "$run/merged"
+mkdir -p "$run/upper/$archives/partial" "$run/work" "$run/merged"
+find "$debs" -maxdepth 1 -name '*.deb' -type f -exec ln -t "$run/upper/$archives" {} +
 mount -t overlay overlay -o "lowerdir=$base,upperdir=$run/upper,workdir=$run/work" "$run/merged"
 root=$run/merged
 
@@ -120,7 +128,6 @@ mount -t tmpfs -o mode=1777 shm "$root/dev/shm"
 if mount -t devpts -o newinstance,ptmxmode=0666,mode=620 devpts "$root/dev/pts" 2>/dev/null; then
   ln -s pts/ptmx "$root/dev/ptmx"
 fi
-mount --bind "$debs" "$root/var/cache/apt/archives"
 cp /etc/resolv.conf "$root/etc/resolv.conf"
 if [ -n "$share" ]; then
   mkdir -p "$root/root/share"
