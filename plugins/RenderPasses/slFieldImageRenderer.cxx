@@ -308,9 +308,9 @@ bool slFieldImageRenderer::Render()
   }
   // Place the shared camera on the mesh (the scene's camera or a fit), then
   // add the light glyphs, which need the final camera for camera lights.
-  this->Scene->ApplyToRenderer(renderers.front());
   double bounds[6];
   this->Mesh->GetBounds(bounds);
+  this->Scene->ApplyToRenderer(renderers.front(), bounds, this->PanelWidth, this->PanelHeight);
   for (auto& renderer : renderers)
   {
     renderer->SetBackground(renderers.front()->GetBackground());

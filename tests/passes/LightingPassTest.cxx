@@ -139,26 +139,10 @@ TEST_P(GouraudAgreesWithCPU, Within2Of255OnInteriorPixels)
   passtest::Stage cpu = passtest::unlitStage(coloured, scene, 240, 240, false);
   const Image reference = cpu.render();
 
-  const std::vector<bool> mask = passtest::interiorMask(reference, kMagenta);
-  long covered = 0, agreeing = 0;
-  float worst = 0.0f;
-  for (int y = 0; y < lit.height; ++y)
-  {
-    for (int x = 0; x < lit.width; ++x)
-    {
-      if (!mask[static_cast<size_t>(y) * lit.width + x])
-      {
-        continue;
-      }
-      ++covered;
-      const float d = maxChannelDifference(lit, reference, x, y);
-      worst = std::max(worst, d);
-      agreeing += d <= 2.0f / 255.0f + 1e-6f;
-    }
-  }
-  ASSERT_GT(covered, 20000) << "the sphere should cover much of the window";
-  EXPECT_GE(static_cast<double>(agreeing) / covered, 0.995)
-    << "model " << shadelab::modelName(scene.model) << ": worst difference " << worst * 255.0f << "/255";
+  const passtest::Agreement a = passtest::agreement(lit, reference, passtest::interiorMask(reference, kMagenta));
+  ASSERT_GT(a.covered, 20000) << "the sphere should cover much of the window";
+  EXPECT_GE(static_cast<double>(a.agreeing) / a.covered, 0.995)
+    << "model " << shadelab::modelName(scene.model) << ": worst difference " << a.worst * 255.0f << "/255";
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryModel, GouraudAgreesWithCPU, ::testing::Range(0, 6));
