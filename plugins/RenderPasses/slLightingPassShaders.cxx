@@ -139,6 +139,7 @@ std::string fragmentDeclarations(const Variant& variant, bool tangentNormalMap)
   std::string out = declarations(variant);
   if (tangentNormalMap)
   {
+    out += shadelab::normalMappingShaderSource();
     out += "in vec4 slTangentVC;\nuniform float slNormalScale;\n";
   }
   if (frequency == Flat)
@@ -150,24 +151,8 @@ std::string fragmentDeclarations(const Variant& variant, bool tangentNormalMap)
     out += "in vec3 slAmbientVS;\nin vec3 slDiffuseVS;\nin vec3 slSpecularVS;\nin float slCosThetaVS;\n"
            "in vec3 slAmbientBackVS;\nin vec3 slDiffuseBackVS;\nin vec3 slSpecularBackVS;\n";
   }
+  out += shadelab::falseColorShaderSource();
   out += "\n"
-         "// A perceptually ordered ramp (dark blue to yellow) for false colour.\n"
-         "vec3 slRamp(float s)\n"
-         "{\n"
-         "  s = clamp(s, 0.0f, 1.0f);\n"
-         "  vec3 a = vec3(0.267f, 0.005f, 0.329f);\n"
-         "  vec3 b = vec3(0.128f, 0.567f, 0.551f);\n"
-         "  vec3 c = vec3(0.993f, 0.906f, 0.144f);\n"
-         "  return s < 0.5f ? mix(a, b, 2.0f * s) : mix(b, c, 2.0f * s - 1.0f);\n"
-         "}\n"
-         "\n"
-         "// Blue for -1, white for 0, red for +1.\n"
-         "vec3 slDiverging(float s)\n"
-         "{\n"
-         "  s = clamp(s, -1.0f, 1.0f);\n"
-         "  return s < 0.0f ? mix(vec3(1.0f), vec3(0.23f, 0.30f, 0.75f), -s) : mix(vec3(1.0f), vec3(0.71f, 0.02f, 0.15f), s);\n"
-         "}\n"
-         "\n"
          "vec3 slShowScalar(float s)\n"
          "{\n"
          "  return slFalseColor == 1 ? slRamp(s) : vec3(clamp(s, 0.0f, 1.0f));\n"
@@ -228,12 +213,9 @@ std::string fragmentImplementation(Frequency frequency, const FragmentInputs& in
       if (inputs.tangentNormalMap)
       {
         // Tangent-space normal map (OpenGL, green up) with MikkTSpace
-        // handedness: bitangent = w (N x T).
-        out += "    vec3 slTan = normalize(slTangentVC.xyz - dot(slTangentVC.xyz, normalVCVSOutput) * normalVCVSOutput);\n"
-               "    vec3 slBit = (slTangentVC.w < 0.0f ? -1.0f : 1.0f) * cross(normalVCVSOutput, slTan);\n"
-               "    vec3 slNts = texture(normalTex, tcoordVCVSOutput).xyz * 2.0f - 1.0f;\n"
-               "    slNts = normalize(slNts * vec3(slNormalScale, slNormalScale, 1.0f));\n"
-               "    normalVCVSOutput = normalize(mat3(slTan, slBit, normalVCVSOutput) * slNts);\n";
+        // handedness, decoded as the CPU's slNormalMapFilter does.
+        out += "    normalVCVSOutput = slTangentToSurface(slDecodeNormal(texture(normalTex, tcoordVCVSOutput).rgb, 1.0f,"
+               " slNormalScale), normalVCVSOutput, slTangentVC.xyz, slTangentVC.w);\n";
       }
       out += "    slT = slLightAll(vertexVC.xyz, normalVCVSOutput);\n"
              "    slCos = slComponent == 5 ? slChosenCosTheta(vertexVC.xyz, normalVCVSOutput) : 0.0f;\n";

@@ -2,13 +2,15 @@
 #define shadelab_LightingGLSLDouble_h
 /**
  * @file LightingGLSLDouble.h
- * @brief glsl/slLighting.glsl compiled as C++ once more, into
- * shadelab::glsld, with double standing in for GLSL's float and glm::dvec3
- * for vec3: the same formulas evaluated in double precision.
+ * @brief glsl/slLighting.glsl (and glsl/slNormalMapping.glsl after it)
+ * compiled as C++ once more, into shadelab::glsld, with double standing in
+ * for GLSL's float and glm::dvec3 for vec3: the same formulas evaluated in
+ * double precision.
  *
  * For integrals that need more than float's 7 digits, such as the directional
  * albedo at shininess 10^4, where x^n of a cosine rounded to float is off by
- * n times float's rounding (Albedo.h). The file's float literals stay float
+ * n times float's rounding (Albedo.h), and for the CPU normal-map filters,
+ * which work in double. The files' float literals stay float
  * and are widened where they meet a double; the overloads below give the
  * GLSL built-ins those mixed calls (GLM's templates want one type).
  */
@@ -47,6 +49,7 @@ inline double mix(double a, double b, bool select)
 #define float double
 #define SL_FUNC inline
 #include "slLighting.glsl"
+#include "slNormalMapping.glsl"
 #undef SL_FUNC
 #undef float
 } // namespace glsld
