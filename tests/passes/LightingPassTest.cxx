@@ -161,7 +161,12 @@ TEST_P(GouraudAgreesWithCPU, Within2Of255OnInteriorPixels)
     << "model " << shadelab::modelName(scene.model) << ": worst difference " << worst * 255.0f << "/255";
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryModel, GouraudAgreesWithCPU, ::testing::Range(0, 6));
+INSTANTIATE_TEST_SUITE_P(EveryModel, GouraudAgreesWithCPU, ::testing::Range(0, 6),
+  [](const ::testing::TestParamInfo<int>& info) {
+    std::string name = shadelab::modelName(static_cast<shadelab::ShadingModel>(info.param));
+    std::replace(name.begin(), name.end(), '-', '_');
+    return name;
+  });
 
 TEST(PhongMode, PixelAtAVertexMatchesTheCPU)
 {
