@@ -16,6 +16,8 @@ packages=(
   libdouble-conversion-dev liblzma-dev liblz4-dev libutfcpp-dev
   cmake g++ make libglm-dev nlohmann-json3-dev  # ShadeLab's build and lighting core
   libopenimageio-dev openimageio-tools          # images (OIIO's CMake config names its tools)
+  libx11-dev libxt-dev libgl-dev libglew-dev libfreetype-dev  # the render view: ParaView's rendering modules' config
+  xvfb xauth                                    # the render view's tests draw offscreen through X11
 )
 bash scripts/install-deps.sh --only "${packages[@]}"
 
