@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <atomic>
 #include <limits>
+#include <utility>
 
 
 vtkCxxSetObjectMacro(slLitFilter, Scene, slScene);
@@ -213,7 +214,12 @@ void slLitFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SceneFileName: " << (this->SceneFileName ? this->SceneFileName : "(none)") << "\n";
   os << indent << "Model: " << this->Model << "\n";
   os << indent << "OverrideMaterial: " << this->OverrideMaterial << "\n";
-  os << indent << "DiffuseColor: " << this->DiffuseColor[0] << " " << this->DiffuseColor[1] << " "
-     << this->DiffuseColor[2] << "\n";
+  const std::pair<const char*, const double*> colours[] = { { "AmbientColor", this->AmbientColor },
+    { "DiffuseColor", this->DiffuseColor }, { "SpecularColor", this->SpecularColor },
+    { "EmissionColor", this->EmissionColor } };
+  for (const auto& c : colours)
+  {
+    os << indent << c.first << ": " << c.second[0] << " " << c.second[1] << " " << c.second[2] << "\n";
+  }
   os << indent << "Shininess: " << this->Shininess << "\n";
 }
