@@ -375,7 +375,7 @@ SL_FUNC vec3 slTotal(slTerms t)
 }
 
 // ---------------------------------------------------------------------------
-// Derived quantities for the CPU lighting filters (issue 4). Each is built on
+// Derived quantities for the CPU lighting filters. Each is built on
 // the functions above, never a second copy of their formulas.
 
 // Below this cosine an incident direction counts as grazing: slBRDF returns 0
