@@ -304,15 +304,31 @@ void walk(const std::string& bytes)
     l = bytes.substr(end, newline - end);
     end = newline + 1;
   }
-  if (lines[0].find("vtk") == std::string::npos)
+  // VTK reads each header line into a 256-byte C string, then parses the
+  // version from line 1: a NUL byte or a missing version derails it.
+  for (int i = 0; i < 3; ++i)
   {
-    fail("line 1: expected \"# vtk DataFile Version ...\", found \"" + shadelab::printableText(lines[0]) + "\"");
+    if (lines[i].size() > 255 || lines[i].find('\0') != std::string::npos)
+    {
+      fail("line " + std::to_string(i + 1) + ": a header line longer than 255 bytes or holding a NUL byte");
+    }
+  }
+  const std::string magic = "# vtk DataFile Version ";
+  const std::string version = lines[0].rfind(magic, 0) == 0 ? lines[0].substr(magic.size()) : std::string();
+  if (version.empty() || !std::isdigit(static_cast<unsigned char>(version[0])) ||
+    version.find('.') == std::string::npos)
+  {
+    fail("line 1: expected \"# vtk DataFile Version N.N\", found \"" + shadelab::printableText(lines[0]) + "\"");
   }
   const std::string kind = upper(lines[2].substr(0, 6));
   const bool binary = kind.rfind("BINARY", 0) == 0;
   if (!binary && kind.rfind("ASCII", 0) != 0)
   {
     fail("line 3: expected ASCII or BINARY, found \"" + shadelab::printableText(lines[2]) + "\"");
+  }
+  if (!binary && bytes.find('\0') != std::string::npos)
+  {
+    fail("an ASCII file holding a NUL byte (at byte " + std::to_string(bytes.find('\0')) + ")");
   }
   Walker w(bytes, binary, end);
   long long points = -1;

@@ -4,7 +4,7 @@ Arguments and messages use paths relative to the case's folder, where the
 input files are written and every out.* argument already exists with other
 content. Each case expects exactly one line on stderr."""
 from inputs import (QUAD_OBJ, TETRA_OFF, THREE_LIGHTS, glb, gltf, legacy_vtk, obj, ply_ascii, ply_binary,
-                    ply_header, png, stl_binary, vtp)
+                    ply_header, png, stl_binary, vtp, vtp_compressed_header)
 
 
 def mesh_case(name, file_name, data, message, status=1):
@@ -92,12 +92,21 @@ CASES = [
     mesh_case("vtp huge point count", "a.vtp", vtp(b"0 1 2", points=10**12), 'NumberOfPoints=1000000000000 is more than a file of 516 bytes can hold'),
     mesh_case("vtp malformed xml", "a.vtp", b"<VTKFile type=\"PolyData\"><PolyData>", 'no points: empty, truncated or not a vtp file'),
     mesh_case("vtp empty", "a.vtp", b"", 'no points: empty, truncated or not a vtp file'),
+    # found by fuzzing: a compression header VTK allocated for (8.6 GB)
+    mesh_case("vtp compressed header block count", "a.vtp", vtp_compressed_header(2000000000),
+              'DataArray "Points": its compression header declares 2000000000 blocks of 32768 bytes, more than a file '
+              'of 412 bytes can hold'),
     # legacy VTK
     mesh_case("vtk index beyond points", "a.vtk", legacy_vtk(b"POLYGONS 1 4\n3 0 1 7\n"), 'polygon 0 names point 7, but the mesh has 3 points (0 to 2)'),
     mesh_case("vtk negative index", "a.vtk", legacy_vtk(b"POLYGONS 1 4\n3 0 -2 1\n"), 'polygon 0 names point -2, but the mesh has 3 points (0 to 2)'),
     mesh_case("vtk not polydata", "a.vtk", legacy_vtk(b"", dataset=b"UNSTRUCTURED_GRID"), 'no points: empty, truncated or not a vtk file'),
     mesh_case("vtk truncated polygons", "a.vtk", legacy_vtk(b"POLYGONS 2 8\n3 0 1 2\n"), 'line 9: the file ends where value 5 of 8 of POLYGONS should be'),
     mesh_case("vtk garbage", "a.vtk", b"\x00\x01binary junk\xff", 'the file ends within its three header lines'),
+    # found by fuzzing: NUL bytes in the version line crashed vtkDataReader
+    mesh_case("vtk nul in version line", "a.vtk", b"# vtk DataFile Version\0\0\0 5.1\nt\nASCII\nDATASET POLYDATA\n",
+              "line 1: a header line longer than 255 bytes or holding a NUL byte"),
+    mesh_case("vtk no version", "a.vtk", b"# vtk DataFile\nt\nASCII\nDATASET POLYDATA\n",
+              'line 1: expected "# vtk DataFile Version N.N", found "# vtk DataFile"'),
     # OFF
     mesh_case("off index beyond", "a.off", TETRA_OFF.replace(b"3 1 2 3", b"3 1 2 4"), 'line 10: vertex index 4 is out of range [0, 4)'),
     mesh_case("off huge vertex count", "a.off", b"OFF\n1000000000000 1 0\n0 0 0\n", 'line 3: file ends after 1 of 1000000000000 vertices'),

@@ -108,3 +108,13 @@ def png(width=4, height=4, crc_ok=True, cut=0):
     data = (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)) +
             chunk(b"IDAT", zlib.compress(rows), crc_ok) + chunk(b"IEND", b""))
     return data[:len(data) - cut]
+
+
+def vtp_compressed_header(blocks):
+    """A zlib-compressed VTP whose points array's header declares @blocks blocks."""
+    header = base64.b64encode(struct.pack("<III", blocks, 32768, 0)).decode().encode()
+    return (b'<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1" byte_order="LittleEndian" '
+            b'header_type="UInt32" compressor="vtkZLibDataCompressor">\n<PolyData>\n'
+            b'<Piece NumberOfPoints="3" NumberOfVerts="0" NumberOfLines="0" NumberOfStrips="0" NumberOfPolys="0">\n'
+            b'<Points><DataArray type="Float32" Name="Points" NumberOfComponents="3" format="binary">' + header +
+            b'</DataArray></Points>\n</Piece>\n</PolyData>\n</VTKFile>\n')
