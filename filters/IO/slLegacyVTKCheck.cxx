@@ -10,6 +10,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
@@ -313,10 +314,11 @@ void walk(const std::string& bytes)
       fail("line " + std::to_string(i + 1) + ": a header line longer than 255 bytes or holding a NUL byte");
     }
   }
-  const std::string magic = "# vtk DataFile Version ";
-  const std::string version = lines[0].rfind(magic, 0) == 0 ? lines[0].substr(magic.size()) : std::string();
-  if (version.empty() || !std::isdigit(static_cast<unsigned char>(version[0])) ||
-    version.find('.') == std::string::npos)
+  // The version as VTK reads it: from 5.0 on, cell lists are OFFSETS and
+  // CONNECTIVITY; before, one list of counts and ids. Without both numbers
+  // VTK assumes 3.0 whatever the file holds.
+  int major = 0, minor = 0;
+  if (std::sscanf(lines[0].c_str(), "# vtk DataFile Version %d.%d", &major, &minor) != 2)
   {
     fail("line 1: expected \"# vtk DataFile Version N.N\", found \"" + shadelab::printableText(lines[0]) + "\"");
   }
@@ -331,6 +333,7 @@ void walk(const std::string& bytes)
     fail("an ASCII file holding a NUL byte (at byte " + std::to_string(bytes.find('\0')) + ")");
   }
   Walker w(bytes, binary, end);
+  const bool offsetCells = major >= 5;
   long long points = -1;
   long long cells = 0;
   while (!w.atEnd())
@@ -360,11 +363,14 @@ void walk(const std::string& bytes)
     {
       const long long n = w.count("the number of cells");
       const long long size = w.count("the cell list size");
-      Walker probe = w;
-      if (!probe.atEnd() && upper(probe.word("")) == "OFFSETS")
+      if (offsetCells)
       {
         // Version 5: OFFSETS type (n values), CONNECTIVITY type (size values).
-        w.word("OFFSETS");
+        if (upper(w.word("OFFSETS")) != "OFFSETS")
+        {
+          fail("line " + std::to_string(w.line()) + ": " + keyword + ": expected OFFSETS (file version " +
+            std::to_string(major) + "." + std::to_string(minor) + ")");
+        }
         w.values(n, w.word("the offsets' type"), keyword + " OFFSETS");
         if (upper(w.word("CONNECTIVITY")) != "CONNECTIVITY")
         {

@@ -435,6 +435,17 @@ std::string slPLYProblem(const std::string& fileName)
   for (const Element& e : elements)
   {
     vertices = e.name == "vertex" ? e.count : vertices;
+    // vtkPLYReader frees each face's index list: without one it frees an
+    // uninitialised pointer.
+    bool hasIndices = false;
+    for (const Property& p : e.properties)
+    {
+      hasIndices = hasIndices || isFaceIndexList(e, p);
+    }
+    if (e.name == "face" && e.count > 0 && !hasIndices)
+    {
+      return "element \"face\" has no list property \"vertex_indices\" (or \"vertex_index\")";
+    }
   }
   if (format == Format::Ascii)
   {

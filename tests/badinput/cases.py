@@ -79,6 +79,10 @@ CASES = [
     mesh_case("ply bad magic with escapes", "a.ply", b"\x1b]0;owned\x07\nformat ascii 1.0\n", 'line 1: expected "ply", found "\\x1B]0;owned\\x07"'),
     mesh_case("ply negative element count", "a.ply", b"ply\nformat ascii 1.0\nelement vertex -3\nend_header\n", 'line 3: element needs a name and a count, found "element vertex -3"'),
     mesh_case("ply empty", "a.ply", b"", 'line 1: expected "ply", found ""'),
+    # found by fuzzing: vtkPLYReader freed an uninitialised pointer
+    mesh_case("ply face without index list", "a.ply",
+              ply_header(b"ascii", 3, 1, b"property list uchar int corners") + b"0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+              'element "face" has no list property "vertex_indices" (or "vertex_index")'),
     # STL
     mesh_case("stl truncated binary", "a.stl", stl_binary(32, cut=21 * 50 + 7), 'truncated binary STL: its header announces 32 triangles (1684 bytes), the file has 627 bytes'),
     mesh_case("stl header only with count", "a.stl", stl_binary(0, declared=5), 'truncated binary STL: its header announces 5 triangles (334 bytes), the file has 84 bytes'),
@@ -107,6 +111,15 @@ CASES = [
               "line 1: a header line longer than 255 bytes or holding a NUL byte"),
     mesh_case("vtk no version", "a.vtk", b"# vtk DataFile\nt\nASCII\nDATASET POLYDATA\n",
               'line 1: expected "# vtk DataFile Version N.N", found "# vtk DataFile"'),
+    # found by fuzzing: a version VTK cannot parse made it read 5.1 cell lists as 3.0 ones
+    mesh_case("vtk unparsable version", "a.vtk",
+              b"# vtk DataFile Version 5+.1\nt\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n0 0 0 1 0 0 0 1 0\n"
+              b"POLYGONS 2 3\nOFFSETS vtktypeint64\n0 3\nCONNECTIVITY vtktypeint64\n0 1 2\n",
+              'line 1: expected "# vtk DataFile Version N.N", found "# vtk DataFile Version 5+.1"'),
+    mesh_case("vtk offsets in a version 4 file", "a.vtk",
+              b"# vtk DataFile Version 4.2\nt\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n0 0 0 1 0 0 0 1 0\n"
+              b"POLYGONS 2 3\nOFFSETS vtktypeint64\n0 3\nCONNECTIVITY vtktypeint64\n0 1 2\n",
+              'line 8: POLYGONS: "OFFSETS" is not a number'),
     # OFF
     mesh_case("off index beyond", "a.off", TETRA_OFF.replace(b"3 1 2 3", b"3 1 2 4"), 'line 10: vertex index 4 is out of range [0, 4)'),
     mesh_case("off huge vertex count", "a.off", b"OFF\n1000000000000 1 0\n0 0 0\n", 'line 3: file ends after 1 of 1000000000000 vertices'),
