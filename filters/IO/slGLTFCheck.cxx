@@ -205,6 +205,10 @@ void checkDocument(const json& root, const std::filesystem::path& folder, long l
     }
     reference(views[i], "buffer", buffers, "buffer", where);
     const unsigned long long offset = count(views[i], "byteOffset", where);
+    if (member(views[i], "byteLength").is_null())
+    {
+      fail(where + " has no byteLength");
+    }
     const unsigned long long bytes = count(views[i], "byteLength", where);
     const unsigned long long buffer = bufferBytes[count(views[i], "buffer", where)];
     if (offset > buffer || bytes > buffer - offset)
@@ -243,6 +247,12 @@ void checkDocument(const json& root, const std::filesystem::path& folder, long l
       fail(where + " has an unknown componentType or type");
     }
     const unsigned long long n = count(a, "count", where);
+    // glTF allows an accessor without a view (all zeros); VTK 9.1 reads
+    // through it regardless.
+    if (member(a, "bufferView").is_null())
+    {
+      fail(where + " has no bufferView (zero-filled accessors are not read)");
+    }
     reference(a, "bufferView", views, "bufferView", where);
     if (!member(a, "bufferView").is_null())
     {
@@ -289,6 +299,27 @@ void checkDocument(const json& root, const std::filesystem::path& folder, long l
       reference(holder, it.key().c_str(), accessors, "accessor", where);
     }
   };
+  // The accessor @p key of @p object, if present, has the layout VTK reads
+  // it with (types: "VEC3"; components: the allowed componentType values).
+  auto layout = [&](const json& object, const char* key, const std::string& where, const char* type,
+                  std::initializer_list<unsigned long long> components) {
+    if (member(object, key).is_null())
+    {
+      return;
+    }
+    const json& a = accessors[count(object, key, where)];
+    const unsigned long long component = count(a, "componentType", where);
+    bool known = false;
+    for (unsigned long long c : components)
+    {
+      known = known || c == component;
+    }
+    if (member(a, "type") != type || !known)
+    {
+      fail(where + "." + key + ": accessor " + std::to_string(count(object, key, where)) + " is not of type " + type +
+        " with a component type VTK reads there");
+    }
+  };
   for (size_t m = 0; m < meshes.size(); ++m)
   {
     const json& primitives = member(meshes[m], "primitives");
@@ -297,6 +328,12 @@ void checkDocument(const json& root, const std::filesystem::path& folder, long l
       const std::string where = at("meshes", m) + "." + at("primitives", p);
       accessorMap(member(primitives[p], "attributes"), where + ".attributes");
       reference(primitives[p], "indices", accessors, "accessor", where);
+      layout(primitives[p], "indices", where, "SCALAR", { 5121, 5123, 5125 });
+      const json& attributes = member(primitives[p], "attributes");
+      layout(attributes, "POSITION", where + ".attributes", "VEC3", { 5126 });
+      layout(attributes, "NORMAL", where + ".attributes", "VEC3", { 5126 });
+      layout(attributes, "TANGENT", where + ".attributes", "VEC4", { 5126 });
+      layout(attributes, "TEXCOORD_0", where + ".attributes", "VEC2", { 5126, 5121, 5123 });
       reference(primitives[p], "material", materials, "material", where);
       const json& targets = member(primitives[p], "targets");
       for (size_t t = 0; targets.is_array() && t < targets.size(); ++t)

@@ -152,17 +152,17 @@ std::string slXMLCountsProblem(const std::string& fileName)
   }
   const int wordSize = attribute(vtkFile, "header_type") == "UInt64" ? 8 : 4;
   const bool little = attribute(vtkFile, "byte_order") != "BigEndian";
-  std::string appendedBytes;
+  // Appended data starts after "_"; offsets count its bytes, or its
+  // characters when it is base64 (each array's header encoded on its own).
+  size_t appendedStart = std::string::npos;
+  bool appendedBase64 = false;
   if (appended != std::string::npos)
   {
     const size_t close = bytes.find('>', appended);
     const size_t underscore = bytes.find('_', close == std::string::npos ? bytes.size() : close);
     const std::string tag = bytes.substr(appended, close == std::string::npos ? 0 : close - appended);
-    if (underscore != std::string::npos)
-    {
-      appendedBytes = attribute(tag, "encoding") == "base64" ? base64(bytes, underscore + 1, std::string::npos)
-                                                            : bytes.substr(underscore + 1);
-    }
+    appendedStart = underscore == std::string::npos ? std::string::npos : underscore + 1;
+    appendedBase64 = attribute(tag, "encoding") == "base64";
   }
   for (size_t at = text.find("<DataArray"); at != std::string::npos; at = text.find("<DataArray", at + 1))
   {
@@ -181,9 +181,11 @@ std::string slXMLCountsProblem(const std::string& fileName)
     else if (format == "appended")
     {
       const unsigned long long offset = std::strtoull(attribute(tag, "offset").c_str(), nullptr, 10);
-      if (offset <= appendedBytes.size())
+      if (appendedStart != std::string::npos && offset <= bytes.size() - appendedStart)
       {
-        header = appendedBytes.substr(static_cast<size_t>(offset), static_cast<size_t>(3 * wordSize));
+        const size_t at = appendedStart + static_cast<size_t>(offset);
+        header = appendedBase64 ? base64(bytes, at, static_cast<size_t>(3 * wordSize))
+                                : bytes.substr(at, static_cast<size_t>(3 * wordSize));
       }
     }
     if (header.size() < static_cast<size_t>(3 * wordSize))

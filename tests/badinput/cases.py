@@ -4,7 +4,7 @@ Arguments and messages use paths relative to the case's folder, where the
 input files are written and every out.* argument already exists with other
 content. Each case expects exactly one line on stderr."""
 from inputs import (QUAD_OBJ, TETRA_OFF, THREE_LIGHTS, glb, gltf, legacy_vtk, obj, ply_ascii, ply_binary,
-                    ply_header, png, stl_binary, vtp, vtp_compressed_header)
+                    ply_header, png, stl_binary, vtp, vtp_appended_base64_header, vtp_compressed_header)
 
 
 def mesh_case(name, file_name, data, message, status=1):
@@ -100,6 +100,9 @@ CASES = [
     mesh_case("vtp compressed header block count", "a.vtp", vtp_compressed_header(2000000000),
               'DataArray "Points": its compression header declares 2000000000 blocks of 32768 bytes, more than a file '
               'of 412 bytes can hold'),
+    mesh_case("vtp appended base64 header block count", "a.vtp", vtp_appended_base64_header(1429727086),
+              'DataArray "Points": its compression header declares 1429727086 blocks of 32768 bytes, more than a '
+              'file of 465 bytes can hold'),
     # legacy VTK
     mesh_case("vtk index beyond points", "a.vtk", legacy_vtk(b"POLYGONS 1 4\n3 0 1 7\n"), 'polygon 0 names point 7, but the mesh has 3 points (0 to 2)'),
     mesh_case("vtk negative index", "a.vtk", legacy_vtk(b"POLYGONS 1 4\n3 0 -2 1\n"), 'polygon 0 names point -2, but the mesh has 3 points (0 to 2)'),
@@ -142,6 +145,18 @@ CASES = [
     mesh_case("gltf malformed json", "a.gltf", b"{\"asset\": {\"version\": \"2.0\"", "malformed glTF JSON: parse error at line 1, column 28: syntax error while parsing object - unexpected end of input; expected '}'"),
     mesh_case("gltf unknown component type", "a.gltf",
               gltf(edit=lambda d: d["accessors"][0].update(componentType=5130)), 'accessors[0] has an unknown componentType or type'),
+    # found by fuzzing: vtkGLTFReader followed an accessor without a view, or of the wrong type
+    mesh_case("gltf accessor without bufferView", "a.gltf", gltf(edit=lambda d: d["accessors"][1].pop("bufferView")),
+              "accessors[1] has no bufferView (zero-filled accessors are not read)"),
+    mesh_case("gltf bufferView without byteLength", "a.gltf",
+              gltf(edit=lambda d: d["bufferViews"][0].pop("byteLength")), "bufferViews[0] has no byteLength"),
+    mesh_case("glb indices of VEC3 floats", "a.glb",
+              glb(edit=lambda d: d["meshes"][0]["primitives"][0].update(indices=0)),
+              "meshes[0].primitives[0].indices: accessor 0 is not of type SCALAR with a component type VTK reads there"),
+    mesh_case("gltf position of scalars", "a.gltf",
+              gltf(edit=lambda d: d["meshes"][0]["primitives"][0]["attributes"].update(POSITION=1)),
+              "meshes[0].primitives[0].attributes.POSITION: accessor 1 is not of type VEC3 with a component type VTK "
+              "reads there"),
     mesh_case("glb truncated", "a.glb", glb(cut=10), 'truncated binary glTF: its header announces 568 bytes, the file has 558'),
     mesh_case("glb bad magic", "a.glb", b"gLTF" + bytes(30), 'not a binary glTF file (no "glTF" header)'),
     mesh_case("glb accessor beyond buffer", "a.glb", glb(count=300), 'accessors[0]: 300 elements of 12 bytes from byte 0 reach beyond its bufferView of 36 bytes'),

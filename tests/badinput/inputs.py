@@ -118,3 +118,14 @@ def vtp_compressed_header(blocks):
             b'<Piece NumberOfPoints="3" NumberOfVerts="0" NumberOfLines="0" NumberOfStrips="0" NumberOfPolys="0">\n'
             b'<Points><DataArray type="Float32" Name="Points" NumberOfComponents="3" format="binary">' + header +
             b'</DataArray></Points>\n</Piece>\n</PolyData>\n</VTKFile>\n')
+
+
+def vtp_appended_base64_header(blocks):
+    """A compressed VTP with base64 appended data whose points header declares @blocks blocks."""
+    header = base64.b64encode(struct.pack("<III", blocks, 32768, 0))
+    return (b'<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1" byte_order="LittleEndian" '
+            b'header_type="UInt32" compressor="vtkZLibDataCompressor">\n<PolyData>\n'
+            b'<Piece NumberOfPoints="3" NumberOfVerts="0" NumberOfLines="0" NumberOfStrips="0" NumberOfPolys="0">\n'
+            b'<Points><DataArray type="Float32" Name="Points" NumberOfComponents="3" format="appended" offset="0"/>'
+            b'</Points>\n</Piece>\n</PolyData>\n<AppendedData encoding="base64">\n_' + header +
+            b'\n</AppendedData>\n</VTKFile>\n')
