@@ -157,24 +157,37 @@ public:
     this->Position = start + static_cast<size_t>(bytes);
   }
 
-  /// Skips lines up to and including the next blank one (the end of a METADATA block).
+  /// Skips a METADATA block: lines up to and including the next blank one.
+  /// An "INFORMATION n" line must be followed by n "NAME" and n "DATA" lines
+  /// (VTK reads that many, past the block's end).
   void skipMetadata()
   {
+    long long information = -1, names = 0, data = 0;
     for (;;)
     {
       const size_t newline = this->Bytes.find('\n', this->Position);
       if (newline == std::string::npos)
       {
-        this->Position = this->Bytes.size();
-        return;
+        fail("line " + std::to_string(this->line()) + ": the file ends within a METADATA block");
       }
       const size_t next = this->Bytes.find('\n', newline + 1);
       const std::string lineText = this->Bytes.substr(newline + 1, (next == std::string::npos ? this->Bytes.size() : next) - newline - 1);
       this->Position = newline + 1;
       if (lineText.find_first_not_of(" \t\r") == std::string::npos)
       {
+        if (information >= 0 && (names != information || data != information))
+        {
+          fail("line " + std::to_string(this->line()) + ": METADATA announces " + std::to_string(information) +
+            " information keys and holds " + std::to_string(std::min(names, data)));
+        }
         return;
       }
+      if (lineText.rfind("INFORMATION ", 0) == 0)
+      {
+        information = std::strtoll(lineText.c_str() + 12, nullptr, 10);
+      }
+      names += lineText.rfind("NAME ", 0) == 0;
+      data += lineText.rfind("DATA ", 0) == 0;
     }
   }
 

@@ -342,15 +342,42 @@ std::string slPLYProblem(const std::string& fileName)
       return "line " + std::to_string(lineNumber) + ": the header has no end_header";
     }
     const std::string where = "line " + std::to_string(lineNumber) + ": ";
-    // VTK's PLY code reads header lines into a 4096-byte buffer.
+    // VTK's PLY code reads header lines into a 4096-byte buffer and splits
+    // them as C strings: a NUL or other control byte corrupts its element
+    // table.
     if (line.size() > 4000)
     {
       return where + "header line longer than 4000 characters";
+    }
+    for (char c : line)
+    {
+      const unsigned char u = static_cast<unsigned char>(c);
+      if (u < 0x20 && c != '\t')
+      {
+        return where + "a control byte in the header: \"" + shadelab::printableText(line) + "\"";
+      }
     }
     std::istringstream words(line);
     if (!(words >> keyword) || keyword == "comment" || keyword == "obj_info")
     {
       continue;
+    }
+    // The other header lines have a fixed number of words.
+    size_t wordCount = 1;
+    for (std::string w; words >> w;)
+    {
+      ++wordCount;
+    }
+    words.clear();
+    words.seekg(0);
+    words >> keyword;
+    const size_t expected = keyword == "element" || keyword == "format" ? 3
+      : keyword == "property"                                          ? (line.find(" list ") != std::string::npos ? 5 : 3)
+                                                                       : 1;
+    if (wordCount != expected)
+    {
+      return where + "expected " + std::to_string(expected) + " words, found \"" + shadelab::printableText(line) +
+        "\"";
     }
     if (keyword == "end_header")
     {

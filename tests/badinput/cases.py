@@ -79,6 +79,11 @@ CASES = [
     mesh_case("ply bad magic with escapes", "a.ply", b"\x1b]0;owned\x07\nformat ascii 1.0\n", 'line 1: expected "ply", found "\\x1B]0;owned\\x07"'),
     mesh_case("ply negative element count", "a.ply", b"ply\nformat ascii 1.0\nelement vertex -3\nend_header\n", 'line 3: element needs a name and a count, found "element vertex -3"'),
     mesh_case("ply empty", "a.ply", b"", 'line 1: expected "ply", found ""'),
+    # found by fuzzing: control bytes in a header line corrupted vtkPLY's element table
+    mesh_case("ply control bytes in header", "a.ply", b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\x01\x00v\n",
+              'line 4: a control byte in the header: "property float x\\x01\\x00v"'),
+    mesh_case("ply property with extra words", "a.ply", b"ply\nformat ascii 1.0\nelement vertex 3 extra\n",
+              'line 3: expected 3 words, found "element vertex 3 extra"'),
     # found by fuzzing: vtkPLYReader freed an uninitialised pointer
     mesh_case("ply face without index list", "a.ply",
               ply_header(b"ascii", 3, 1, b"property list uchar int corners") + b"0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
@@ -123,6 +128,11 @@ CASES = [
               b"# vtk DataFile Version 4.2\nt\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n0 0 0 1 0 0 0 1 0\n"
               b"POLYGONS 2 3\nOFFSETS vtktypeint64\n0 3\nCONNECTIVITY vtktypeint64\n0 1 2\n",
               'line 8: POLYGONS: "OFFSETS" is not a number'),
+    # found by fuzzing: VTK hung reading past a METADATA block of a binary file; its keys must be complete
+    mesh_case("vtk metadata short of its keys", "a.vtk",
+              b"# vtk DataFile Version 5.1\nt\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n0 0 0 1 0 0 0 1 0\n"
+              b"METADATA\nINFORMATION 2\nNAME L2_NORM_RANGE LOCATION vtkDataArray\nDATA 2 0.5 0.5\n\n",
+              "line 11: METADATA announces 2 information keys and holds 1"),
     # OFF
     mesh_case("off index beyond", "a.off", TETRA_OFF.replace(b"3 1 2 3", b"3 1 2 4"), 'line 10: vertex index 4 is out of range [0, 4)'),
     mesh_case("off huge vertex count", "a.off", b"OFF\n1000000000000 1 0\n0 0 0\n", 'line 3: file ends after 1 of 1000000000000 vertices'),
