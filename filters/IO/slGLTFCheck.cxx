@@ -247,6 +247,10 @@ void checkDocument(const json& root, const std::filesystem::path& folder, long l
       fail(where + " has an unknown componentType or type");
     }
     const unsigned long long n = count(a, "count", where);
+    if (n == 0)
+    {
+      fail(where + " has no count (at least 1)");
+    }
     // glTF allows an accessor without a view (all zeros); VTK 9.1 reads
     // through it regardless.
     if (member(a, "bufferView").is_null())
@@ -326,6 +330,11 @@ void checkDocument(const json& root, const std::filesystem::path& folder, long l
     for (size_t p = 0; primitives.is_array() && p < primitives.size(); ++p)
     {
       const std::string where = at("meshes", m) + "." + at("primitives", p);
+      // vtkGLTFReader builds every primitive from its POSITION accessor.
+      if (member(member(primitives[p], "attributes"), "POSITION").is_null())
+      {
+        fail(where + " has no attributes.POSITION");
+      }
       accessorMap(member(primitives[p], "attributes"), where + ".attributes");
       reference(primitives[p], "indices", accessors, "accessor", where);
       layout(primitives[p], "indices", where, "SCALAR", { 5121, 5123, 5125 });

@@ -167,6 +167,11 @@ CASES = [
               gltf(edit=lambda d: d["meshes"][0]["primitives"][0]["attributes"].update(POSITION=1)),
               "meshes[0].primitives[0].attributes.POSITION: accessor 1 is not of type VEC3 with a component type VTK "
               "reads there"),
+    mesh_case("glb primitive without positions", "a.glb",
+              glb(edit=lambda d: d["meshes"][0]["primitives"][0].pop("attributes")),
+              "meshes[0].primitives[0] has no attributes.POSITION"),
+    mesh_case("gltf accessor without count", "a.gltf", gltf(edit=lambda d: d["accessors"][0].pop("count")),
+              "accessors[0] has no count (at least 1)"),
     mesh_case("glb truncated", "a.glb", glb(cut=10), 'truncated binary glTF: its header announces 568 bytes, the file has 558'),
     mesh_case("glb bad magic", "a.glb", b"gLTF" + bytes(30), 'not a binary glTF file (no "glTF" header)'),
     mesh_case("glb accessor beyond buffer", "a.glb", glb(count=300), 'accessors[0]: 300 elements of 12 bytes from byte 0 reach beyond its bufferView of 36 bytes'),
