@@ -17,14 +17,24 @@
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imagecache.h>
 
 vtkStandardNewMacro(slImageReader);
 
 namespace
 {
-/// The most values (pixels x channels) read: a 16k x 16k RGBA image. A
+/// The most values (pixels x channels) read: an 8k x 8k RGBA image, 1 GB
+/// as floats. A
 /// header claiming more is rejected before anything is allocated.
-constexpr double kMaximumValues = 1073741824.0;
+constexpr double kMaximumValues = 268435456.0;
+
+/// Drops what OpenImageIO's shared cache holds for @p name: the file may have
+/// changed since it was last read in this process, and a stale spec read
+/// against new contents reads outside them.
+void forgetCached(const std::string& name)
+{
+  OIIO::ImageCache::create(true)->invalidate(OIIO::ustring(name), true);
+}
 } // namespace
 
 slImageReader::slImageReader()
@@ -45,6 +55,7 @@ int slImageReader::RequestInformation(vtkInformation*, vtkInformationVector**, v
   if (this->FileName)
   {
     const slStderrCapture quiet;
+    forgetCached(this->FileName);
     OIIO::ImageBuf probe(this->FileName);
     if (probe.init_spec(this->FileName, 0, 0))
     {
@@ -79,6 +90,7 @@ int slImageReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInfor
   // The image libraries' own lines on stderr are held back: the problem is
   // reported once, in ErrorMessage.
   slStderrCapture quiet;
+  forgetCached(name);
   OIIO::ImageBuf image(name);
   const bool haveSpec = image.init_spec(name, 0, 0);
   const bool is8Bit = haveSpec && image.spec().format == OIIO::TypeDesc::UINT8;
@@ -87,7 +99,7 @@ int slImageReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInfor
   if (haveSpec && static_cast<double>(image.spec().width) * image.spec().height * image.spec().nchannels > kMaximumValues)
   {
     reason = "its header declares " + std::to_string(image.spec().width) + "x" + std::to_string(image.spec().height) +
-      " pixels of " + std::to_string(image.spec().nchannels) + " channels, more than ShadeLab reads (2^30 values)";
+      " pixels of " + std::to_string(image.spec().nchannels) + " channels, more than ShadeLab reads (2^28 values)";
   }
   else if (!image.read(0, 0, /*force*/ true, type))
   {

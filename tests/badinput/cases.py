@@ -201,12 +201,12 @@ CASES = [
     # images
     image_case("png truncated", "t.png", png(cut=20), 'shadelab light: t.png: cannot read image: Read error: hit end of file PNG read error: IDAT: Read error: hit end of file PNG library error\n'),
     image_case("png bad crc", "t.png", png(crc_ok=False), 'shadelab light: t.png: cannot read image: PNG read error: IDAT: CRC error PNG library error\n'),
-    image_case("png huge header", "t.png", png(width=100000, height=100000), 'shadelab light: t.png: cannot read image: its header declares 100000x100000 pixels of 3 channels, more than ShadeLab reads (2^30 values)\n'),
+    image_case("png huge header", "t.png", png(width=100000, height=100000), 'shadelab light: t.png: cannot read image: its header declares 100000x100000 pixels of 3 channels, more than ShadeLab reads (2^28 values)\n'),
     image_case("png garbage", "t.png", b"\x89PNG\r\n\x1a\n\x1b[31m garbage", 'shadelab light: t.png: cannot read image: Invalid image file "t.png": PNG read error: m[20]ga: invalid chunk type\n'),
     image_case("png empty", "t.png", b"", 'shadelab light: t.png: cannot read image: Invalid image file "t.png": Not a PNG file\n'),
     image_case("jpg truncated", "t.jpg", "seed:fuzz_image_jpg/gradient.jpg:300", 'shadelab light: t.jpg: cannot read image: Invalid image file "t.jpg": JPEG error: Premature end of JPEG file ("t.jpg") Bad JPEG header for "t.jpg"\n'),
     image_case("jpg garbage", "t.jpg", b"\xff\xd8\xff\xe0 not really", 'shadelab light: t.jpg: cannot read image: Invalid image file "t.jpg": JPEG error: Premature end of JPEG file ("t.jpg") Bad JPEG header for "t.jpg"\n'),
-    image_case("hdr garbage", "t.hdr", b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 99999 +X 99999\n", 'shadelab light: t.hdr: cannot read image: its header declares 99999x99999 pixels of 3 channels, more than ShadeLab reads (2^30 values)\n'),
+    image_case("hdr garbage", "t.hdr", b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 99999 +X 99999\n", 'shadelab light: t.hdr: cannot read image: its header declares 99999x99999 pixels of 3 channels, more than ShadeLab reads (2^28 values)\n'),
     image_case("image missing", "nothere.png", "skip", 'shadelab light: nothere.png: cannot read image: Invalid image file "nothere.png": Could not open file "nothere.png"\n'),
     image_case("image is a directory", "d.png", None, 'shadelab light: d.png: cannot read image: it is a directory\n'),
     # command lines
