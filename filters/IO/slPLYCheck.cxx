@@ -458,6 +458,23 @@ std::string slPLYProblem(const std::string& fileName)
   {
     return "the header has no format line";
   }
+  // vtkPLYReader looks both elements up and reads x, y, z: without them it
+  // follows a bad element table.
+  bool haveVertex = false, haveFace = false;
+  for (const Element& e : elements)
+  {
+    int xyz = 0;
+    for (const Property& p : e.properties)
+    {
+      xyz += p.countSize == 0 && (p.name == "x" || p.name == "y" || p.name == "z");
+    }
+    haveVertex = haveVertex || (e.name == "vertex" && xyz == 3);
+    haveFace = haveFace || e.name == "face";
+  }
+  if (!haveVertex || !haveFace)
+  {
+    return "the header needs an element \"vertex\" with properties x, y, z and an element \"face\"";
+  }
   unsigned long long vertices = 0;
   for (const Element& e : elements)
   {

@@ -79,6 +79,10 @@ CASES = [
     mesh_case("ply bad magic with escapes", "a.ply", b"\x1b]0;owned\x07\nformat ascii 1.0\n", 'line 1: expected "ply", found "\\x1B]0;owned\\x07"'),
     mesh_case("ply negative element count", "a.ply", b"ply\nformat ascii 1.0\nelement vertex -3\nend_header\n", 'line 3: element needs a name and a count, found "element vertex -3"'),
     mesh_case("ply empty", "a.ply", b"", 'line 1: expected "ply", found ""'),
+    # found by fuzzing: vtkPLYReader crashed in find_element on a file without a vertex element
+    mesh_case("ply without vertex element", "a.ply",
+              b"ply\nformat ascii 1.0\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n3 0 1 2\n",
+              'the header needs an element "vertex" with properties x, y, z and an element "face"'),
     # found by fuzzing: control bytes in a header line corrupted vtkPLY's element table
     mesh_case("ply control bytes in header", "a.ply", b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\x01\x00v\n",
               'line 4: a control byte in the header: "property float x\\x01\\x00v"'),
