@@ -273,6 +273,11 @@ std::string asciiBody(std::istream& in, long lineNumber, const std::vector<Eleme
       ++lineNumber;
       std::istringstream words(line);
       const std::string where = "line " + std::to_string(lineNumber) + " (" + rowName(e, row) + "): ";
+      // VTK splits the line as a C string: a NUL byte would end it early.
+      if (line.find('\0') != std::string::npos)
+      {
+        return where + "a NUL byte";
+      }
       for (const Property& p : e.properties)
       {
         long long number = 0;

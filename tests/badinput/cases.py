@@ -79,6 +79,9 @@ CASES = [
     mesh_case("ply bad magic with escapes", "a.ply", b"\x1b]0;owned\x07\nformat ascii 1.0\n", 'line 1: expected "ply", found "\\x1B]0;owned\\x07"'),
     mesh_case("ply negative element count", "a.ply", b"ply\nformat ascii 1.0\nelement vertex -3\nend_header\n", 'line 3: element needs a name and a count, found "element vertex -3"'),
     mesh_case("ply empty", "a.ply", b"", 'line 1: expected "ply", found ""'),
+    # found by fuzzing: a NUL byte cut an ASCII row short for vtkPLY, which then parsed a null word
+    mesh_case("ply nul byte in ascii row", "a.ply", ply_ascii(b"3 0 1 2\n").replace(b"1 0 0\n", b"1 \x000 0\n"),
+              'line 11 (element "vertex" row 2 of 3): a NUL byte'),
     # found by fuzzing: vtkPLYReader crashed in find_element on a file without a vertex element
     mesh_case("ply without vertex element", "a.ply",
               b"ply\nformat ascii 1.0\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n3 0 1 2\n",
