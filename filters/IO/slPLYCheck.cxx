@@ -468,12 +468,14 @@ std::string slPLYProblem(const std::string& fileName)
   bool haveVertex = false, haveFace = false;
   for (const Element& e : elements)
   {
-    int xyz = 0;
+    bool x = false, y = false, z = false;
     for (const Property& p : e.properties)
     {
-      xyz += p.countSize == 0 && (p.name == "x" || p.name == "y" || p.name == "z");
+      x = x || (p.countSize == 0 && p.name == "x");
+      y = y || (p.countSize == 0 && p.name == "y");
+      z = z || (p.countSize == 0 && p.name == "z");
     }
-    haveVertex = haveVertex || (e.name == "vertex" && xyz == 3);
+    haveVertex = haveVertex || (e.name == "vertex" && x && y && z);
     haveFace = haveFace || e.name == "face";
   }
   if (!haveVertex || !haveFace)

@@ -82,6 +82,9 @@ CASES = [
     # found by fuzzing: a NUL byte cut an ASCII row short for vtkPLY, which then parsed a null word
     mesh_case("ply nul byte in ascii row", "a.ply", ply_ascii(b"3 0 1 2\n").replace(b"1 0 0\n", b"1 \x000 0\n"),
               'line 11 (element "vertex" row 2 of 3): a NUL byte'),
+    mesh_case("ply vertex without y", "a.ply",
+              ply_ascii(b"3 0 1 2\n").replace(b"property float y\n", b"property float x\n"),
+              'the header needs an element "vertex" with properties x, y, z and an element "face"'),
     # found by fuzzing: vtkPLYReader crashed in find_element on a file without a vertex element
     mesh_case("ply without vertex element", "a.ply",
               b"ply\nformat ascii 1.0\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n3 0 1 2\n",
