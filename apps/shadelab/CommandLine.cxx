@@ -93,6 +93,16 @@ double CommandLine::getNumber(const std::string& name, double fallback, double l
   return value;
 }
 
+int CommandLine::getIndex(const std::string& name, int fallback, int lo, int hi) const
+{
+  const double value = this->getNumber(name, fallback, lo, hi);
+  if (value != std::floor(value))
+  {
+    throw UsageError("option --" + name + ": \"" + this->get(name) + "\" is not a whole number");
+  }
+  return static_cast<int>(value);
+}
+
 const std::string& CommandLine::meshWithOutput() const
 {
   if (this->Positional.size() != 1)

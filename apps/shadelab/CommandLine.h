@@ -49,6 +49,9 @@ public:
   std::string get(const std::string& name, const std::string& fallback = std::string()) const;
   /// A number option in [lo, hi]; throws UsageError naming the option otherwise.
   double getNumber(const std::string& name, double fallback, double lo, double hi) const;
+  /// A whole-number option (an index) in [lo, hi]; throws UsageError naming
+  /// the option otherwise ("0.5" is not taken as 0).
+  int getIndex(const std::string& name, int fallback, int lo, int hi) const;
   const std::vector<std::string>& positional() const { return this->Positional; }
 
   /// The single MESH argument of a job that also needs -o/--output. Throws

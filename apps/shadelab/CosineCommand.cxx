@@ -37,7 +37,7 @@ int runCosine(const std::vector<std::string>& args)
   const std::string meshPath = cl.meshWithOutput();
   vtkNew<slCosineField> filter;
   vtkSmartPointer<slScene> scene = configureLitFilter(cl, filter);
-  filter->SetLightIndex(static_cast<int>(cl.getNumber("light", -1, -1, 1e6)));
+  filter->SetLightIndex(cl.getIndex("light", -1, -1, 1000000));
   filter->SetComputeCellArrays(!cl.has("no-cells"));
   filter->SetInputData(loadMeshWithNormals(meshPath));
   runLitFilter(filter, meshPath);

@@ -82,9 +82,17 @@ void applySceneOverrides(const CommandLine& cl, slScene* scene)
 
 void parseSize(const std::string& text, int& width, int& height)
 {
-  char x = 0, extra = 0;
-  if (std::sscanf(text.c_str(), "%d%c%d%c", &width, &x, &height, &extra) != 3 || (x != 'x' && x != 'X') ||
-    width < 16 || height < 16 || width > 8192 || height > 8192)
+  // Digits only, read without overflow (sscanf's %d wraps 4294967360 to 64).
+  auto side = [](const std::string& digits, int& value) {
+    if (digits.empty() || digits.size() > 5 || digits.find_first_not_of("0123456789") != std::string::npos)
+    {
+      return false;
+    }
+    value = std::stoi(digits);
+    return value >= 16 && value <= 8192;
+  };
+  const size_t x = text.find_first_of("xX");
+  if (x == std::string::npos || !side(text.substr(0, x), width) || !side(text.substr(x + 1), height))
   {
     throw UsageError("--size: \"" + text + "\" is not WxH with 16 <= W, H <= 8192");
   }

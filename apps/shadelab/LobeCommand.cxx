@@ -178,7 +178,7 @@ int runLobe(const std::vector<std::string>& args)
     vtkNew<slLobesOnMesh> lobes;
     vtkSmartPointer<slScene> scene = configureLitFilter(cl, lobes);
     lobes->SetNumberOfLobes(static_cast<int>(cl.getNumber("points", 16, 1, 100000)));
-    lobes->SetLightIndex(static_cast<int>(cl.getNumber("light", -1, -1, 1e6)));
+    lobes->SetLightIndex(cl.getIndex("light", -1, -1, 1000000));
     lobes->SetScale(cl.getNumber("scale", 0.1, 0.0, 100.0));
     lobes->SetMultiplyByCosine(cl.has("cosine"));
     vtkSmartPointer<vtkPolyData> mesh = loadMeshWithNormals(meshPath);

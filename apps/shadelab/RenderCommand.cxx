@@ -40,8 +40,7 @@ void applyComponentOptions(const CommandLine& cl, slLightingPass* pass)
   }
   if (cl.has("light"))
   {
-    pass->SetComponentLight(
-      static_cast<int>(cl.getNumber("light", 0, 0, slLightingPass::GetMaximumNumberOfLights() - 1)));
+    pass->SetComponentLight(cl.getIndex("light", 0, 0, slLightingPass::GetMaximumNumberOfLights() - 1));
   }
   pass->SetFalseColor(cl.has("false-color"));
 }
@@ -75,6 +74,14 @@ int runRender(const std::vector<std::string>& args)
 
   vtkSmartPointer<slScene> scene = loadScene(cl.get("scene"));
   applySceneOverrides(cl, scene);
+  // As cosine and lobe do: a light the scene does not have is an error, not
+  // a background-only image.
+  if (cl.has("light") && cl.getIndex("light", 0, 0, slLightingPass::GetMaximumNumberOfLights() - 1) >=
+      scene->GetNumberOfLights())
+  {
+    throw JobError("option --light: light " + cl.get("light") + " is out of range: the scene has " +
+      std::to_string(scene->GetNumberOfLights()) + " lights");
+  }
   int width = 0, height = 0;
   if (cl.has("size"))
   {

@@ -1,5 +1,9 @@
 #include "slImageReader.h"
 
+#include "slStderrCapture.h"
+
+#include "shadelab/PrintableText.h"
+
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkInformation.h>
@@ -9,10 +13,29 @@
 #include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtkUnsignedCharArray.h>
 
+#include <filesystem>
+
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imagecache.h>
 
 vtkStandardNewMacro(slImageReader);
+
+namespace
+{
+/// The most values (pixels x channels) read: an 8k x 8k RGBA image, 1 GB
+/// as floats. A
+/// header claiming more is rejected before anything is allocated.
+constexpr double kMaximumValues = 268435456.0;
+
+/// Drops what OpenImageIO's shared cache holds for @p name: the file may have
+/// changed since it was last read in this process, and a stale spec read
+/// against new contents reads outside them.
+void forgetCached(const std::string& name)
+{
+  OIIO::ImageCache::create(true)->invalidate(OIIO::ustring(name), true);
+}
+} // namespace
 
 slImageReader::slImageReader()
 {
@@ -31,6 +54,8 @@ int slImageReader::RequestInformation(vtkInformation*, vtkInformationVector**, v
   int extent[6] = { 0, -1, 0, -1, 0, 0 };
   if (this->FileName)
   {
+    const slStderrCapture quiet;
+    forgetCached(this->FileName);
     OIIO::ImageBuf probe(this->FileName);
     if (probe.init_spec(this->FileName, 0, 0))
     {
@@ -55,17 +80,43 @@ int slImageReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInfor
     return 0;
   }
 
-  OIIO::ImageBuf image(name);
-  const bool is8Bit = image.init_spec(name, 0, 0) && image.spec().format == OIIO::TypeDesc::UINT8;
-  const OIIO::TypeDesc type = is8Bit && !this->OutputFloat ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT;
-  if (!image.read(0, 0, /*force*/ true, type))
+  std::error_code ignored;
+  if (std::filesystem::is_directory(name, ignored))
   {
-    std::string reason = image.geterror();
+    this->ErrorMessage = name + ": cannot read image: it is a directory";
+    vtkErrorMacro(<< this->ErrorMessage);
+    return 0;
+  }
+  // The image libraries' own lines on stderr are held back: the problem is
+  // reported once, in ErrorMessage.
+  slStderrCapture quiet;
+  forgetCached(name);
+  OIIO::ImageBuf image(name);
+  const bool haveSpec = image.init_spec(name, 0, 0);
+  const bool is8Bit = haveSpec && image.spec().format == OIIO::TypeDesc::UINT8;
+  const OIIO::TypeDesc type = is8Bit && !this->OutputFloat ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT;
+  std::string reason;
+  if (haveSpec && static_cast<double>(image.spec().width) * image.spec().height * image.spec().nchannels > kMaximumValues)
+  {
+    reason = "its header declares " + std::to_string(image.spec().width) + "x" + std::to_string(image.spec().height) +
+      " pixels of " + std::to_string(image.spec().nchannels) + " channels, more than ShadeLab reads (2^28 values)";
+  }
+  else if (!image.read(0, 0, /*force*/ true, type))
+  {
+    reason = image.geterror();
+    if (reason.empty())
+    {
+      reason = quiet.Text();
+    }
     for (char& c : reason)
     {
       c = c == '\n' ? ' ' : c;
     }
-    this->ErrorMessage = name + ": cannot read image: " + (reason.empty() ? "unknown format" : reason);
+    reason = reason.empty() ? "unknown format" : shadelab::printableText(reason, 200);
+  }
+  if (!reason.empty())
+  {
+    this->ErrorMessage = name + ": cannot read image: " + reason;
     vtkErrorMacro(<< this->ErrorMessage);
     return 0;
   }

@@ -1,9 +1,13 @@
 #include "slMeshReader.h"
 
+#include "slConnectivityCheck.h"
 #include "slErrorCapture.h"
 #include "slFileExtension.h"
+#include "slMeshFileCheck.h"
 #include "slOFFParser.h"
 #include "slPointWelding.h"
+
+#include "shadelab/PrintableText.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkAppendPolyData.h>
@@ -26,7 +30,9 @@
 #include <vtkXMLPolyDataReader.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <new>
 
 vtkStandardNewMacro(slMeshReader);
 
@@ -157,6 +163,11 @@ int slMeshReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInform
   {
     return this->Fail("unsupported mesh format \"" + ext + "\" (supported: " + GetSupportedExtensions() + ")");
   }
+  std::error_code ignored;
+  if (std::filesystem::is_directory(this->FileName, ignored))
+  {
+    return this->Fail("is a directory, not a mesh file");
+  }
   std::ifstream probe(this->FileName, std::ios::binary);
   if (!probe)
   {
@@ -175,13 +186,32 @@ int slMeshReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInform
   else
   {
     probe.close();
+    // VTK's readers trust the file; what would make them crash, allocate
+    // without bound or read part of it is rejected first.
+    const std::string problem = slMeshFileProblem(this->FileName, ext);
+    if (!problem.empty())
+    {
+      return this->Fail(problem);
+    }
     vtkSmartPointer<vtkAlgorithm> reader = makeVTKReader(ext, this->FileName);
     vtkNew<slErrorCapture> errors;
     errors->Watch(reader);
-    reader->Update();
+    try
+    {
+      reader->Update();
+    }
+    catch (const std::bad_alloc&)
+    {
+      return this->Fail("not enough memory for what the file declares");
+    }
+    catch (const std::exception& e)
+    {
+      return this->Fail(shadelab::printableText(e.what(), 200));
+    }
     if (errors->HasError())
     {
-      return this->Fail(errors->GetLastError());
+      // VTK's messages may quote bytes of the file.
+      return this->Fail(shadelab::printableText(errors->GetLastError(), 200));
     }
     vtkSmartPointer<vtkPolyData> read = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
     if (auto* composite = vtkCompositeDataSet::SafeDownCast(reader->GetOutputDataObject(0)))
@@ -193,6 +223,12 @@ int slMeshReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInform
       return this->Fail("the file does not hold polygonal data (vtkPolyData)");
     }
     mesh->DeepCopy(read);
+    // Before anything follows the cells (point merging, the filters).
+    const std::string cellProblem = slConnectivityProblem(mesh);
+    if (!cellProblem.empty())
+    {
+      return this->Fail(cellProblem);
+    }
     if (ext == ".obj" && this->MergeDuplicatePoints)
     {
       slMergeIdenticalPoints(mesh);

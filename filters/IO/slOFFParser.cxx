@@ -1,10 +1,13 @@
 #include "slOFFParser.h"
 
+#include "shadelab/PrintableText.h"
+
 #include <vtkCellArray.h>
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <sstream>
 #include <vector>
@@ -77,7 +80,7 @@ std::string slParseOFF(std::istream& in, vtkPolyData* output)
   }
   else
   {
-    return at(lineNumber, "expected \"OFF\", found \"" + keyword + "\"");
+    return at(lineNumber, "expected \"OFF\", found \"" + shadelab::printableText(keyword) + "\"");
   }
   if (numPoints < 0 || numFaces < 0)
   {
@@ -86,7 +89,9 @@ std::string slParseOFF(std::istream& in, vtkPolyData* output)
 
   vtkNew<vtkPoints> points;
   points->SetDataTypeToFloat();
-  points->SetNumberOfPoints(numPoints);
+  // Grown point by point: the header's count is not trusted before the file
+  // proves it (a huge count would otherwise allocate before failing).
+  points->Allocate(std::min<long>(numPoints, 1 << 20));
   for (long i = 0; i < numPoints; ++i)
   {
     if (!nextLine(in, line, lineNumber))
@@ -100,7 +105,7 @@ std::string slParseOFF(std::istream& in, vtkPolyData* output)
     {
       return at(lineNumber, "expected three vertex coordinates");
     }
-    points->SetPoint(i, x, y, z);
+    points->InsertNextPoint(x, y, z);
   }
 
   vtkNew<vtkCellArray> polys;
@@ -116,6 +121,11 @@ std::string slParseOFF(std::istream& in, vtkPolyData* output)
     if (!(values >> count) || count < 3)
     {
       return at(lineNumber, "a face needs a vertex count of at least 3");
+    }
+    // Each index takes at least two characters of the line.
+    if (count > static_cast<long>(line.size()) / 2)
+    {
+      return at(lineNumber, "face has fewer than " + std::to_string(count) + " vertex indices");
     }
     ids.resize(static_cast<size_t>(count));
     for (long k = 0; k < count; ++k)

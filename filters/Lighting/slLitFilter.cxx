@@ -1,5 +1,6 @@
 #include "slLitFilter.h"
 #include "slAtomicMinimum.h"
+#include "slConnectivityCheck.h"
 
 #include "slFloat3View.h"
 #include "slGlobalBounds.h"
@@ -132,6 +133,12 @@ bool slLitFilter::PrepareLighting(
   if (!input || input->GetNumberOfPoints() == 0)
   {
     this->Fail(output, "input mesh: it is empty (no points)");
+    return false;
+  }
+  const std::string cellProblem = slConnectivityProblem(input);
+  if (!cellProblem.empty())
+  {
+    this->Fail(output, "input mesh: " + cellProblem);
     return false;
   }
   vtkDataArray* normals = input->GetPointData()->GetNormals();

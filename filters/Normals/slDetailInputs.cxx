@@ -1,5 +1,6 @@
 #include "slDetailInputs.h"
 
+#include "slConnectivityCheck.h"
 #include "slErrorCapture.h"
 #include "slImageReader.h"
 #include "slNormalsVTKBridge.h"
@@ -58,6 +59,11 @@ std::string slGetSurfaceFrames(vtkPolyData* input, bool needTangents, slSurfaceF
   if (bad >= 0)
   {
     return "point " + std::to_string(bad) + " has a NaN or infinite coordinate";
+  }
+  const std::string cellProblem = slConnectivityProblem(input);
+  if (!cellProblem.empty())
+  {
+    return cellProblem;
   }
   vtkDataArray* tc = input->GetPointData()->GetTCoords();
   if (!tc || tc->GetNumberOfComponents() < 2)

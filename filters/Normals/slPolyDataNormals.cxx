@@ -1,5 +1,6 @@
 #include "slPolyDataNormals.h"
 
+#include "slConnectivityCheck.h"
 #include "slFaceNormalsCore.h"
 #include "slFeatureSplitCore.h"
 #include "slNormalsVTKBridge.h"
@@ -433,6 +434,11 @@ int slPolyDataNormals::RequestData(vtkInformation*, vtkInformationVector** input
   if (bad >= 0)
   {
     return this->Fail("point " + std::to_string(bad) + " has a NaN or infinite coordinate", output);
+  }
+  const std::string cellProblem = slConnectivityProblem(input);
+  if (!cellProblem.empty())
+  {
+    return this->Fail(cellProblem, output);
   }
   const vtkIdType others = input->GetNumberOfVerts() + input->GetNumberOfLines();
   if (others > 0)

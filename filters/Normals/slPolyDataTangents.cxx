@@ -1,5 +1,6 @@
 #include "slPolyDataTangents.h"
 
+#include "slConnectivityCheck.h"
 #include "slNormalsVTKBridge.h"
 #include "slPolyDataNormals.h"
 #include "slTangentFramesCore.h"
@@ -39,6 +40,11 @@ int slPolyDataTangents::RequestData(vtkInformation*, vtkInformationVector** inpu
   if (bad >= 0)
   {
     return this->Fail("point " + std::to_string(bad) + " has a NaN or infinite coordinate", output);
+  }
+  const std::string cellProblem = slConnectivityProblem(input);
+  if (!cellProblem.empty())
+  {
+    return this->Fail(cellProblem, output);
   }
   vtkDataArray* tcoords = input->GetPointData()->GetTCoords();
   if (!tcoords || tcoords->GetNumberOfComponents() < 2)

@@ -361,3 +361,21 @@ TEST(LightingBadInput, ColourValuesBeyondTheLimitsAndTextureCoordinatesThatAreNo
   }
   EXPECT_GT(tuple3(radiance->GetOutput(), "Diffuse", 3)[0], 0.0);
 }
+
+TEST(LightingBadInput, CellNamingAMissingPoint)
+{
+  // A polydata built in memory whose last triangle names a point beyond the
+  // mesh: every lighting filter checks the cells before following them.
+  vtkSmartPointer<vtkPolyData> mesh = sphere(6);
+  const vtkIdType points = mesh->GetNumberOfPoints();
+  vtkNew<vtkCellArray> polys;
+  polys->DeepCopy(mesh->GetPolys());
+  const vtkIdType bad[3] = { 0, 1, points + 5 };
+  polys->InsertNextCell(3, bad);
+  mesh->SetPolys(polys);
+  const std::string message = "input mesh: polygon " + std::to_string(polys->GetNumberOfCells() - 1) +
+    " names point " + std::to_string(points + 5) + ", but the mesh has " + std::to_string(points) + " points (0 to " +
+    std::to_string(points - 1) + ")";
+  expectError<slRadianceFilter>(mesh, makeScene({ someLight() }, ShadingModel::Phong), message);
+  expectError<slCosineField>(mesh, makeScene({ someLight() }, ShadingModel::Phong), message);
+}

@@ -1,6 +1,7 @@
 #include "shadelab/SceneFile.h"
 
 #include "shadelab/AtomicFile.h"
+#include "shadelab/PrintableText.h"
 #include "shadelab/SceneLimits.h"
 
 #include <nlohmann/json.hpp>
@@ -8,7 +9,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
+#include <memory>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -410,6 +413,7 @@ class DuplicateKeyCheck
 public:
   explicit DuplicateKeyCheck(const SceneReader& reader)
     : Reader(reader)
+    , Frames(std::make_shared<std::vector<Frame>>())
   {
   }
 
@@ -419,11 +423,11 @@ public:
     {
       case json::parse_event_t::object_start:
       case json::parse_event_t::array_start:
-        this->Frames.push_back({ event == json::parse_event_t::array_start, {}, "", 0 });
+        this->Frames->push_back({ event == json::parse_event_t::array_start, {}, "", 0 });
         break;
       case json::parse_event_t::key:
       {
-        Frame& top = this->Frames.back();
+        Frame& top = this->Frames->back();
         top.current = parsed.get<std::string>();
         if (!top.keys.insert(top.current).second)
         {
@@ -433,7 +437,7 @@ public:
       }
       case json::parse_event_t::object_end:
       case json::parse_event_t::array_end:
-        this->Frames.pop_back();
+        this->Frames->pop_back();
         this->elementDone();
         break;
       case json::parse_event_t::value:
@@ -442,6 +446,17 @@ public:
     }
     (void)depth;
     return true;
+  }
+
+  /// The key path of the value being parsed ("lights[0].intensity").
+  std::string path() const
+  {
+    std::string out;
+    for (const Frame& f : *this->Frames)
+    {
+      out = f.isArray ? out + "[" + std::to_string(f.index) + "]" : childPath(out, f.current);
+    }
+    return out;
   }
 
 private:
@@ -453,24 +468,16 @@ private:
     size_t index;
   };
   const SceneReader& Reader;
-  std::vector<Frame> Frames;
+  // Shared by the copies json::parse makes, so the caller still sees where
+  // parsing stopped when a number throws.
+  std::shared_ptr<std::vector<Frame>> Frames;
 
   void elementDone()
   {
-    if (!this->Frames.empty() && this->Frames.back().isArray)
+    if (!this->Frames->empty() && this->Frames->back().isArray)
     {
-      ++this->Frames.back().index;
+      ++this->Frames->back().index;
     }
-  }
-
-  std::string path() const
-  {
-    std::string out;
-    for (const Frame& f : this->Frames)
-    {
-      out = f.isArray ? out + "[" + std::to_string(f.index) + "]" : childPath(out, f.current);
-    }
-    return out;
   }
 };
 
@@ -502,10 +509,20 @@ json vec(const glm::vec3& v)
 Scene parseScene(const std::string& jsonText, const std::string& fileName)
 {
   SceneReader reader(fileName);
+  const DuplicateKeyCheck check(reader);
   json root;
   try
   {
-    root = json::parse(jsonText, DuplicateKeyCheck(reader));
+    root = json::parse(jsonText, check);
+  }
+  catch (const json::out_of_range& e)
+  {
+    // A number beyond the double range (1e400): e.what() reads
+    // "[json.exception.out_of_range.406] number overflow parsing '1e400'".
+    const std::string what = e.what();
+    const size_t quote = what.find('\'');
+    const std::string number = quote == std::string::npos ? std::string() : what.substr(quote + 1, what.size() - quote - 2);
+    reader.fail(check.path(), "the number " + number + " is beyond the range of a double");
   }
   catch (const json::parse_error& e)
   {
@@ -517,13 +534,19 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName)
       ? "byte " + std::to_string(e.byte)
       : what.substr(at, colon - at);
     std::string problem = colon == std::string::npos ? what : what.substr(colon + 2);
-    throw SceneError(fileName + ": " + where + ": malformed JSON: " + problem);
+    // The problem quotes the bytes last read, which may be anything.
+    throw SceneError(fileName + ": " + where + ": malformed JSON: " + printableText(problem, 200));
   }
   return reader.read(root);
 }
 
 Scene readSceneFile(const std::string& path)
 {
+  std::error_code ignored;
+  if (std::filesystem::is_directory(path, ignored))
+  {
+    throw SceneError(path + ": is a directory, not a scene file");
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in)
   {

@@ -1,0 +1,234 @@
+#include "slMeshFileCheck.h"
+
+#include "shadelab/PrintableText.h"
+
+#include <vtksys/SystemTools.hxx>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+
+namespace
+{
+unsigned long long fileSize(const std::string& fileName)
+{
+  std::ifstream in(fileName, std::ios::binary | std::ios::ate);
+  const std::streamoff size = in ? static_cast<std::streamoff>(in.tellg()) : 0;
+  return size > 0 ? static_cast<unsigned long long>(size) : 0;
+}
+} // namespace
+
+std::string slSTLProblem(const std::string& fileName)
+{
+  // The test vtkSTLReader makes to choose between ASCII and binary.
+  if (vtksys::SystemTools::DetectFileType(fileName.c_str()) != vtksys::SystemTools::FileTypeBinary)
+  {
+    return std::string();
+  }
+  // Binary: an 80-byte header, a little-endian triangle count, 50 bytes per
+  // triangle. vtkSTLReader reads to the end of the file whatever the count,
+  // so a truncated file would load part of its triangles without a word.
+  const unsigned long long size = fileSize(fileName);
+  std::ifstream in(fileName, std::ios::binary);
+  unsigned char header[84];
+  if (size < 84 || !in.read(reinterpret_cast<char*>(header), 84))
+  {
+    return "binary STL shorter than its 84-byte header (" + std::to_string(size) + " bytes)";
+  }
+  const unsigned long long count = header[80] | header[81] << 8 | header[82] << 16 |
+    static_cast<unsigned long long>(header[83]) << 24;
+  const unsigned long long needed = 84 + 50 * count;
+  if (size < needed)
+  {
+    return "truncated binary STL: its header announces " + std::to_string(count) + " triangles (" +
+      std::to_string(needed) + " bytes), the file has " + std::to_string(size) + " bytes";
+  }
+  return std::string();
+}
+
+namespace
+{
+/// The value of attribute @p name in the tag text @p tag, or "".
+std::string attribute(const std::string& tag, const std::string& name)
+{
+  const std::string key = " " + name + "=\"";
+  const size_t at = tag.find(key);
+  if (at == std::string::npos)
+  {
+    return std::string();
+  }
+  const size_t begin = at + key.size();
+  const size_t end = tag.find('"', begin);
+  return end == std::string::npos ? std::string() : tag.substr(begin, end - begin);
+}
+
+/// Decodes base64 @p text from @p begin until @p bytes bytes are out (or it ends).
+std::string base64(const std::string& text, size_t begin, size_t bytes)
+{
+  std::string out;
+  unsigned int bits = 0;
+  int count = 0;
+  for (size_t i = begin; i < text.size() && out.size() < bytes; ++i)
+  {
+    const char c = text[i];
+    const char* const alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    const char* p = c ? std::strchr(alphabet, c) : nullptr;
+    if (!p)
+    {
+      if (c == '=' || c == '<')
+      {
+        break;
+      }
+      continue; // whitespace
+    }
+    bits = bits << 6 | static_cast<unsigned int>(p - alphabet);
+    if (++count == 4)
+    {
+      out += static_cast<char>(bits >> 16 & 0xff);
+      out += static_cast<char>(bits >> 8 & 0xff);
+      out += static_cast<char>(bits & 0xff);
+      bits = 0;
+      count = 0;
+    }
+  }
+  return out;
+}
+
+unsigned long long word(const std::string& bytes, size_t at, int size, bool little)
+{
+  unsigned long long v = 0;
+  for (int b = 0; b < size; ++b)
+  {
+    const unsigned char c = static_cast<unsigned char>(bytes[at + static_cast<size_t>(little ? size - 1 - b : b)]);
+    v = v << 8 | c;
+  }
+  return v;
+}
+} // namespace
+
+std::string slXMLCountsProblem(const std::string& fileName)
+{
+  // Every point and cell takes at least one value in the file, and zlib,
+  // the densest compression VTK's XML writer uses, packs at most 1032 bytes
+  // into one: a count beyond that is a header VTK would allocate for.
+  const unsigned long long size = fileSize(fileName);
+  const unsigned long long limit = 1032 * (size + 1);
+  std::ifstream in(fileName, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const size_t appended = bytes.find("<AppendedData");
+  const std::string text = bytes.substr(0, appended);
+  static const char* const names[] = { "NumberOfPoints=\"", "NumberOfVerts=\"", "NumberOfLines=\"",
+    "NumberOfStrips=\"", "NumberOfPolys=\"", "NumberOfTuples=\"", "NumberOfComponents=\"" };
+  for (const char* name : names)
+  {
+    for (size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + 1))
+    {
+      const size_t begin = at + std::strlen(name);
+      unsigned long long value = 0;
+      size_t i = begin;
+      for (; i < text.size() && i < begin + 21 && text[i] >= '0' && text[i] <= '9'; ++i)
+      {
+        value = value * 10 + static_cast<unsigned long long>(text[i] - '0');
+      }
+      if (i - begin > 20 || value > limit)
+      {
+        const std::string attributeName(name, std::strlen(name) - 2);
+        return attributeName + "=" + text.substr(begin, std::min<size_t>(i - begin, 20)) +
+          " is more than a file of " + std::to_string(size) + " bytes can hold";
+      }
+    }
+  }
+
+  // Compressed arrays start with a header: the number of blocks, the block
+  // size, the last block's size, then each block's compressed size. VTK
+  // allocates what the first two say: both must fit the file.
+  const size_t fileTag = text.find("<VTKFile");
+  const std::string vtkFile = fileTag == std::string::npos ? std::string() : text.substr(fileTag, text.find('>', fileTag) - fileTag);
+  if (attribute(vtkFile, "compressor").empty())
+  {
+    return std::string();
+  }
+  const int wordSize = attribute(vtkFile, "header_type") == "UInt64" ? 8 : 4;
+  const bool little = attribute(vtkFile, "byte_order") != "BigEndian";
+  // Appended data starts after "_"; offsets count its bytes, or its
+  // characters when it is base64 (each array's header encoded on its own).
+  size_t appendedStart = std::string::npos;
+  bool appendedBase64 = false;
+  if (appended != std::string::npos)
+  {
+    const size_t close = bytes.find('>', appended);
+    const size_t underscore = bytes.find('_', close == std::string::npos ? bytes.size() : close);
+    const std::string tag = bytes.substr(appended, close == std::string::npos ? 0 : close - appended);
+    appendedStart = underscore == std::string::npos ? std::string::npos : underscore + 1;
+    appendedBase64 = attribute(tag, "encoding") == "base64";
+  }
+  for (size_t at = text.find("<DataArray"); at != std::string::npos; at = text.find("<DataArray", at + 1))
+  {
+    const size_t close = text.find('>', at);
+    if (close == std::string::npos)
+    {
+      break;
+    }
+    const std::string tag = text.substr(at, close - at);
+    const std::string format = attribute(tag, "format");
+    std::string header;
+    if (format == "binary")
+    {
+      header = base64(text, close + 1, static_cast<size_t>(3 * wordSize));
+    }
+    else if (format == "appended")
+    {
+      const unsigned long long offset = std::strtoull(attribute(tag, "offset").c_str(), nullptr, 10);
+      if (appendedStart != std::string::npos && offset <= bytes.size() - appendedStart)
+      {
+        const size_t at = appendedStart + static_cast<size_t>(offset);
+        header = appendedBase64 ? base64(bytes, at, static_cast<size_t>(3 * wordSize))
+                                : bytes.substr(at, static_cast<size_t>(3 * wordSize));
+      }
+    }
+    if (header.size() < static_cast<size_t>(3 * wordSize))
+    {
+      continue; // VTK finds the data missing and says so
+    }
+    const unsigned long long blocks = word(header, 0, wordSize, little);
+    const unsigned long long blockSize = word(header, static_cast<size_t>(wordSize), wordSize, little);
+    if (blocks > size / static_cast<unsigned long long>(wordSize) || blockSize > limit)
+    {
+      return "DataArray \"" + shadelab::printableText(attribute(tag, "Name")) + "\": its compression header declares " + std::to_string(blocks) +
+        " blocks of " + std::to_string(blockSize) + " bytes, more than a file of " + std::to_string(size) +
+        " bytes can hold";
+    }
+  }
+  return std::string();
+}
+
+std::string slMeshFileProblem(const std::string& fileName, const std::string& ext)
+{
+  if (ext == ".obj")
+  {
+    return slOBJProblem(fileName);
+  }
+  if (ext == ".ply")
+  {
+    return slPLYProblem(fileName);
+  }
+  if (ext == ".stl")
+  {
+    return slSTLProblem(fileName);
+  }
+  if (ext == ".gltf" || ext == ".glb")
+  {
+    return slGLTFProblem(fileName, ext == ".glb");
+  }
+  if (ext == ".vtp")
+  {
+    return slXMLCountsProblem(fileName);
+  }
+  if (ext == ".vtk")
+  {
+    return slLegacyVTKProblem(fileName);
+  }
+  return std::string();
+}

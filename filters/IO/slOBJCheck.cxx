@@ -1,0 +1,196 @@
+// OBJ: every index of an f, l or p line names an existing v, vt or vn, and
+// every v, vt and vn value is a finite number.
+#include "slMeshFileCheck.h"
+
+#include "shadelab/PrintableText.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+namespace
+{
+struct Counts
+{
+  long long v = 0, vt = 0, vn = 0;
+};
+
+/// Reads one logical line: a trailing backslash continues it, as in vtkOBJReader.
+bool nextLine(std::istream& in, std::string& line, long& lineNumber)
+{
+  line.clear();
+  std::string part;
+  bool any = false;
+  while (std::getline(in, part))
+  {
+    ++lineNumber;
+    any = true;
+    if (!part.empty() && part.back() == '\r')
+    {
+      part.pop_back();
+    }
+    if (!part.empty() && part.back() == '\\')
+    {
+      part.back() = ' ';
+      line += part;
+      continue;
+    }
+    line += part;
+    return true;
+  }
+  return any;
+}
+
+std::string at(long lineNumber, const std::string& problem)
+{
+  return "line " + std::to_string(lineNumber) + ": " + problem;
+}
+
+/// The problem with one value token of a v, vt or vn line, or "".
+std::string numberProblem(const std::string& token)
+{
+  errno = 0;
+  char* end = nullptr;
+  const double value = std::strtod(token.c_str(), &end);
+  const bool decimal = token.find_first_of("xXpP") == std::string::npos;
+  if (end == token.c_str() || *end != '\0' || !decimal)
+  {
+    return "\"" + shadelab::printableText(token) + "\" is not a number";
+  }
+  if (!std::isfinite(value))
+  {
+    return "coordinate \"" + shadelab::printableText(token) + "\" is not a finite number";
+  }
+  return std::string();
+}
+
+/// Resolves one index of kind @p what (1-based, or negative: relative to the
+/// @p before values defined so far) against the @p total in the file.
+std::string indexProblem(const std::string& text, const char* what, long long before, long long total)
+{
+  errno = 0;
+  char* end = nullptr;
+  const long long index = std::strtoll(text.c_str(), &end, 10);
+  if (end == text.c_str() || *end != '\0')
+  {
+    return std::string(what) + " index \"" + shadelab::printableText(text) + "\" is not an integer";
+  }
+  if (index == 0)
+  {
+    return std::string(what) + " index 0 is invalid (OBJ indices start at 1)";
+  }
+  if (index < 0 && (errno == ERANGE || -index > before))
+  {
+    return std::string(what) + " index " + shadelab::printableText(text) + " reaches before the first " + what +
+      " (" + std::to_string(before) + " precede the line)";
+  }
+  if (index > 0 && (errno == ERANGE || index > total))
+  {
+    return std::string(what) + " index " + shadelab::printableText(text) + " is out of range [1, " +
+      std::to_string(total) + "]";
+  }
+  return std::string();
+}
+} // namespace
+
+std::string slOBJProblem(const std::string& fileName)
+{
+  std::ifstream in(fileName, std::ios::binary);
+  // Pass 1: how many of each; indices may name values defined later.
+  Counts total;
+  std::string line, keyword;
+  long lineNumber = 0;
+  while (nextLine(in, line, lineNumber))
+  {
+    std::istringstream words(line);
+    if (words >> keyword)
+    {
+      total.v += keyword == "v";
+      total.vt += keyword == "vt";
+      total.vn += keyword == "vn";
+    }
+  }
+  in.clear();
+  in.seekg(0);
+  Counts seen;
+  lineNumber = 0;
+  std::string token;
+  while (nextLine(in, line, lineNumber))
+  {
+    std::istringstream words(line);
+    if (!(words >> keyword))
+    {
+      continue;
+    }
+    if (keyword == "v" || keyword == "vt" || keyword == "vn")
+    {
+      const int needed = keyword == "vt" ? 1 : 3;
+      int count = 0;
+      while (words >> token)
+      {
+        const std::string problem = numberProblem(token);
+        if (!problem.empty())
+        {
+          return at(lineNumber, keyword + " " + problem);
+        }
+        ++count;
+      }
+      if (count < needed)
+      {
+        return at(lineNumber, keyword + " needs at least " + std::to_string(needed) + " values, it has " +
+            std::to_string(count));
+      }
+      (keyword == "v" ? seen.v : keyword == "vt" ? seen.vt : seen.vn) += 1;
+    }
+    else if (keyword == "f" || keyword == "l" || keyword == "p")
+    {
+      int corners = 0;
+      while (words >> token)
+      {
+        ++corners;
+        // v, v/vt, v//vn or v/vt/vn.
+        std::vector<std::string> parts(1);
+        for (char c : token)
+        {
+          if (c == '/')
+          {
+            parts.emplace_back();
+          }
+          else
+          {
+            parts.back() += c;
+          }
+        }
+        if (parts.size() > 3)
+        {
+          return at(lineNumber, "\"" + shadelab::printableText(token) + "\" is not an index triple");
+        }
+        static const char* const kinds[3] = { "vertex", "texture coordinate", "normal" };
+        const long long before[3] = { seen.v, seen.vt, seen.vn };
+        const long long all[3] = { total.v, total.vt, total.vn };
+        for (size_t k = 0; k < parts.size(); ++k)
+        {
+          if (k > 0 && parts[k].empty())
+          {
+            continue; // v//vn
+          }
+          const std::string problem = indexProblem(parts[k], kinds[k], before[k], all[k]);
+          if (!problem.empty())
+          {
+            return at(lineNumber, problem);
+          }
+        }
+      }
+      const int needed = keyword == "f" ? 3 : keyword == "l" ? 2 : 1;
+      if (corners < needed)
+      {
+        return at(lineNumber, keyword + " needs at least " + std::to_string(needed) + " vertices, it has " +
+            std::to_string(corners));
+      }
+    }
+  }
+  return std::string();
+}

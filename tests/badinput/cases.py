@@ -1,0 +1,244 @@
+"""The bad-input cases: (name, arguments, input files, exit status, stderr).
+
+Arguments and messages use paths relative to the case's folder, where the
+input files are written and every out.* argument already exists with other
+content. Each case expects exactly one line on stderr."""
+from inputs import (QUAD_OBJ, TETRA_OFF, THREE_LIGHTS, glb, gltf, legacy_vtk, obj, ply_ascii, ply_binary,
+                    ply_header, png, stl_binary, vtp, vtp_appended_base64_header, vtp_compressed_header)
+
+
+def mesh_case(name, file_name, data, message, status=1):
+    """shadelab normals on one mesh file."""
+    return (name, ["normals", file_name, "-o", "out.vtp"], {file_name: data}, status,
+            "shadelab normals: " + file_name + ": " + message + "\n" if message is not None else None)
+
+
+def scene_case(name, data, message, status=1):
+    """shadelab cosine with a bad scene (the mesh is fine)."""
+    return (name, ["cosine", "m.off", "--scene", "s.json", "-o", "out.vtp"], {"m.off": TETRA_OFF, "s.json": data},
+            status, "shadelab cosine: s.json: " + message + "\n" if message is not None else None)
+
+
+def image_case(name, file_name, data, message, status=1):
+    """shadelab light with a bad diffuse texture."""
+    return (name, ["light", "q.obj", "--diffuse-texture", file_name, "-o", "out.vtp"],
+            {"q.obj": QUAD_OBJ, file_name: data}, status, message)
+
+
+def cli_case(name, args, message, status=2, files=None):
+    """A bad command line on good inputs."""
+    inputs = {"m.off": TETRA_OFF, "three.json": THREE_LIGHTS}
+    inputs.update(files or {})
+    return (name, args, inputs, status, message)
+
+
+CASES = [
+    # OBJ
+    mesh_case("obj index beyond vertices", "a.obj", obj(b"f 1 2 9\n"), 'line 4: vertex index 9 is out of range [1, 3]'),
+    mesh_case("obj index zero", "a.obj", obj(b"f 0 1 2\n"), 'line 4: vertex index 0 is invalid (OBJ indices start at 1)'),
+    mesh_case("obj negative index before first", "a.obj", obj(b"f -1 -2 -4\n"), 'line 4: vertex index -4 reaches before the first vertex (3 precede the line)'),
+    mesh_case("obj huge index", "a.obj", obj(b"f 1 2 99999999999999999999\n"), 'line 4: vertex index 99999999999999999999 is out of range [1, 3]'),
+    mesh_case("obj int overflow index", "a.obj", obj(b"f 1 2 4294967297\n"), 'line 4: vertex index 4294967297 is out of range [1, 3]'),
+    mesh_case("obj nan coordinate", "a.obj", b"v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", 'line 1: v coordinate "nan" is not a finite number'),
+    mesh_case("obj inf coordinate", "a.obj", b"v 0 0 0\nv inf 0 0\nv 0 1 0\nf 1 2 3\n", 'line 2: v coordinate "inf" is not a finite number'),
+    mesh_case("obj overflowing coordinate", "a.obj", b"v 0 0 0\nv 1e999 0 0\nv 0 1 0\nf 1 2 3\n", 'line 2: v coordinate "1e999" is not a finite number'),
+    mesh_case("obj two coordinates", "a.obj", b"v 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", 'line 1: v needs at least 3 values, it has 2'),
+    mesh_case("obj word as coordinate", "a.obj", b"v 0 zero 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", 'line 1: v "zero" is not a number'),
+    mesh_case("obj escape bytes as coordinate", "a.obj", b"v 0 \x1b[31mred 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", 'line 1: v "\\x1B[31mred" is not a number'),
+    mesh_case("obj vt index beyond", "a.obj", obj(b"f 1/1 2/2 3/3\n", b"vt 0 0\nvt 1 0\n"), 'line 6: texture coordinate index 3 is out of range [1, 2]'),
+    mesh_case("obj vn index beyond", "a.obj", obj(b"f 1//1 2//2 3//1\n", b"vn 0 0 1\n"), 'line 5: normal index 2 is out of range [1, 1]'),
+    mesh_case("obj nan normal", "a.obj", obj(b"f 1//1 2//1 3//1\n", b"vn nan 0 1\n"), 'line 4: vn coordinate "nan" is not a finite number'),
+    mesh_case("obj index not a number", "a.obj", obj(b"f 1 2 three\n"), 'line 4: vertex index "three" is not an integer'),
+    mesh_case("obj four-part index", "a.obj", obj(b"f 1/1/1/1 2 3\n"), 'line 4: "1/1/1/1" is not an index triple'),
+    mesh_case("obj line index beyond", "a.obj", obj(b"l 1 5\n"), 'line 4: vertex index 5 is out of range [1, 3]'),
+    mesh_case("obj point index beyond", "a.obj", obj(b"p 4\n"), 'line 4: vertex index 4 is out of range [1, 3]'),
+    mesh_case("obj face of two corners", "a.obj", obj(b"f 1 2\n"), 'line 4: f needs at least 3 vertices, it has 2'),
+    mesh_case("obj no faces", "a.obj", obj(b""), 'no polygons among its 0 cells'),
+    mesh_case("obj empty", "a.obj", b"", 'no points: empty, truncated or not a obj file'),
+    mesh_case("obj binary garbage", "a.obj", bytes(range(256)), 'no points: empty, truncated or not a obj file'),
+    # PLY
+    mesh_case("ply truncated ascii", "a.ply", ply_ascii(b"")[:-6], 'line 12: the file ends before element "vertex" row 3 of 3'),
+    mesh_case("ply face list beyond its values", "a.ply", ply_ascii(b"5 0 1 2\n"), 'line 13 (element "face" row 1 of 1): fewer values than "vertex_indices" needs'),
+    mesh_case("ply face index beyond", "a.ply", ply_ascii(b"3 0 1 7\n"), 'line 13 (element "face" row 1 of 1): vertex index 7 is out of range [0, 3)'),
+    mesh_case("ply negative face index", "a.ply", ply_ascii(b"3 0 -1 2\n"), 'line 13 (element "face" row 1 of 1): vertex index -1 is out of range [0, 3)'),
+    mesh_case("ply missing face row", "a.ply", ply_ascii(b"3 0 1 2\n", faces=2), 'line 14: the file ends before element "face" row 2 of 2'),
+    mesh_case("ply word as coordinate", "a.ply", ply_header(b"ascii", 3, 0) + b"0 0 0\n1 x 0\n0 1 0\n", 'line 11 (element "vertex" row 2 of 3): "x" is not a number'),
+    mesh_case("ply nan coordinate", "a.ply", ply_ascii(b"3 0 1 2\n").replace(b"1 0 0\n", b"nan 0 0\n"), 'point 1 has a NaN or infinite coordinate'),
+    mesh_case("ply huge vertex count", "a.ply", ply_ascii(b"3 0 1 2\n", vertices=10**12), 'line 14: the file ends before element "vertex" row 5 of 1000000000000'),
+    mesh_case("ply huge binary face count", "a.ply", ply_binary([0, 1, 2], faces=2 * 10**9), 'the file ends within element "face" row 2 of 2000000000'),
+    mesh_case("ply truncated binary", "a.ply", ply_binary([0, 1, 2], cut=3), 'the file ends within element "face" row 1 of 1'),
+    mesh_case("ply binary face index beyond", "a.ply", ply_binary([0, 1, 3]), 'element "face" row 1 of 1: vertex index 3 is out of range [0, 3)'),
+    mesh_case("ply binary negative index", "a.ply", ply_binary([0, -5, 2]), 'element "face" row 1 of 1: vertex index -5 is out of range [0, 3)'),
+    mesh_case("ply no end_header", "a.ply", b"ply\nformat ascii 1.0\nelement vertex 0\n", 'line 3: the header has no end_header'),
+    mesh_case("ply unknown format", "a.ply", b"ply\nformat nonsense 1.0\nend_header\n", 'line 2: unknown format "nonsense"'),
+    mesh_case("ply unknown type", "a.ply", b"ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n0\n",
+              'line 4: unknown property type "quad"'),
+    mesh_case("ply float list count", "a.ply",
+              ply_header(b"ascii", 3, 1, b"property list float int vertex_indices") + b"0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+              'line 8: list count type "float" is not an integer type'),
+    mesh_case("ply bad magic with escapes", "a.ply", b"\x1b]0;owned\x07\nformat ascii 1.0\n", 'line 1: expected "ply", found "\\x1B]0;owned\\x07"'),
+    mesh_case("ply negative element count", "a.ply", b"ply\nformat ascii 1.0\nelement vertex -3\nend_header\n", 'line 3: element needs a name and a count, found "element vertex -3"'),
+    mesh_case("ply empty", "a.ply", b"", 'line 1: expected "ply", found ""'),
+    # found by fuzzing: a NUL byte cut an ASCII row short for vtkPLY, which then parsed a null word
+    mesh_case("ply nul byte in ascii row", "a.ply", ply_ascii(b"3 0 1 2\n").replace(b"1 0 0\n", b"1 \x000 0\n"),
+              'line 11 (element "vertex" row 2 of 3): a NUL byte'),
+    mesh_case("ply vertex without y", "a.ply",
+              ply_ascii(b"3 0 1 2\n").replace(b"property float y\n", b"property float x\n"),
+              'the header needs an element "vertex" with properties x, y, z and an element "face"'),
+    # found by fuzzing: vtkPLYReader crashed in find_element on a file without a vertex element
+    mesh_case("ply without vertex element", "a.ply",
+              b"ply\nformat ascii 1.0\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n3 0 1 2\n",
+              'the header needs an element "vertex" with properties x, y, z and an element "face"'),
+    # found by fuzzing: control bytes in a header line corrupted vtkPLY's element table
+    mesh_case("ply control bytes in header", "a.ply", b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\x01\x00v\n",
+              'line 4: a control byte in the header: "property float x\\x01\\x00v"'),
+    mesh_case("ply property with extra words", "a.ply", b"ply\nformat ascii 1.0\nelement vertex 3 extra\n",
+              'line 3: expected 3 words, found "element vertex 3 extra"'),
+    # found by fuzzing: vtkPLYReader freed an uninitialised pointer
+    mesh_case("ply face without index list", "a.ply",
+              ply_header(b"ascii", 3, 1, b"property list uchar int corners") + b"0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+              'element "face" has no list property "vertex_indices" (or "vertex_index")'),
+    # STL
+    mesh_case("stl truncated binary", "a.stl", stl_binary(32, cut=21 * 50 + 7), 'truncated binary STL: its header announces 32 triangles (1684 bytes), the file has 627 bytes'),
+    mesh_case("stl header only with count", "a.stl", stl_binary(0, declared=5), 'truncated binary STL: its header announces 5 triangles (334 bytes), the file has 84 bytes'),
+    mesh_case("stl shorter than header", "a.stl", b"\x80\x81\x82" * 10, 'binary STL shorter than its 84-byte header (30 bytes)'),
+    mesh_case("stl ascii garbage", "a.stl", b"solid x\n  facet normal 0 0 1\n    outer loop\n      vertex 0 0\n", 'no points: empty, truncated or not a stl file'),
+    mesh_case("stl empty", "a.stl", b"", 'no points: empty, truncated or not a stl file'),
+    # VTP
+    mesh_case("vtp index beyond points", "a.vtp", vtp(b"0 1 7"), 'polygon 0 names point 7, but the mesh has 3 points (0 to 2)'),
+    mesh_case("vtp negative index", "a.vtp", vtp(b"0 -1 2"), 'polygon 0 names point -1, but the mesh has 3 points (0 to 2)'),
+    mesh_case("vtp offsets beyond ids", "a.vtp", vtp(b"0 1 2", offsets=b"5"), 'no points: empty, truncated or not a vtp file'),
+    mesh_case("vtp huge point count", "a.vtp", vtp(b"0 1 2", points=10**12), 'NumberOfPoints=1000000000000 is more than a file of 516 bytes can hold'),
+    mesh_case("vtp malformed xml", "a.vtp", b"<VTKFile type=\"PolyData\"><PolyData>", 'no points: empty, truncated or not a vtp file'),
+    mesh_case("vtp empty", "a.vtp", b"", 'no points: empty, truncated or not a vtp file'),
+    # found by fuzzing: a compression header VTK allocated for (8.6 GB)
+    mesh_case("vtp compressed header block count", "a.vtp", vtp_compressed_header(2000000000),
+              'DataArray "Points": its compression header declares 2000000000 blocks of 32768 bytes, more than a file '
+              'of 412 bytes can hold'),
+    mesh_case("vtp appended base64 header block count", "a.vtp", vtp_appended_base64_header(1429727086),
+              'DataArray "Points": its compression header declares 1429727086 blocks of 32768 bytes, more than a '
+              'file of 465 bytes can hold'),
+    # legacy VTK
+    mesh_case("vtk index beyond points", "a.vtk", legacy_vtk(b"POLYGONS 1 4\n3 0 1 7\n"), 'polygon 0 names point 7, but the mesh has 3 points (0 to 2)'),
+    mesh_case("vtk negative index", "a.vtk", legacy_vtk(b"POLYGONS 1 4\n3 0 -2 1\n"), 'polygon 0 names point -2, but the mesh has 3 points (0 to 2)'),
+    mesh_case("vtk not polydata", "a.vtk", legacy_vtk(b"", dataset=b"UNSTRUCTURED_GRID"), 'no points: empty, truncated or not a vtk file'),
+    mesh_case("vtk truncated polygons", "a.vtk", legacy_vtk(b"POLYGONS 2 8\n3 0 1 2\n"), 'line 9: the file ends where value 5 of 8 of POLYGONS should be'),
+    mesh_case("vtk garbage", "a.vtk", b"\x00\x01binary junk\xff", 'the file ends within its three header lines'),
+    # found by fuzzing: NUL bytes in the version line crashed vtkDataReader
+    mesh_case("vtk nul in version line", "a.vtk", b"# vtk DataFile Version\0\0\0 5.1\nt\nASCII\nDATASET POLYDATA\n",
+              "line 1: a header line longer than 255 bytes or holding a NUL byte"),
+    mesh_case("vtk no version", "a.vtk", b"# vtk DataFile\nt\nASCII\nDATASET POLYDATA\n",
+              'line 1: expected "# vtk DataFile Version N.N", found "# vtk DataFile"'),
+    # found by fuzzing: a version VTK cannot parse made it read 5.1 cell lists as 3.0 ones
+    mesh_case("vtk unparsable version", "a.vtk",
+              b"# vtk DataFile Version 5+.1\nt\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n0 0 0 1 0 0 0 1 0\n"
+              b"POLYGONS 2 3\nOFFSETS vtktypeint64\n0 3\nCONNECTIVITY vtktypeint64\n0 1 2\n",
+              'line 1: expected "# vtk DataFile Version N.N", found "# vtk DataFile Version 5+.1"'),
+    mesh_case("vtk offsets in a version 4 file", "a.vtk",
+              b"# vtk DataFile Version 4.2\nt\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n0 0 0 1 0 0 0 1 0\n"
+              b"POLYGONS 2 3\nOFFSETS vtktypeint64\n0 3\nCONNECTIVITY vtktypeint64\n0 1 2\n",
+              'line 8: POLYGONS: "OFFSETS" is not a number'),
+    # found by fuzzing: VTK hung reading past a METADATA block of a binary file; its keys must be complete
+    mesh_case("vtk metadata short of its keys", "a.vtk",
+              b"# vtk DataFile Version 5.1\nt\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n0 0 0 1 0 0 0 1 0\n"
+              b"METADATA\nINFORMATION 2\nNAME L2_NORM_RANGE LOCATION vtkDataArray\nDATA 2 0.5 0.5\n\n",
+              "line 11: METADATA announces 2 information keys and holds 1"),
+    # OFF
+    mesh_case("off index beyond", "a.off", TETRA_OFF.replace(b"3 1 2 3", b"3 1 2 4"), 'line 10: vertex index 4 is out of range [0, 4)'),
+    mesh_case("off huge vertex count", "a.off", b"OFF\n1000000000000 1 0\n0 0 0\n", 'line 3: file ends after 1 of 1000000000000 vertices'),
+    mesh_case("off huge face size", "a.off", b"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3000000000 0 1 2\n", 'line 6: face has fewer than 3000000000 vertex indices'),
+    mesh_case("off escape bytes as keyword", "a.off", b"\x1b[2J\x1b[31mOFF\n", 'line 1: expected "OFF", found "\\x1B[2J\\x1B[31mOFF"'),
+    mesh_case("off nan", "a.off", TETRA_OFF.replace(b"1 0 0\n", b"nan 0 0\n"), 'point 1 has a NaN or infinite coordinate'),
+    mesh_case("off truncated", "a.off", TETRA_OFF[:-8], 'line 9: file ends after 3 of 4 faces'),
+    # glTF and GLB
+    mesh_case("gltf missing buffer file", "a.gltf", gltf(uri="missing.bin"), 'buffers[0].uri: no file "missing.bin"'),
+    mesh_case("gltf accessor beyond buffer", "a.gltf", gltf(count=300), 'accessors[0]: 300 elements of 12 bytes from byte 0 reach beyond its bufferView of 36 bytes'),
+    mesh_case("gltf index beyond positions", "a.gltf", gltf(index_values=(0, 1, 7)), 'polygon 0 names point 7, but the mesh has 3 points (0 to 2)'),
+    mesh_case("gltf bufferView beyond buffer", "a.gltf",
+              gltf(edit=lambda d: d["bufferViews"][1].update(byteLength=60)), 'bufferViews[1] (bytes 36 + 60) reaches beyond its buffer of 44 bytes'),
+    mesh_case("gltf node cycle", "a.gltf",
+              gltf(edit=lambda d: d.update(nodes=[{"mesh": 0, "children": [1]}, {"children": [0]}])), 'nodes[1].children: node 0 is its own ancestor'),
+    mesh_case("gltf mesh reference beyond", "a.gltf", gltf(edit=lambda d: d["nodes"][0].update(mesh=4)), 'nodes[0].mesh = 4 names no mesh (there are 1)'),
+    mesh_case("gltf attribute accessor beyond", "a.gltf",
+              gltf(edit=lambda d: d["meshes"][0]["primitives"][0]["attributes"].update(POSITION=9)), 'meshes[0].primitives[0].attributes.POSITION = 9 names no accessor (there are 2)'),
+    mesh_case("gltf short data uri", "a.gltf", gltf(edit=lambda d: d["buffers"][0].update(byteLength=400)), 'buffers[0] holds 44 bytes, its byteLength is 400'),
+    mesh_case("gltf malformed json", "a.gltf", b"{\"asset\": {\"version\": \"2.0\"", "malformed glTF JSON: parse error at line 1, column 28: syntax error while parsing object - unexpected end of input; expected '}'"),
+    mesh_case("gltf unknown component type", "a.gltf",
+              gltf(edit=lambda d: d["accessors"][0].update(componentType=5130)), 'accessors[0] has an unknown componentType or type'),
+    # found by fuzzing: vtkGLTFReader followed an accessor without a view, or of the wrong type
+    mesh_case("gltf accessor without bufferView", "a.gltf", gltf(edit=lambda d: d["accessors"][1].pop("bufferView")),
+              "accessors[1] has no bufferView (zero-filled accessors are not read)"),
+    mesh_case("gltf bufferView without byteLength", "a.gltf",
+              gltf(edit=lambda d: d["bufferViews"][0].pop("byteLength")), "bufferViews[0] has no byteLength"),
+    mesh_case("glb indices of VEC3 floats", "a.glb",
+              glb(edit=lambda d: d["meshes"][0]["primitives"][0].update(indices=0)),
+              "meshes[0].primitives[0].indices: accessor 0 is not of type SCALAR with a component type VTK reads there"),
+    mesh_case("gltf position of scalars", "a.gltf",
+              gltf(edit=lambda d: d["meshes"][0]["primitives"][0]["attributes"].update(POSITION=1)),
+              "meshes[0].primitives[0].attributes.POSITION: accessor 1 is not of type VEC3 with a component type VTK "
+              "reads there"),
+    mesh_case("glb primitive without positions", "a.glb",
+              glb(edit=lambda d: d["meshes"][0]["primitives"][0].pop("attributes")),
+              "meshes[0].primitives[0] has no attributes.POSITION"),
+    mesh_case("gltf accessor without count", "a.gltf", gltf(edit=lambda d: d["accessors"][0].pop("count")),
+              "accessors[0] has no count (at least 1)"),
+    mesh_case("glb truncated", "a.glb", glb(cut=10), 'truncated binary glTF: its header announces 568 bytes, the file has 558'),
+    mesh_case("glb bad magic", "a.glb", b"gLTF" + bytes(30), 'not a binary glTF file (no "glTF" header)'),
+    mesh_case("glb accessor beyond buffer", "a.glb", glb(count=300), 'accessors[0]: 300 elements of 12 bytes from byte 0 reach beyond its bufferView of 36 bytes'),
+    mesh_case("glb version 1", "a.glb", b"glTF\x01\0\0\0" + bytes(20), 'binary glTF version 1 (only 2 is read)'),
+    # any mesh
+    mesh_case("mesh is a directory", "d.obj", None, 'is a directory, not a mesh file'),
+    mesh_case("mesh missing", "nothere.obj", "skip", 'cannot open file'),
+    mesh_case("mesh unsupported extension", "a.xyz", b"1 2 3\n", 'unsupported mesh format ".xyz" (supported: .obj .ply .stl .vtp .vtk .off .gltf .glb)'),
+    # scenes
+    scene_case("scene number beyond double", b'{"material": {"shininess": 1e400}}', 'material.shininess: the number 1e400 is beyond the range of a double'),
+    scene_case("scene number beyond double in array", b'{"background": [0.1, 0.2, -1e999]}', 'background[2]: the number -1e999 is beyond the range of a double'),
+    scene_case("scene malformed json", b'{"imageSize": [800, 600]', "line 1, column 25: malformed JSON: syntax error while parsing object - unexpected end of input; expected '}'"),
+    scene_case("scene escape bytes", b'{"imageSize": \x1b[31m}', 'line 1, column 15: malformed JSON: syntax error while parsing value - invalid literal; last read: \'"imageSize": <U+001B>\''),
+    scene_case("scene empty", b"", "line 1, column 1: malformed JSON: syntax error while parsing value - unexpected end of input; expected '[', '{', or a literal"),
+    scene_case("scene nan literal", b'{"background": [NaN, 0, 0]}', 'line 1, column 17: malformed JSON: syntax error while parsing value - invalid literal; last read: \'"background": [N\''),
+    scene_case("scene wrong type", b'{"imageSize": "big"}', 'imageSize: expected [width, height]'),
+    scene_case("scene unknown key", b'{"colour": [1, 0, 0]}', 'colour: unknown key (allowed here: "$schema", "background", "camera", "description", "imageSize", "lights", "material", "shading")'),
+    scene_case("scene duplicate key", b'{"background": [0, 0, 0], "background": [1, 1, 1]}', 'background: duplicate key'),
+    scene_case("scene shininess out of range", b'{"material": {"shininess": -1}}', 'material.shininess: -1 is out of range [0, 100000]'),
+    scene_case("scene spot cutoff out of range", b'{"lights": [{"type": "spot", "cutoff": 95}]}', 'lights[0].cutoff: 95 is out of range (0, 90]'),
+    scene_case("scene unknown light type", b'{"lights": [{"type": "laser"}]}', 'lights[0].type: "laser" is not one of "directional", "point", "spot", "ambient"'),
+    scene_case("scene lights not an array", b'{"lights": {"type": "point"}}', 'lights: expected an array of lights, got an object'),
+    scene_case("scene utf16", '{"imageSize": [64, 64]}'.encode("utf-16"), "line 1, column 1: malformed JSON: syntax error while parsing value - invalid literal; last read: '\\xFF'"),
+    ("scene is a directory", ["cosine", "m.off", "--scene", "s.json", "-o", "out.vtp"], {"m.off": TETRA_OFF,
+     "s.json": None}, 1, 'shadelab cosine: s.json: is a directory, not a scene file\n'),
+    ("scene missing", ["cosine", "m.off", "--scene", "nothere.json", "-o", "out.vtp"], {"m.off": TETRA_OFF}, 1, 'shadelab cosine: nothere.json: cannot open scene file\n'),
+    # images
+    image_case("png truncated", "t.png", png(cut=20), 'shadelab light: t.png: cannot read image: Read error: hit end of file PNG read error: IDAT: Read error: hit end of file PNG library error\n'),
+    image_case("png bad crc", "t.png", png(crc_ok=False), 'shadelab light: t.png: cannot read image: PNG read error: IDAT: CRC error PNG library error\n'),
+    image_case("png huge header", "t.png", png(width=100000, height=100000), 'shadelab light: t.png: cannot read image: its header declares 100000x100000 pixels of 3 channels, more than ShadeLab reads (2^28 values)\n'),
+    image_case("png garbage", "t.png", b"\x89PNG\r\n\x1a\n\x1b[31m garbage", 'shadelab light: t.png: cannot read image: Invalid image file "t.png": PNG read error: m[20]ga: invalid chunk type\n'),
+    image_case("png empty", "t.png", b"", 'shadelab light: t.png: cannot read image: Invalid image file "t.png": Not a PNG file\n'),
+    image_case("jpg truncated", "t.jpg", "seed:fuzz_image_jpg/gradient.jpg:300", 'shadelab light: t.jpg: cannot read image: Invalid image file "t.jpg": JPEG error: Premature end of JPEG file ("t.jpg") Bad JPEG header for "t.jpg"\n'),
+    image_case("jpg garbage", "t.jpg", b"\xff\xd8\xff\xe0 not really", 'shadelab light: t.jpg: cannot read image: Invalid image file "t.jpg": JPEG error: Premature end of JPEG file ("t.jpg") Bad JPEG header for "t.jpg"\n'),
+    image_case("hdr garbage", "t.hdr", b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 99999 +X 99999\n", 'shadelab light: t.hdr: cannot read image: its header declares 99999x99999 pixels of 3 channels, more than ShadeLab reads (2^28 values)\n'),
+    image_case("image missing", "nothere.png", "skip", 'shadelab light: nothere.png: cannot read image: Invalid image file "nothere.png": Could not open file "nothere.png"\n'),
+    image_case("image is a directory", "d.png", None, 'shadelab light: d.png: cannot read image: it is a directory\n'),
+    # command lines
+    cli_case("size overflow", ["render", "m.off", "--size", "4294967360x48", "-o", "out.png"], 'shadelab render: --size: "4294967360x48" is not WxH with 16 <= W, H <= 8192\n'),
+    cli_case("size too small", ["render", "m.off", "--size", "8x8", "-o", "out.png"], 'shadelab render: --size: "8x8" is not WxH with 16 <= W, H <= 8192\n'),
+    cli_case("size not numbers", ["render", "m.off", "--size", "wide", "-o", "out.png"], 'shadelab render: --size: "wide" is not WxH with 16 <= W, H <= 8192\n'),
+    cli_case("size negative", ["render", "m.off", "--size", "-64x48", "-o", "out.png"], 'shadelab render: --size: "-64x48" is not WxH with 16 <= W, H <= 8192\n'),
+    cli_case("render light beyond scene", ["render", "m.off", "--scene", "three.json", "--component", "cos",
+                                           "--light", "5", "-o", "out.png"], 'shadelab render: option --light: light 5 is out of range: the scene has 3 lights\n', status=1),
+    cli_case("render light fraction", ["render", "m.off", "--component", "cos", "--light", "0.5", "-o", "out.png"],
+             'shadelab render: option --light: "0.5" is not a whole number\n'),
+    cli_case("cosine light fraction", ["cosine", "m.off", "--light", "0.5", "-o", "out.vtp"], 'shadelab cosine: option --light: "0.5" is not a whole number\n'),
+    cli_case("cosine light beyond scene", ["cosine", "m.off", "--scene", "three.json", "--light", "5",
+                                           "-o", "out.vtp"], 'shadelab cosine: LightIndex 5 is out of range: the scene has 3 lights\n', status=1),
+    cli_case("lobe light beyond scene", ["lobe", "m.off", "--scene", "three.json", "--light", "5",
+                                         "-o", "out.vtp"], 'shadelab lobe: LightIndex 5 is out of range: the scene has 3 lights\n', status=1),
+    cli_case("render unknown component", ["render", "m.off", "--component", "glow", "-o", "out.png"], 'shadelab render: --component: "glow" is not one of total, ambient, diffuse, specular, emission, cos\n'),
+    cli_case("unknown option", ["normals", "m.off", "--shiny", "-o", "out.vtp"], 'shadelab normals: unknown option --shiny (see --help)\n'),
+    cli_case("missing output", ["normals", "m.off"], 'shadelab normals: missing -o/--output FILE\n'),
+    cli_case("two meshes", ["normals", "m.off", "m.off", "-o", "out.vtp"], 'shadelab normals: expected one MESH argument, got 2\n'),
+    cli_case("option without value", ["normals", "m.off", "-o"], 'shadelab normals: option -o needs a value (FILE)\n'),
+    cli_case("unknown model", ["light", "m.off", "--model", "toon", "-o", "out.vtp"], 'shadelab light: --model: "toon" is not a lighting model (lambert, phong, blinn-phong, lambert-normalized, phong-normalized, blinn-phong-normalized)\n'),
+    cli_case("unknown frequency", ["render", "m.off", "--frequency", "sometimes", "-o", "out.png"], 'shadelab render: --frequency: "sometimes" is not one of flat, gouraud, phong\n'),
+    cli_case("unknown subcommand", ["paint", "m.off"], 'shadelab: unknown subcommand "paint" (see shadelab --help)\n'),
+]

@@ -1,0 +1,131 @@
+"""Byte builders for the bad-input cases: small valid files of every format,
+from which each case breaks one thing."""
+import base64
+import json
+import struct
+import zlib
+
+TETRA_OFF = b"OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"
+
+# A quad with texture coordinates: input of the image cases.
+QUAD_OBJ = b"v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 2/2 3/3 4/4\n"
+
+THREE_LIGHTS = json.dumps({"lights": [
+    {"type": "directional", "direction": [0, 0, -1]},
+    {"type": "point", "position": [0, 2, 2]},
+    {"type": "ambient", "ambient": [0.2, 0.2, 0.2]},
+]}).encode()
+
+
+def obj(faces, extra=b""):
+    return b"v 0 0 0\nv 1 0 0\nv 0 1 0\n" + extra + faces
+
+
+def ply_header(fmt, vertices, faces, face_property=b"property list uchar int vertex_indices"):
+    return (b"ply\nformat " + fmt + b" 1.0\nelement vertex " + str(vertices).encode() +
+            b"\nproperty float x\nproperty float y\nproperty float z\nelement face " + str(faces).encode() +
+            b"\n" + face_property + b"\nend_header\n")
+
+
+def ply_ascii(face_lines, vertices=3, faces=1):
+    return ply_header(b"ascii", vertices, faces) + b"0 0 0\n1 0 0\n0 1 0\n" + face_lines
+
+
+def ply_binary(indices, vertices=3, faces=1, cut=0):
+    body = struct.pack("<9f", 0, 0, 0, 1, 0, 0, 0, 1, 0)
+    body += struct.pack("<B", len(indices)) + struct.pack("<%di" % len(indices), *indices)
+    data = ply_header(b"binary_little_endian", vertices, faces) + body
+    return data[:len(data) - cut]
+
+
+def stl_binary(triangles, declared=None, cut=0):
+    data = b"binary STL".ljust(80, b"\0") + struct.pack("<I", triangles if declared is None else declared)
+    for t in range(triangles):
+        data += struct.pack("<12fH", 0, 0, 1, t, 0, 0, t + 1, 0, 0, t, 1, 0, 0)
+    return data[:len(data) - cut]
+
+
+def vtp(connectivity, points=3, offsets=b"3"):
+    return (b'<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1" byte_order="LittleEndian">\n'
+            b'<PolyData>\n<Piece NumberOfPoints="' + str(points).encode() +
+            b'" NumberOfVerts="0" NumberOfLines="0" NumberOfStrips="0" NumberOfPolys="1">\n'
+            b'<Points><DataArray type="Float32" NumberOfComponents="3" format="ascii">0 0 0 1 0 0 0 1 0'
+            b'</DataArray></Points>\n<Polys>\n<DataArray type="Int64" Name="connectivity" format="ascii">' +
+            connectivity + b'</DataArray>\n<DataArray type="Int64" Name="offsets" format="ascii">' + offsets +
+            b'</DataArray>\n</Polys>\n</Piece>\n</PolyData>\n</VTKFile>\n')
+
+
+def legacy_vtk(polygons, dataset=b"POLYDATA"):
+    return (b"# vtk DataFile Version 3.0\nbad input\nASCII\nDATASET " + dataset +
+            b"\nPOINTS 3 float\n0 0 0 1 0 0 0 1 0\n" + polygons)
+
+
+def gltf_parts(index_values=(0, 1, 2), count=3):
+    positions = struct.pack("<9f", 0, 0, 0, 1, 0, 0, 0, 1, 0)
+    indices = struct.pack("<3H", *index_values) + b"\0\0"
+    data = positions + indices
+    document = {
+        "asset": {"version": "2.0"},
+        "scene": 0,
+        "scenes": [{"nodes": [0]}],
+        "nodes": [{"mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+        "buffers": [{"byteLength": len(data)}],
+        "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
+        "accessors": [
+            {"bufferView": 0, "componentType": 5126, "count": count, "type": "VEC3",
+             "min": [0, 0, 0], "max": [1, 1, 0]},
+            {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"},
+        ],
+    }
+    return document, data
+
+
+def gltf(edit=None, uri=None, **parts):
+    document, data = gltf_parts(**parts)
+    document["buffers"][0]["uri"] = uri or ("data:application/octet-stream;base64," + base64.b64encode(data).decode())
+    if edit:
+        edit(document)
+    return json.dumps(document).encode()
+
+
+def glb(edit=None, cut=0, **parts):
+    document, data = gltf_parts(**parts)
+    if edit:
+        edit(document)
+    text = json.dumps(document).encode()
+    text += b" " * (-len(text) % 4)
+    body = struct.pack("<I4s", len(text), b"JSON") + text + struct.pack("<I4s", len(data), b"BIN\0") + data
+    out = struct.pack("<4sII", b"glTF", 2, 12 + len(body)) + body
+    return out[:len(out) - cut]
+
+
+def png(width=4, height=4, crc_ok=True, cut=0):
+    def chunk(kind, payload, good=True):
+        crc = zlib.crc32(kind + payload) ^ (0 if good else 1)
+        return struct.pack(">I", len(payload)) + kind + payload + struct.pack(">I", crc)
+    rows = b"".join(b"\0" + b"\x80\x40\x20" * width for _ in range(min(height, 4)))
+    data = (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)) +
+            chunk(b"IDAT", zlib.compress(rows), crc_ok) + chunk(b"IEND", b""))
+    return data[:len(data) - cut]
+
+
+def vtp_compressed_header(blocks):
+    """A zlib-compressed VTP whose points array's header declares @blocks blocks."""
+    header = base64.b64encode(struct.pack("<III", blocks, 32768, 0)).decode().encode()
+    return (b'<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1" byte_order="LittleEndian" '
+            b'header_type="UInt32" compressor="vtkZLibDataCompressor">\n<PolyData>\n'
+            b'<Piece NumberOfPoints="3" NumberOfVerts="0" NumberOfLines="0" NumberOfStrips="0" NumberOfPolys="0">\n'
+            b'<Points><DataArray type="Float32" Name="Points" NumberOfComponents="3" format="binary">' + header +
+            b'</DataArray></Points>\n</Piece>\n</PolyData>\n</VTKFile>\n')
+
+
+def vtp_appended_base64_header(blocks):
+    """A compressed VTP with base64 appended data whose points header declares @blocks blocks."""
+    header = base64.b64encode(struct.pack("<III", blocks, 32768, 0))
+    return (b'<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1" byte_order="LittleEndian" '
+            b'header_type="UInt32" compressor="vtkZLibDataCompressor">\n<PolyData>\n'
+            b'<Piece NumberOfPoints="3" NumberOfVerts="0" NumberOfLines="0" NumberOfStrips="0" NumberOfPolys="0">\n'
+            b'<Points><DataArray type="Float32" Name="Points" NumberOfComponents="3" format="appended" offset="0"/>'
+            b'</Points>\n</Piece>\n</PolyData>\n<AppendedData encoding="base64">\n_' + header +
+            b'\n</AppendedData>\n</VTKFile>\n')
