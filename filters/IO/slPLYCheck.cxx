@@ -463,6 +463,18 @@ std::string slPLYProblem(const std::string& fileName)
   {
     return "the header has no format line";
   }
+  // vtkPLYReader looks elements up by name: a second element of the same
+  // name is read over the first one's arrays.
+  for (size_t i = 0; i < elements.size(); ++i)
+  {
+    for (size_t j = 0; j < i; ++j)
+    {
+      if (elements[i].name == elements[j].name)
+      {
+        return "the header has two elements named \"" + shadelab::printableText(elements[i].name) + "\"";
+      }
+    }
+  }
   // vtkPLYReader looks both elements up and reads x, y, z: without them it
   // follows a bad element table.
   bool haveVertex = false, haveFace = false;

@@ -94,6 +94,11 @@ CASES = [
               'line 4: a control byte in the header: "property float x\\x01\\x00v"'),
     mesh_case("ply property with extra words", "a.ply", b"ply\nformat ascii 1.0\nelement vertex 3 extra\n",
               'line 3: expected 3 words, found "element vertex 3 extra"'),
+    # found by fuzzing: a second "vertex" element was read over the first one's arrays (crash in vtkCell)
+    mesh_case("ply element named twice", "a.ply",
+              ply_ascii(b"3 0 1 2\n").replace(b"element face 1\n", b"element vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\n")
+              .replace(b"3 0 1 2\n", b"0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
+              'the header has two elements named "vertex"'),
     # found by fuzzing: vtkPLYReader freed an uninitialised pointer
     mesh_case("ply face without index list", "a.ply",
               ply_header(b"ascii", 3, 1, b"property list uchar int corners") + b"0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
