@@ -181,7 +181,7 @@ int slMeshReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInform
     reader->Update();
     if (errors->HasError())
     {
-      return this->Fail(errors->GetLastError());
+      return this->Fail(errors->GetError());
     }
     vtkSmartPointer<vtkPolyData> read = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
     if (auto* composite = vtkCompositeDataSet::SafeDownCast(reader->GetOutputDataObject(0)))
