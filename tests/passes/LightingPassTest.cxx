@@ -503,7 +503,8 @@ TEST(BaseColour, PointScalarsMultiplyKd)
   setUniformColours(mesh, 255, 128, 64); // base colour everywhere
   passtest::Stage stage = passtest::litStage(mesh, scene, 100, 100);
   stage.actor->GetMapper()->ScalarVisibilityOn();
-  const float* pixel = stage.render().at(50, 50);
+  const Image rendered = stage.render(); // kept: at() points into it
+  const float* pixel = rendered.at(50, 50);
   EXPECT_NEAR(pixel[0], 0.8f * 255.0f / 255.0f, 1.5f / 255.0f);
   EXPECT_NEAR(pixel[1], 0.8f * 128.0f / 255.0f, 1.5f / 255.0f);
   EXPECT_NEAR(pixel[2], 0.8f * 64.0f / 255.0f, 1.5f / 255.0f);
@@ -531,7 +532,8 @@ TEST(BaseColour, CPUAndGPUAgreeOnEightBitColours)
 
   passtest::Stage stage = passtest::litStage(mesh, scene, 100, 100);
   stage.actor->GetMapper()->ScalarVisibilityOn();
-  const float* pixel = stage.render().at(50, 50);
+  const Image rendered = stage.render(); // kept: at() points into it
+  const float* pixel = rendered.at(50, 50);
   for (int c = 0; c < 3; ++c)
   {
     EXPECT_NEAR(pixel[c], radiance[c], 1.5 / 255.0) << c;
@@ -564,7 +566,8 @@ TEST(BaseColour, ActorTextureMultipliesKd)
   texture->SetInputData(image);
   passtest::Stage stage = passtest::litStage(normals->GetOutput(), scene, 100, 100);
   stage.actor->SetTexture(texture);
-  const float* pixel = stage.render().at(50, 50);
+  const Image rendered = stage.render(); // kept: at() points into it
+  const float* pixel = rendered.at(50, 50);
   EXPECT_NEAR(pixel[0], 0.8f * 200.0f / 255.0f, 1.5f / 255.0f);
   EXPECT_NEAR(pixel[1], 0.8f * 100.0f / 255.0f, 1.5f / 255.0f);
   EXPECT_NEAR(pixel[2], 0.8f * 50.0f / 255.0f, 1.5f / 255.0f);
