@@ -24,7 +24,7 @@ done
 run render "$spot" --scene "$scene" --component cos --light 0 --false-color --size 400x300 -o "$out/pass-component-cos.png"
 run render "$spot" --scene "$scene" --vtk-lighting --quiet --size 400x300 -o "$out/pass-vtk-builtin.png"
 echo "images written to $out/"
-# Field images (issue 6): the terms of the lighting equation and the Monte Carlo reference.
+# Field images: the terms of the lighting equation and the Monte Carlo reference.
 tmp=$(mktemp -d)
 run light "$spot" --scene "$scene" -o "$tmp/light.vtp" --image "$out/fields-light.png"
 run reference "$spot" --scene "$scene" -o "$tmp/reference.vtp" --image "$out/fields-reference.png"

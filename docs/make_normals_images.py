@@ -10,7 +10,7 @@ import sys
 import tempfile
 
 BUILD = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else "build")
-sys.path.insert(0, os.path.join(BUILD, "python"))
+sys.path.insert(0, os.path.join(BUILD, "lib", "python3", "dist-packages"))
 import shadelab  # noqa: E402
 from vtkmodules.vtkFiltersCore import vtkGlyph3D  # noqa: E402
 from vtkmodules.vtkFiltersSources import vtkArrowSource, vtkPlaneSource, vtkSphereSource  # noqa: E402

@@ -170,6 +170,11 @@ int runLobe(const std::vector<std::string>& args)
     vtkSmartPointer<vtkPolyData> mesh = loadMeshWithNormals(meshPath);
     lobes->SetInputData(mesh);
     runLitFilter(lobes, meshPath);
+    if (lobes->GetNumberOfLobesDrawn() < lobes->GetNumberOfLobes())
+    {
+      std::cout << "drew " << lobes->GetNumberOfLobesDrawn() << " lobes: only that many points of " << meshPath
+                << " face the light\n";
+    }
     if (kind == OutputKind::Image)
     {
       // The lit mesh with its lobes, in orange, through ShadeLab's lighting pass.

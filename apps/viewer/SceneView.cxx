@@ -27,6 +27,7 @@
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace shadelab
@@ -269,6 +270,10 @@ void SceneView::buildLitPanels()
     panel->SetSplitting(normals.splitting);
     panel->SetFeatureAngle(normals.featureAngle);
     panel->SetReplaceNormals(normals.replace);
+    // The camera is fitted for the panel's own aspect ratio.
+    const qreal ratio = this->devicePixelRatioF();
+    panel->SetWidth(std::max(1, static_cast<int>(this->width() * ratio / count)));
+    panel->SetHeight(std::max(1, static_cast<int>(this->height() * ratio)));
     if (this->Lobe && !split)
     {
       panel->AddOverlay(this->Lobe, 1.0, 0.55, 0.1);
@@ -321,7 +326,9 @@ void SceneView::buildFieldPanel()
   renderer->SetBackground(background.x, background.y, background.z);
   if (!this->CameraPlaced)
   {
-    this->Document->vtkScene()->ApplyCamera(renderer);
+    this->Document->vtkScene()->ApplyCamera(renderer->GetActiveCamera(), this->FieldMesh->GetBounds(),
+      static_cast<int>(this->width() * ratio), static_cast<int>(this->height() * ratio));
+    renderer->ResetCameraClippingRange();
     this->Camera->DeepCopy(renderer->GetActiveCamera());
     this->CameraPlaced = true;
   }

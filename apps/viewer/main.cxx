@@ -20,9 +20,19 @@
 
 namespace
 {
-/// The bundled example, opened when no mesh is given.
-const char* const kDefaultMesh = SHADELAB_DATA_DIR "/meshes/spot.obj";
-const char* const kDefaultScene = SHADELAB_DATA_DIR "/scenes/default.json";
+/// The folder of the bundled example (Spot and the default scene), opened
+/// when no mesh is given: share/shadelab beside an installed program, else
+/// the source tree's data/ for a program run from its build tree.
+QString bundledDataDir()
+{
+  const QString installed =
+    QCoreApplication::applicationDirPath() + "/" + SHADELAB_INSTALLED_DATA_FROM_BIN;
+  if (QFileInfo::exists(installed + "/scenes/default.json"))
+  {
+    return installed;
+  }
+  return SHADELAB_DATA_DIR;
+}
 
 int fail(const QString& message)
 {
@@ -72,8 +82,8 @@ int main(int argc, char** argv)
     return fail("give at most one mesh (got " + QString::number(positional.size()) + ")");
   }
   const bool defaults = positional.isEmpty() && !parser.isSet(sceneOption);
-  const QString scene = parser.isSet(sceneOption) ? parser.value(sceneOption) : (defaults ? kDefaultScene : "");
-  const QString mesh = positional.isEmpty() ? kDefaultMesh : positional.first();
+  const QString scene = parser.isSet(sceneOption) ? parser.value(sceneOption) : (defaults ? bundledDataDir() + "/scenes/default.json" : "");
+  const QString mesh = positional.isEmpty() ? bundledDataDir() + "/meshes/spot.obj" : positional.first();
   QString error;
   if ((!scene.isEmpty() && !window.openFile(scene, &error)) || !window.openFile(mesh, &error))
   {

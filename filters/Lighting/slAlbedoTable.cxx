@@ -30,7 +30,7 @@ int slAlbedoTable::RequestData(vtkInformation*, vtkInformationVector**, vtkInfor
   degrees->SetNumberOfTuples(angles);
   for (int a = 0; a < angles; ++a)
   {
-    degrees->SetValue(a, 89.0 * a / (angles - 1));
+    degrees->SetValue(a, this->MaximumIncidence * a / (angles - 1));
   }
   output->AddColumn(degrees);
   const int models = static_cast<int>(modelNames().size());
@@ -46,7 +46,7 @@ int slAlbedoTable::RequestData(vtkInformation*, vtkInformationVector**, vtkInfor
       m.specular = glm::vec3(lambert ? 0.0f : 1.0f);
       m.shininess = static_cast<float>(this->Shininess);
       values[static_cast<size_t>(k)] =
-        directionalAlbedo(model, m, degrees->GetValue(a) * 3.14159265358979323846 / 180.0, this->IntegrationSteps);
+        directionalAlbedo(model, m, degrees->GetValue(a) * 3.14159265358979323846 / 180.0);
     }
   });
   for (int model = 0; model < models; ++model)
@@ -68,5 +68,5 @@ void slAlbedoTable::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Shininess: " << this->Shininess << "\n";
   os << indent << "NumberOfAngles: " << this->NumberOfAngles << "\n";
-  os << indent << "IntegrationSteps: " << this->IntegrationSteps << "\n";
+  os << indent << "MaximumIncidence: " << this->MaximumIncidence << "\n";
 }

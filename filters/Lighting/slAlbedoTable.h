@@ -7,15 +7,18 @@
  *          per model ("lambert", "phong", ..., "blinn-phong-normalized").
  *
  * a(theta_i) = integral of f_r(w_i, w_o) cos(theta_o) dw_o over the
- * hemisphere (shadelab::directionalAlbedo(), midpoint rule), with f_r from
+ * hemisphere (shadelab::directionalAlbedo(): adaptive Gauss-Kronrod in the
+ * lobe's own frame, within 1e-4 of an independent quadrature at every angle
+ * up to 89.9 degrees and shininess 0 to 10^4), with f_r from
  * slBRDF() of slLighting.glsl: k_d = 1 for the Lambert models, k_s = 1 and
  * k_d = 0 for the Phong and Blinn-Phong models (their specular lobe alone).
  * It shows how much energy the lecture models gain or lose (lecture Lambert
  * reflects pi, lecture Phong grows toward grazing incidence) and that the
  * normalised models stay <= 1.
  *
- * @warning The last angle is 89 degrees, not 90: at grazing incidence
- * f_r cos(theta_i) -> 0 while the lecture models' f_r diverges.
+ * @warning The last angle is MaximumIncidence (89 degrees unless set, at most
+ * 89.9), not 90: at grazing incidence f_r cos(theta_i) -> 0 while the lecture
+ * models' f_r diverges.
  *
  * @sa slBRDFLobeSource
  */
@@ -38,15 +41,16 @@ public:
   ///@}
 
   ///@{
-  /// Number of incidence angles from 0 to 89 degrees (default 10).
+  /// Number of incidence angles, evenly spaced from 0 to MaximumIncidence
+  /// degrees (default 10).
   vtkSetClampMacro(NumberOfAngles, int, 2, 1000);
   vtkGetMacro(NumberOfAngles, int);
   ///@}
 
   ///@{
-  /// Midpoint rings in theta_o (2x as many segments in phi_o); default 128.
-  vtkSetClampMacro(IntegrationSteps, int, 4, 4096);
-  vtkGetMacro(IntegrationSteps, int);
+  /// The last incidence angle in degrees (default 89, at most 89.9).
+  vtkSetClampMacro(MaximumIncidence, double, 0.0, 89.9);
+  vtkGetMacro(MaximumIncidence, double);
   ///@}
 
 protected:
@@ -61,7 +65,7 @@ private:
 
   double Shininess = 20.0;
   int NumberOfAngles = 10;
-  int IntegrationSteps = 128;
+  double MaximumIncidence = 89.0;
 };
 
 #endif

@@ -7,7 +7,6 @@
 
 #include <vtkCamera.h>
 #include <vtkNew.h>
-#include <vtkRenderer.h>
 
 namespace shadelab
 {
@@ -45,21 +44,10 @@ LightingSetup makeLightingSetup(slScene* scene, vtkLightCollection* lights, vtkP
     return setup;
   }
 
-  // Place the camera as the renderer would (fitting the mesh when the scene
-  // gives no position), then read the eye back.
-  vtkNew<vtkRenderer> renderer;
-  merged->ApplyCamera(renderer);
-  vtkCamera* placed = renderer->GetActiveCamera();
-  if (!s.camera.hasPosition && bounds && bounds[0] <= bounds[1])
-  {
-    double b[6] = { bounds[0], bounds[1], bounds[2], bounds[3], bounds[4], bounds[5] };
-    placed->SetPosition(0.0, 0.0, 1.0);
-    placed->SetFocalPoint(0.0, 0.0, 0.0);
-    renderer->ResetCamera(b);
-    placed->Azimuth(s.camera.azimuth);
-    placed->Elevation(s.camera.elevation);
-    placed->OrthogonalizeViewUp();
-  }
+  // The renderers' camera rule, at the scene's image size: a fitted camera's
+  // distance depends on the aspect ratio.
+  vtkNew<vtkCamera> placed;
+  merged->ApplyCamera(placed, bounds, 0, 0);
 
   setup.eye = toVec3(placed->GetPosition());
   const glm::vec3 focal = toVec3(placed->GetFocalPoint());

@@ -35,8 +35,9 @@ struct LightingSetup
 
 /// Builds the setup. @p scene may be null (ShadeLab's default scene); each
 /// non-null VTK object replaces the scene's lights, material or camera.
-/// @p bounds (xmin, xmax, ymin, ...) fit a scene camera that has no position,
-/// as slScene::ApplyCamera() does.
+/// The eye is that of slScene::ApplyCamera() for @p bounds (xmin, xmax, ymin,
+/// ...; those of the whole mesh) and the scene's image size, the camera the
+/// renderers draw with.
 LightingSetup makeLightingSetup(slScene* scene, vtkLightCollection* lights, vtkProperty* property,
   vtkCamera* camera, const double bounds[6]);
 

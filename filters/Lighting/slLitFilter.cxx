@@ -2,8 +2,10 @@
 #include "slAtomicMinimum.h"
 
 #include "slFloat3View.h"
+#include "slGlobalBounds.h"
 #include "slLightingSetup.h"
 #include "shadelab/LightingGLSL.h"
+#include "shadelab/DefaultScene.h"
 #include "shadelab/Scene.h"
 #include "slScene.h"
 
@@ -18,6 +20,7 @@
 #include <algorithm>
 #include <atomic>
 #include <limits>
+#include <utility>
 
 
 vtkCxxSetObjectMacro(slLitFilter, Scene, slScene);
@@ -25,10 +28,35 @@ vtkCxxSetObjectMacro(slLitFilter, Lights, vtkLightCollection);
 vtkCxxSetObjectMacro(slLitFilter, Property, vtkProperty);
 vtkCxxSetObjectMacro(slLitFilter, Camera, vtkCamera);
 
-slLitFilter::slLitFilter() = default;
+namespace
+{
+void toDouble3(const glm::vec3& from, double to[3])
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    to[i] = static_cast<double>(from[i]);
+  }
+}
+
+glm::vec3 toVec3(const double from[3])
+{
+  return glm::vec3(static_cast<float>(from[0]), static_cast<float>(from[1]), static_cast<float>(from[2]));
+}
+} // namespace
+
+slLitFilter::slLitFilter()
+{
+  const shadelab::SceneMaterial& m = shadelab::defaultScene().material;
+  toDouble3(m.ambient, this->AmbientColor);
+  toDouble3(m.diffuse, this->DiffuseColor);
+  toDouble3(m.specular, this->SpecularColor);
+  toDouble3(m.emission, this->EmissionColor);
+  this->Shininess = static_cast<double>(m.shininess);
+}
 
 slLitFilter::~slLitFilter()
 {
+  this->SetSceneFileName(nullptr);
   this->SetScene(nullptr);
   this->SetLights(nullptr);
   this->SetProperty(nullptr);
@@ -69,6 +97,38 @@ int slLitFilter::FailOnZeroNormal(vtkPolyData* output, vtkIdType point, vtkIdTyp
 bool slLitFilter::PrepareLighting(
   vtkPolyData* input, vtkPolyData* output, bool needLight, shadelab::LightingSetup& setup, bool checkNormals)
 {
+  // First, on every rank: the bounds are a collective operation under MPI,
+  // which a rank that fails below must not leave others waiting for.
+  double* bounds = this->WholeBounds;
+  shadelab::globalBounds(input, bounds);
+  vtkSmartPointer<slScene> scene = this->Scene;
+  if (this->SceneFileName && *this->SceneFileName)
+  {
+    scene = vtkSmartPointer<slScene>::New();
+    if (!scene->ReadFile(this->SceneFileName))
+    {
+      this->Fail(output, scene->GetErrorMessage());
+      return false;
+    }
+  }
+  if (this->Model >= 0 || this->OverrideMaterial)
+  {
+    shadelab::Scene values = scene ? scene->GetScene() : shadelab::defaultScene();
+    if (this->Model >= 0)
+    {
+      values.model = static_cast<shadelab::ShadingModel>(this->Model);
+    }
+    if (this->OverrideMaterial)
+    {
+      values.material.ambient = toVec3(this->AmbientColor);
+      values.material.diffuse = toVec3(this->DiffuseColor);
+      values.material.specular = toVec3(this->SpecularColor);
+      values.material.emission = toVec3(this->EmissionColor);
+      values.material.shininess = static_cast<float>(this->Shininess);
+    }
+    scene = vtkSmartPointer<slScene>::New();
+    scene->SetScene(values);
+  }
   if (!input || input->GetNumberOfPoints() == 0)
   {
     this->Fail(output, "input mesh: it is empty (no points)");
@@ -123,20 +183,20 @@ bool slLitFilter::PrepareLighting(
       return false;
     }
   }
-  setup = shadelab::makeLightingSetup(this->Scene, this->Lights, this->Property, this->Camera, input->GetBounds());
-  const bool fromFile = this->Scene && !this->Lights && !this->Scene->GetScene().sourceFile.empty();
+  setup = shadelab::makeLightingSetup(scene, this->Lights, this->Property, this->Camera, bounds);
+  const bool fromFile = scene && !this->Lights && !scene->GetScene().sourceFile.empty();
   if (!setup.problem.empty())
   {
     const bool fromVTK = this->Lights || this->Property || this->Camera;
     this->Fail(output,
       (fromVTK ? std::string("scene (with the VTK lights, property or camera)")
-               : fromFile ? this->Scene->GetScene().sourceFile : std::string("scene")) +
+               : fromFile ? scene->GetScene().sourceFile : std::string("scene")) +
         ": " + setup.problem);
     return false;
   }
   if (needLight && setup.lights.empty())
   {
-    this->Fail(output, (fromFile ? this->Scene->GetScene().sourceFile + ": lights" : std::string("scene")) +
+    this->Fail(output, (fromFile ? scene->GetScene().sourceFile + ": lights" : std::string("scene")) +
         ": it has no lights");
     return false;
   }
@@ -151,4 +211,15 @@ void slLitFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Property: " << this->Property << "\n";
   os << indent << "Camera: " << this->Camera << "\n";
   os << indent << "ZeroNormalsAreErrors: " << this->ZeroNormalsAreErrors << "\n";
+  os << indent << "SceneFileName: " << (this->SceneFileName ? this->SceneFileName : "(none)") << "\n";
+  os << indent << "Model: " << this->Model << "\n";
+  os << indent << "OverrideMaterial: " << this->OverrideMaterial << "\n";
+  const std::pair<const char*, const double*> colours[] = { { "AmbientColor", this->AmbientColor },
+    { "DiffuseColor", this->DiffuseColor }, { "SpecularColor", this->SpecularColor },
+    { "EmissionColor", this->EmissionColor } };
+  for (const auto& c : colours)
+  {
+    os << indent << c.first << ": " << c.second[0] << " " << c.second[1] << " " << c.second[2] << "\n";
+  }
+  os << indent << "Shininess: " << this->Shininess << "\n";
 }

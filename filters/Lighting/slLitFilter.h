@@ -13,7 +13,18 @@
  * the corresponding part of the scene, converted by slScene (so a VTK user's
  * existing lights just work, camera and headlights included). A scene camera
  * without a position is fitted to the input's bounds as slScene::ApplyCamera()
- * does.
+ * does, to the bounds of the whole input: under MPI (VTK's global
+ * vtkMultiProcessController with more than one process, as in ParaView's
+ * pvbatch and pvserver) the bounds are united over all ranks, so the eye,
+ * and with it every view-dependent value, is the same on any number of
+ * ranks as on one.
+ *
+ * For ParaView, whose client-server wrapping reaches only plain values and
+ * vtk* objects, the scene can also come from a file (SetSceneFileName(),
+ * read at every update; it replaces SetScene()), the lighting model can be
+ * chosen with SetModel() and, with OverrideMaterial on, the material's
+ * colours and shininess with plain setters. Values out of the scene format's
+ * ranges (docs/scene-format.md) are errors, as in a scene file.
  *
  * Input checks, each giving vtkErrorMacro, an empty output and a one-line
  * reason in GetErrorMessage(): an input without points, without point
@@ -78,6 +89,45 @@ public:
   ///@}
 
   ///@{
+  /// A JSON scene file read at each update in place of SetScene(); "" or
+  /// null (default): SetScene()'s scene. A file that cannot be read is an
+  /// error naming the file.
+  vtkSetStringMacro(SceneFileName);
+  vtkGetStringMacro(SceneFileName);
+  ///@}
+
+  ///@{
+  /// The lighting model (SL_MODEL_LAMBERT = 0 ... SL_MODEL_BLINN_PHONG_NORMALIZED
+  /// = 5, as in slBRDFLobeSource), or -1 (default) for the scene's own.
+  vtkSetClampMacro(Model, int, -1, 5);
+  vtkGetMacro(Model, int);
+  ///@}
+
+  ///@{
+  /// Whether the material values below replace the scene's (after
+  /// SetProperty(), if any). Off by default.
+  vtkSetMacro(OverrideMaterial, bool);
+  vtkGetMacro(OverrideMaterial, bool);
+  vtkBooleanMacro(OverrideMaterial, bool);
+  ///@}
+
+  ///@{
+  /// Material colours k_a, k_d, k_s, k_e (linear RGB, [0, 1e6]) and
+  /// shininess n ([0, 1e5]); used when OverrideMaterial is on. Defaults:
+  /// the default scene's (0.1, 0.8, 0.5, 0 and 32).
+  vtkSetVector3Macro(AmbientColor, double);
+  vtkGetVector3Macro(AmbientColor, double);
+  vtkSetVector3Macro(DiffuseColor, double);
+  vtkGetVector3Macro(DiffuseColor, double);
+  vtkSetVector3Macro(SpecularColor, double);
+  vtkGetVector3Macro(SpecularColor, double);
+  vtkSetVector3Macro(EmissionColor, double);
+  vtkGetVector3Macro(EmissionColor, double);
+  vtkSetMacro(Shininess, double);
+  vtkGetMacro(Shininess, double);
+  ///@}
+
+  ///@{
   /// Whether a zero-length or non-finite point normal is an error (default)
   /// or lit as "no direction" (ambient and emission only, CosTheta 0).
   vtkSetMacro(ZeroNormalsAreErrors, bool);
@@ -114,11 +164,23 @@ protected:
   /// Clears the error message; call first in RequestData.
   void ClearError() { this->ErrorMessage.clear(); }
 
+  /// Bounds of the whole input over all MPI ranks (xmin, xmax, ...), set by
+  /// PrepareLighting(): sizes derived from them do not depend on the partition.
+  double WholeBounds[6] = { 0, -1, 0, -1, 0, -1 };
+
   slScene* Scene = nullptr;
   vtkLightCollection* Lights = nullptr;
   vtkProperty* Property = nullptr;
   vtkCamera* Camera = nullptr;
   bool ZeroNormalsAreErrors = true;
+  char* SceneFileName = nullptr;
+  int Model = -1;
+  bool OverrideMaterial = false;
+  double AmbientColor[3];
+  double DiffuseColor[3];
+  double SpecularColor[3];
+  double EmissionColor[3];
+  double Shininess;
 
 private:
   slLitFilter(const slLitFilter&) = delete;

@@ -33,6 +33,7 @@ int slLobesOnMesh::RequestData(vtkInformation*, vtkInformationVector** inputVect
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   this->ClearError();
+  this->NumberOfLobesDrawn = 0;
   LightingSetup setup;
   if (!this->PrepareLighting(input, output, true, setup))
   {
@@ -57,6 +58,11 @@ int slLobesOnMesh::RequestData(vtkInformation*, vtkInformationVector** inputVect
   }
 
   const vtkIdType n = input->GetNumberOfPoints();
+  const Float3View points(input->GetPoints()->GetData());
+  const Float3View normals(input->GetPointData()->GetNormals());
+  const glsl::slLight& chosen = setup.lights[static_cast<size_t>(light)];
+  // Lit: where f_r is not zero (slBRDF's own grazing limit), so a lobe shows.
+  auto lit = [&](vtkIdType id) { return glsl::slCosTheta(chosen, points[id], normals[id]) > glsl::SL_MIN_COS_THETA; };
   std::vector<vtkIdType> ids;
   if (this->PointIds)
   {
@@ -73,15 +79,22 @@ int slLobesOnMesh::RequestData(vtkInformation*, vtkInformationVector** inputVect
   }
   else
   {
-    const vtkIdType count = std::min<vtkIdType>(n, this->NumberOfLobes);
-    for (vtkIdType k = 0; k < count; ++k)
+    // An even stride through the lit points, so that every sampled point shows a lobe.
+    std::vector<vtkIdType> candidates;
+    for (vtkIdType id = 0; id < n; ++id)
     {
-      ids.push_back(k * n / count);
+      if (lit(id))
+      {
+        candidates.push_back(id);
+      }
+    }
+    const size_t count = std::min(candidates.size(), static_cast<size_t>(this->NumberOfLobes));
+    for (size_t k = 0; k < count; ++k)
+    {
+      ids.push_back(candidates[k * candidates.size() / count]);
     }
   }
 
-  const Float3View points(input->GetPoints()->GetData());
-  const Float3View normals(input->GetPointData()->GetNormals());
   for (vtkIdType id : ids)
   {
     const glm::vec3 p = points[id];
@@ -90,13 +103,14 @@ int slLobesOnMesh::RequestData(vtkInformation*, vtkInformationVector** inputVect
       return this->Fail(output, "input mesh: point " + std::to_string(id) + " has a coordinate that is not finite");
     }
   }
+  this->NumberOfLobesDrawn = static_cast<int>(std::count_if(ids.begin(), ids.end(), lit));
   auto lobeAt = [&](vtkIdType id) {
     LobeSpec spec;
     spec.material = setup.material;
     spec.model = setup.model;
     spec.normal = normals[id];
     spec.origin = points[id];
-    spec.toLight = glsl::slDirectionToLight(setup.lights[static_cast<size_t>(light)], points[id]);
+    spec.toLight = glsl::slDirectionToLight(chosen, points[id]);
     spec.timesCosine = this->MultiplyByCosine;
     spec.thetaResolution = this->ThetaResolution;
     spec.phiResolution = this->PhiResolution;
@@ -144,6 +158,7 @@ void slLobesOnMesh::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LightIndex: " << this->LightIndex << "\n";
   os << indent << "PointIds: " << this->PointIds << "\n";
   os << indent << "NumberOfLobes: " << this->NumberOfLobes << "\n";
+  os << indent << "NumberOfLobesDrawn: " << this->NumberOfLobesDrawn << "\n";
   os << indent << "Scale: " << this->Scale << "\n";
   os << indent << "MultiplyByCosine: " << this->MultiplyByCosine << "\n";
   os << indent << "ThetaResolution: " << this->ThetaResolution << "\n";

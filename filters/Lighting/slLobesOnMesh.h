@@ -13,13 +13,15 @@
  * slLighting.glsl with the scene's material (mean of R, G, B) and model.
  *
  * Points: SetPointIds() chooses them; otherwise NumberOfLobes points are
- * taken at an even stride through the point list. All lobes share one scale:
+ * taken at an even stride through the lit points (N.L above slBRDF's grazing
+ * limit, so each shows a lobe), or all of them if fewer are lit.
+ * GetNumberOfLobesDrawn() tells how many lobes the output holds. All lobes share one scale:
  * the largest r over all lobes becomes Scale x the input's bounding-box
  * diagonal. The output holds only the lobes: point arrays "BRDF" (r) and
  * "PointId" (the input point each lobe belongs to).
  *
- * @warning Points whose normal is zero, or that face away from the light
- * (N.L <= 0), get no lobe: f_r is zero there.
+ * @warning Chosen points (SetPointIds) whose normal is zero, or that face
+ * away from the light (N.L <= 0), get no lobe: f_r is zero there.
  *
  * @sa slBRDFLobeSource slLitFilter
  */
@@ -53,6 +55,9 @@ public:
   vtkSetClampMacro(NumberOfLobes, int, 1, 100000);
   vtkGetMacro(NumberOfLobes, int);
   ///@}
+
+  /// Lobes in the last output: the chosen or sampled points that are lit.
+  vtkGetMacro(NumberOfLobesDrawn, int);
 
   ///@{
   /// Size of the largest lobe as a fraction of the bounding-box diagonal (default 0.1).
@@ -88,6 +93,7 @@ private:
   int LightIndex = -1;
   vtkIdList* PointIds = nullptr;
   int NumberOfLobes = 16;
+  int NumberOfLobesDrawn = 0;
   double Scale = 0.1;
   bool MultiplyByCosine = false;
   int ThetaResolution = 12;

@@ -3,6 +3,7 @@
 
 #include "slDiffuseColors.h"
 #include "slFloat3View.h"
+#include "slImageReader.h"
 #include "slLightingSetup.h"
 #include "slParallelFillArray.h"
 #include "slRadianceKernel.h"
@@ -11,6 +12,7 @@
 #include <vtkImageData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
+#include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
@@ -38,6 +40,7 @@ slRadianceFilter::~slRadianceFilter()
 {
   this->SetDiffuseColorArrayName(nullptr);
   this->SetDiffuseTexture(nullptr);
+  this->SetDiffuseTextureFileName(nullptr);
 }
 
 vtkMTimeType slRadianceFilter::GetMTime()
@@ -68,6 +71,14 @@ int slRadianceFilter::RequestData(vtkInformation*, vtkInformationVector** inputV
   if (this->DiffuseColorArrayName && *this->DiffuseColorArrayName)
   {
     problem = diffuseFromArray(input, this->DiffuseColorArrayName, base);
+  }
+  else if (this->DiffuseTextureFileName && *this->DiffuseTextureFileName)
+  {
+    vtkNew<slImageReader> reader;
+    reader->SetFileName(this->DiffuseTextureFileName);
+    reader->Update();
+    problem = *reader->GetErrorMessage() ? std::string(reader->GetErrorMessage())
+                                         : diffuseFromTexture(input, reader->GetOutput(), base);
   }
   else if (this->DiffuseTexture)
   {
@@ -139,4 +150,6 @@ void slRadianceFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DiffuseColorArrayName: " << (this->DiffuseColorArrayName ? this->DiffuseColorArrayName : "(none)")
      << "\n";
   os << indent << "DiffuseTexture: " << this->DiffuseTexture << "\n";
+  os << indent << "DiffuseTextureFileName: "
+     << (this->DiffuseTextureFileName ? this->DiffuseTextureFileName : "(none)") << "\n";
 }

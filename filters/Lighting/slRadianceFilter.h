@@ -64,6 +64,15 @@ public:
   vtkGetObjectMacro(DiffuseTexture, vtkImageData);
   ///@}
 
+  ///@{
+  /// An image file (any format slImageReader reads) that stands in for k_d
+  /// like SetDiffuseTexture(), read at each update; it takes precedence over
+  /// SetDiffuseTexture(). "" or null (default): none. For ParaView, whose
+  /// properties are plain values.
+  vtkSetStringMacro(DiffuseTextureFileName);
+  vtkGetStringMacro(DiffuseTextureFileName);
+  ///@}
+
   vtkMTimeType GetMTime() override;
 
 protected:
@@ -79,6 +88,7 @@ private:
   bool PerLightArrays = false;
   char* DiffuseColorArrayName = nullptr;
   vtkImageData* DiffuseTexture = nullptr;
+  char* DiffuseTextureFileName = nullptr;
 };
 
 #endif

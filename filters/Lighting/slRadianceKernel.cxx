@@ -34,19 +34,19 @@ long long firstZeroLane(vfloat8 squaredLength, BatchRange batch, long long none)
 }
 
 /// The light in the batch compilation of slLighting.glsl (every lane holds
-/// its values), with the light's intensity and the material's k_a, k_d, k_s
-/// multiplied into its colours: what slWeightedTerms() multiplies each
-/// weight by, computed once per light.
-glsl8::slLight foldLight(const glsl::slLight& l, const glsl::slMaterial& m)
+/// its values), folded by slFoldLight(): its intensity and the material's
+/// k_a, k_d, k_s multiplied into its colours, once per light.
+glsl8::slLight foldLight(const glsl::slLight& light, const glsl::slMaterial& m)
 {
+  const glsl::slLight l = glsl::slFoldLight(light, m);
   glsl8::slLight v;
   v.type = l.type;
   v.position = l.position;
   v.direction = l.direction;
-  v.ambient = l.intensity * l.ambient * m.ambient;
-  v.diffuse = l.intensity * l.diffuse * m.diffuse;
-  v.specular = l.intensity * l.specular * m.specular;
-  v.intensity = 1.0f;
+  v.ambient = l.ambient;
+  v.diffuse = l.diffuse;
+  v.specular = l.specular;
+  v.intensity = l.intensity;
   v.attenuation = l.attenuation;
   v.cosCutoff = l.cosCutoff;
   v.cosInner = l.cosInner;
@@ -83,17 +83,18 @@ __attribute__((always_inline)) inline glsl8::slLightWeights weightsOfAnyLight(co
   }
 }
 
-/// The material with k_a, k_d and k_s of 1: the lights carry its colours
+/// slUnitMaterial() in the batch compilation: the lights carry k_a, k_d, k_s
 /// (foldLight), so slWeightedTerms() multiplies by constants the compiler
-/// removes. Emission and shininess are the material's.
+/// removes.
 glsl8::slMaterial unitMaterial(const glsl::slMaterial& material)
 {
+  const glsl::slMaterial u = glsl::slUnitMaterial(material);
   glsl8::slMaterial m;
-  m.ambient = vec3x8(vfloat8(1.0f));
-  m.diffuse = vec3x8(vfloat8(1.0f));
-  m.specular = vec3x8(vfloat8(1.0f));
-  m.emission = material.emission;
-  m.shininess = material.shininess;
+  m.ambient = u.ambient;
+  m.diffuse = u.diffuse;
+  m.specular = u.specular;
+  m.emission = u.emission;
+  m.shininess = u.shininess;
   return m;
 }
 
@@ -136,14 +137,10 @@ __attribute__((flatten)) long long shadeBatches(const RadianceKernelInput& in, c
       sum = glsl8::slAddTerms(sum, t);
       if (PER_LIGHT)
       {
-        t.ambient = t.ambient * base;
-        t.diffuse = t.diffuse * base;
-        storeBatch(out.perLight[l], batch, glsl8::slTotal(t));
+        storeBatch(out.perLight[l], batch, glsl8::slTotal(glsl8::slWithBaseColour(t, base)));
       }
     }
-    sum.ambient = sum.ambient * base;
-    sum.diffuse = sum.diffuse * base;
-    sum = glsl8::slAddEmission(sum, unit);
+    sum = glsl8::slAddEmission(glsl8::slWithBaseColour(sum, base), unit);
     storeBatch(out.ambient, batch, sum.ambient);
     storeBatch(out.diffuse, batch, sum.diffuse);
     storeBatch(out.specular, batch, sum.specular);

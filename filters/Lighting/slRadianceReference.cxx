@@ -95,11 +95,15 @@ int slRadianceReference::RequestData(
     return this->Fail(output, "no light for the reference: give an environment map or a scene with (non-ambient) lights");
   }
 
+  // The whole input's diagonal (over all MPI ranks), as vtkDataSet::GetLength().
+  const double* b = this->WholeBounds;
+  const double wholeDiagonal =
+    std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
   ReferenceSetup reference;
   reference.lights = setup.lights;
   reference.useLights = this->UseSceneLights;
   reference.lightRadius =
-    static_cast<float>(this->LightRadius > 0.0 ? this->LightRadius : 0.01 * input->GetLength());
+    static_cast<float>(this->LightRadius > 0.0 ? this->LightRadius : 0.01 * wholeDiagonal);
   reference.directionalAngularRadius = static_cast<float>(this->DirectionalLightAngle * 3.14159265358979323846 / 180.0);
   reference.environment = environment.empty() ? nullptr : &environment;
   reference.environmentScale = static_cast<float>(this->EnvironmentScale);

@@ -106,7 +106,7 @@ public:
 
   ///@{
   /// Radius of point and spot lights in world units; 0 (default): 1% of the
-  /// input's bounding-box diagonal.
+  /// input's bounding-box diagonal (of the whole input, over all MPI ranks).
   vtkSetClampMacro(LightRadius, double, 0.0, 1.0e30);
   vtkGetMacro(LightRadius, double);
   ///@}

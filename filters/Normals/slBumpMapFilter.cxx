@@ -2,11 +2,15 @@
 
 #include "slDetailInputs.h"
 
+#include "shadelab/LightingGLSLDouble.h"
+
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
 #include <vtkSMPTools.h>
+
+namespace glsld = shadelab::glsld;
 
 vtkStandardNewMacro(slBumpMapFilter);
 
@@ -38,7 +42,7 @@ int slBumpMapFilter::RequestData(vtkInformation*, vtkInformationVector** inputVe
     {
       const size_t s = static_cast<size_t>(i);
       const glm::dvec3 ts = slnormals::bumpNormal(height, frames.uv[s].x, frames.uv[s].y, scale);
-      normals[s] = slnormals::toObjectSpace(ts, frames.normal[s], frames.tangent[s], frames.handedness[s]);
+      normals[s] = glsld::slTangentToSurface(ts, frames.normal[s], frames.tangent[s], frames.handedness[s]);
     }
   });
   slOutputWithNormals(output, frames.mesh, normals);

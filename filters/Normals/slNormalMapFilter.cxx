@@ -2,11 +2,15 @@
 
 #include "slDetailInputs.h"
 
+#include "shadelab/LightingGLSLDouble.h"
+
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
 #include <vtkSMPTools.h>
+
+namespace glsld = shadelab::glsld;
 
 vtkStandardNewMacro(slNormalMapFilter);
 
@@ -41,8 +45,8 @@ int slNormalMapFilter::RequestData(vtkInformation*, vtkInformationVector** input
       const size_t s = static_cast<size_t>(i);
       const glm::dvec2 uv = frames.uv[s];
       const glm::dvec3 rgb(map.sample(uv.x, uv.y, 0), map.sample(uv.x, uv.y, 1), map.sample(uv.x, uv.y, 2));
-      const glm::dvec3 ts = slnormals::decodeNormal(rgb, this->GreenDown, this->Strength);
-      normals[s] = slnormals::toObjectSpace(ts, frames.normal[s], frames.tangent[s], frames.handedness[s]);
+      const glm::dvec3 ts = glsld::slDecodeNormal(rgb, this->GreenDown ? -1.0 : 1.0, this->Strength);
+      normals[s] = glsld::slTangentToSurface(ts, frames.normal[s], frames.tangent[s], frames.handedness[s]);
     }
   });
   slOutputWithNormals(output, frames.mesh, normals);

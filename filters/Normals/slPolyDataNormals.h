@@ -46,6 +46,16 @@
  * Splitting, Consistency, AutoOrientNormals or WeldCoincidentPoints is on.
  * Angles of non-convex polygon corners are taken as the convex angle.
  *
+ * @warning Pieces (MPI ranks, see slPolyDataFilter): values at piece
+ * boundaries match the whole mesh's, except that WeldCoincidentPoints sees
+ * only the coincident points its piece and ghost cells hold (ghost cells
+ * follow shared points, not shared positions: at an unwelded seam on a
+ * piece boundary the other side may be missing; weld such meshes upstream),
+ * and that Consistency and AutoOrientNormals orient each piece by itself: a
+ * piece of a closed surface is not closed, and its signed volume is not the
+ * surface's. Orient inconsistent meshes once, in serial, before
+ * distributing them.
+ *
  * @sa vtkPolyDataNormals vtkTriangleMeshPointNormals slPolyDataTangents
  */
 

@@ -3,7 +3,9 @@
 /**
  * @file slTextureSampling.h
  * @brief A texture in memory and its bilinear sampling, plus the tangent-space
- * formulas of normal and bump mapping. VTK-free. Internal to ShadeLab::Normals.
+ * normal of bump mapping. VTK-free. Internal to ShadeLab::Normals. (How a
+ * tangent-space normal reaches the surface is glsl/slNormalMapping.glsl,
+ * shared with the render pass.)
  *
  * Texel (i, j) covers u in [i/W, (i+1)/W], v in [j/H, (j+1)/H], row 0 at the
  * bottom (v = 0), its value sits at its centre, and coordinates wrap around
@@ -41,30 +43,6 @@ struct Texture
       (1 - a) * b * this->texel(i, j + 1, c) + a * b * this->texel(i + 1, j + 1, c));
   }
 };
-
-/// The tangent-space normal an RGB texel encodes (rgb in 0..1 → xyz in −1..1),
-/// with green flipped for DirectX maps and x, y scaled by @p strength.
-inline glm::dvec3 decodeNormal(const glm::dvec3& rgb, bool greenDown, double strength)
-{
-  glm::dvec3 n = rgb * 2.0 - 1.0;
-  if (greenDown)
-  {
-    n.y = -n.y;
-  }
-  n.x *= strength;
-  n.y *= strength;
-  const double len = glm::length(n);
-  return len > 0 ? n / len : glm::dvec3(0, 0, 1);
-}
-
-/// Tangent-space xyz to object space with the frame (T, B = w N × T, N).
-inline glm::dvec3 toObjectSpace(const glm::dvec3& ts, const glm::dvec3& n, const glm::dvec3& t, double w)
-{
-  const glm::dvec3 b = w * glm::cross(n, t);
-  const glm::dvec3 r = t * ts.x + b * ts.y + n * ts.z;
-  const double len = glm::length(r);
-  return len > 0 ? r / len : n;
-}
 
 /// The tangent-space normal of the height field scale · h(u, v):
 /// normalise(−scale ∂h/∂u, −scale ∂h/∂v, 1), the gradient taken by central

@@ -105,9 +105,25 @@ public:
   /// camera position, so call it after adding the actors). ApplyToActor() sets
   /// the property, interpolation and diffuse texture.
   void ApplyToRenderer(vtkRenderer* renderer);
+  /// ApplyToRenderer() with the camera fitted to @p bounds for an image of
+  /// @p width x @p height (see ApplyCamera()) instead of the visible props.
+  void ApplyToRenderer(vtkRenderer* renderer, const double bounds[6], int width, int height);
   bool ApplyToActor(vtkActor* actor);
   void ApplyLights(vtkRenderer* renderer);
   void ApplyMaterial(vtkProperty* property);
+  ///@}
+
+  ///@{
+  /// Places @p camera as the scene says for an image of @p width x @p height
+  /// pixels showing @p bounds (xmin, xmax, ymin, ymax, zmin, zmax): the one
+  /// camera rule (shadelab/CameraPlacement.h) that every renderer and CPU
+  /// lighting filter uses. The bounds are an input so that a caller can pass
+  /// those of the whole mesh when it holds only a piece. Sizes below 1 mean
+  /// the scene's imageSize.
+  void ApplyCamera(vtkCamera* camera, const double bounds[6], int width, int height);
+  /// ApplyCamera() on the renderer's active camera with the bounds of its
+  /// visible props and its size (the scene's imageSize while it has no window),
+  /// then resets its clipping range.
   void ApplyCamera(vtkRenderer* renderer);
   ///@}
 

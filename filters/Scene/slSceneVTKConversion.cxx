@@ -1,6 +1,7 @@
 // slScene's conversions to and from VTK's vtkLight, vtkProperty and vtkCamera.
 #include "slScene.h"
 
+#include "shadelab/CameraPlacement.h"
 #include "shadelab/Scene.h"
 #include "slImageReader.h"
 
@@ -157,41 +158,49 @@ void slScene::ApplyMaterial(vtkProperty* property)
   }
 }
 
+void slScene::ApplyCamera(vtkCamera* camera, const double bounds[6], int width, int height)
+{
+  const shadelab::CameraView view = shadelab::placeCamera(this->Data->camera, bounds,
+    width > 0 ? width : this->Data->width, height > 0 ? height : this->Data->height);
+  camera->SetViewAngle(view.viewAngle);
+  camera->SetPosition(view.position.x, view.position.y, view.position.z);
+  camera->SetFocalPoint(view.focalPoint.x, view.focalPoint.y, view.focalPoint.z);
+  camera->SetViewUp(view.viewUp.x, view.viewUp.y, view.viewUp.z);
+  camera->SetParallelScale(view.parallelScale);
+  camera->SetClippingRange(view.nearPlane, view.farPlane);
+}
+
 void slScene::ApplyCamera(vtkRenderer* renderer)
 {
-  const shadelab::SceneCamera& c = this->Data->camera;
-  vtkCamera* camera = renderer->GetActiveCamera();
-  double v[3];
-  camera->SetViewAngle(c.viewAngle);
-  toDouble(c.viewUp, v);
-  camera->SetViewUp(v);
-  if (c.hasPosition)
-  {
-    toDouble(c.position, v);
-    camera->SetPosition(v);
-    toDouble(c.focalPoint, v);
-    camera->SetFocalPoint(v);
-  }
-  else
-  {
-    camera->SetPosition(0.0, 0.0, 1.0);
-    camera->SetFocalPoint(0.0, 0.0, 0.0);
-    renderer->ResetCamera();
-    camera->Azimuth(c.azimuth);
-    camera->Elevation(c.elevation);
-  }
-  camera->OrthogonalizeViewUp();
+  double bounds[6];
+  renderer->ComputeVisiblePropBounds(bounds);
+  const int* size = renderer->GetRenderWindow() ? renderer->GetSize() : nullptr;
+  const bool sized = size && size[0] > 0 && size[1] > 0;
+  this->ApplyCamera(renderer->GetActiveCamera(), bounds, sized ? size[0] : 0, sized ? size[1] : 0);
   renderer->ResetCameraClippingRange();
 }
 
 void slScene::ApplyToRenderer(vtkRenderer* renderer)
+{
+  this->ApplyToRenderer(renderer, nullptr, 0, 0);
+}
+
+void slScene::ApplyToRenderer(vtkRenderer* renderer, const double bounds[6], int width, int height)
 {
   this->ConversionNotes.clear();
   double c[3];
   toDouble(this->Data->background, c);
   renderer->SetBackground(c);
   this->ApplyLights(renderer);
-  this->ApplyCamera(renderer);
+  if (bounds)
+  {
+    this->ApplyCamera(renderer->GetActiveCamera(), bounds, width, height);
+    renderer->ResetCameraClippingRange();
+  }
+  else
+  {
+    this->ApplyCamera(renderer);
+  }
 }
 
 bool slScene::ApplyToActor(vtkActor* actor)

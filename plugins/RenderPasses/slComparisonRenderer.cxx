@@ -141,7 +141,7 @@ bool slComparisonRenderer::Render()
     renderer->AddActor(actor);
     labels.push_back(label(panel.label, this->PanelHeight));
     renderer->AddActor2D(labels.back());
-    this->Scene->ApplyToRenderer(renderer); // the first call places the shared camera
+    this->Scene->ApplyToRenderer(renderer, mesh->GetBounds(), this->PanelWidth, this->PanelHeight);
     vtkNew<slLightingPass> pass;
     pass->SetScene(this->Scene);
     pass->SetModel(panel.model);

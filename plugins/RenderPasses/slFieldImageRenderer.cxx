@@ -56,8 +56,8 @@ vtkSmartPointer<vtkFloatArray> scalarsOf(vtkDataArray* array)
   return out;
 }
 
-/// Diverging blue-white-red, symmetric about 0, when the range straddles 0;
-/// otherwise a dark-blue-to-yellow ramp over the range.
+/// slDiverging (blue-white-red), symmetric about 0, when the range straddles
+/// 0; otherwise slRamp (dark blue to yellow) over the range.
 vtkSmartPointer<vtkLookupTable> lookupTableFor(double range[2])
 {
   auto table = vtkSmartPointer<vtkLookupTable>::New();
@@ -80,24 +80,10 @@ vtkSmartPointer<vtkLookupTable> lookupTableFor(double range[2])
   for (int i = 0; i < 256; ++i)
   {
     const double s = i / 255.0;
-    double rgb[3];
-    if (diverging)
-    {
-      const double t = 2.0 * s - 1.0;
-      const double blue[3] = { 0.23, 0.30, 0.75 }, red[3] = { 0.71, 0.02, 0.15 };
-      for (int c = 0; c < 3; ++c)
-      {
-        rgb[c] = t < 0.0 ? 1.0 + (blue[c] - 1.0) * -t : 1.0 + (red[c] - 1.0) * t;
-      }
-    }
-    else
-    {
-      const double a[3] = { 0.267, 0.005, 0.329 }, b[3] = { 0.128, 0.567, 0.551 }, c3[3] = { 0.993, 0.906, 0.144 };
-      for (int c = 0; c < 3; ++c)
-      {
-        rgb[c] = s < 0.5 ? a[c] + (b[c] - a[c]) * 2.0 * s : b[c] + (c3[c] - b[c]) * (2.0 * s - 1.0);
-      }
-    }
+    // The component views' ramps (slFalseColor.glsl), sampled into the table.
+    const glm::vec3 c = diverging ? shadelab::glsl::slDiverging(static_cast<float>(2.0 * s - 1.0))
+                                  : shadelab::glsl::slRamp(static_cast<float>(s));
+    const double rgb[3] = { c.x, c.y, c.z };
     table->SetTableValue(i, rgb[0], rgb[1], rgb[2], 1.0);
   }
   table->Build();
@@ -308,9 +294,9 @@ bool slFieldImageRenderer::Render()
   }
   // Place the shared camera on the mesh (the scene's camera or a fit), then
   // add the light glyphs, which need the final camera for camera lights.
-  this->Scene->ApplyToRenderer(renderers.front());
   double bounds[6];
   this->Mesh->GetBounds(bounds);
+  this->Scene->ApplyToRenderer(renderers.front(), bounds, this->PanelWidth, this->PanelHeight);
   for (auto& renderer : renderers)
   {
     renderer->SetBackground(renderers.front()->GetBackground());

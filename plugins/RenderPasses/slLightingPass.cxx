@@ -443,10 +443,22 @@ bool slLightingPass::SetShaderParameters(
   {
     return true; // not one of our shaders, or everything was optimised away
   }
+  shadelab::glsl::slMaterial m;
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  if (this->UseSceneMaterial && this->Scene)
+  {
+    m = shadelab::toEvaluationMaterial(this->Scene->GetScene().material);
+  }
+  else
+  {
+    m = actor ? materialOf(actor->GetProperty()) : shadelab::toEvaluationMaterial(shadelab::SceneMaterial());
+  }
+  // Each light with this actor's k_a, k_d, k_s folded in (slFoldLight), as
+  // the CPU kernel folds them; the shader shades with slUnitMaterial(slMat).
   const std::vector<shadelab::glsl::slLight>& lights = this->Internal->LightsVC;
   for (size_t i = 0; i < lights.size(); ++i)
   {
-    const shadelab::glsl::slLight& l = lights[i];
+    const shadelab::glsl::slLight l = shadelab::glsl::slFoldLight(lights[i], m);
     const LightUniformNames& n = this->Internal->Names[i];
     program->SetUniform3f(n.position.c_str(), &l.position[0]);
     program->SetUniform3f(n.direction.c_str(), &l.direction[0]);
@@ -458,17 +470,6 @@ bool slLightingPass::SetShaderParameters(
     program->SetUniformf(n.cosCutoff.c_str(), l.cosCutoff);
     program->SetUniformf(n.cosInner.c_str(), l.cosInner);
     program->SetUniformf(n.exponent.c_str(), l.exponent);
-  }
-
-  shadelab::glsl::slMaterial m;
-  vtkActor* actor = vtkActor::SafeDownCast(prop);
-  if (this->UseSceneMaterial && this->Scene)
-  {
-    m = shadelab::toEvaluationMaterial(this->Scene->GetScene().material);
-  }
-  else
-  {
-    m = actor ? materialOf(actor->GetProperty()) : shadelab::toEvaluationMaterial(shadelab::SceneMaterial());
   }
   program->SetUniform3f("slMat.ambient", &m.ambient[0]);
   program->SetUniform3f("slMat.diffuse", &m.diffuse[0]);

@@ -46,13 +46,12 @@ std::string declarations(const Variant& variant)
     "  return slParallel == 1 ? P + vec3(0.0f, 0.0f, 1.0f) : vec3(0.0f);\n"
     "}\n"
     "\n"
-    "// All lights (or the chosen one) at P, with k_a = k_d = 1 so that the base\n"
-    "// colour (scalars, texture) can multiply them afterwards; k_s is applied.\n"
+    "// All lights (or the chosen one) at P. The lights arrive with k_a, k_d, k_s\n"
+    "// folded in (slFoldLight), so the base colour (scalars, texture) multiplies\n"
+    "// the sum afterwards (slWithBaseColour).\n"
     "slTerms slLightAll(vec3 P, vec3 N)\n"
     "{\n"
-    "  slMaterial white = slMat;\n"
-    "  white.ambient = vec3(1.0f);\n"
-    "  white.diffuse = vec3(1.0f);\n"
+    "  slMaterial unit = slUnitMaterial(slMat);\n"
     "  vec3 n = slSafeNormalize(N);\n"
     "  vec3 v = slSafeNormalize(slEye(P) - P);\n"
     "  slTerms t = slZeroTerms();\n"
@@ -62,7 +61,7 @@ std::string declarations(const Variant& variant)
     "    {\n"
     "      slLight light = slLights[i];\n"
     "      light.type = slLightTypeOf(i);\n"
-    "      t = slAddTerms(t, slShadeLightUnit(light, white, slModel, P, n, v));\n"
+    "      t = slAddTerms(t, slShadeLightUnit(light, unit, slModel, P, n, v));\n"
     "    }\n"
     "  }\n"
     "  return t;\n"
@@ -139,6 +138,7 @@ std::string fragmentDeclarations(const Variant& variant, bool tangentNormalMap)
   std::string out = declarations(variant);
   if (tangentNormalMap)
   {
+    out += shadelab::normalMappingShaderSource();
     out += "in vec4 slTangentVC;\nuniform float slNormalScale;\n";
   }
   if (frequency == Flat)
@@ -150,24 +150,8 @@ std::string fragmentDeclarations(const Variant& variant, bool tangentNormalMap)
     out += "in vec3 slAmbientVS;\nin vec3 slDiffuseVS;\nin vec3 slSpecularVS;\nin float slCosThetaVS;\n"
            "in vec3 slAmbientBackVS;\nin vec3 slDiffuseBackVS;\nin vec3 slSpecularBackVS;\n";
   }
+  out += shadelab::falseColorShaderSource();
   out += "\n"
-         "// A perceptually ordered ramp (dark blue to yellow) for false colour.\n"
-         "vec3 slRamp(float s)\n"
-         "{\n"
-         "  s = clamp(s, 0.0f, 1.0f);\n"
-         "  vec3 a = vec3(0.267f, 0.005f, 0.329f);\n"
-         "  vec3 b = vec3(0.128f, 0.567f, 0.551f);\n"
-         "  vec3 c = vec3(0.993f, 0.906f, 0.144f);\n"
-         "  return s < 0.5f ? mix(a, b, 2.0f * s) : mix(b, c, 2.0f * s - 1.0f);\n"
-         "}\n"
-         "\n"
-         "// Blue for -1, white for 0, red for +1.\n"
-         "vec3 slDiverging(float s)\n"
-         "{\n"
-         "  s = clamp(s, -1.0f, 1.0f);\n"
-         "  return s < 0.0f ? mix(vec3(1.0f), vec3(0.23f, 0.30f, 0.75f), -s) : mix(vec3(1.0f), vec3(0.71f, 0.02f, 0.15f), s);\n"
-         "}\n"
-         "\n"
          "vec3 slShowScalar(float s)\n"
          "{\n"
          "  return slFalseColor == 1 ? slRamp(s) : vec3(clamp(s, 0.0f, 1.0f));\n"
@@ -176,9 +160,10 @@ std::string fragmentDeclarations(const Variant& variant, bool tangentNormalMap)
          "// The picture: the total, or one component for teaching and debugging.\n"
          "vec3 slCompose(slTerms t, float cosTheta, vec3 base)\n"
          "{\n"
-         "  vec3 ambient = t.ambient * slMat.ambient * base;\n"
-         "  vec3 diffuse = t.diffuse * slMat.diffuse * base;\n"
-         "  vec3 specular = t.specular;\n"
+         "  slTerms coloured = slWithBaseColour(t, base);\n"
+         "  vec3 ambient = coloured.ambient;\n"
+         "  vec3 diffuse = coloured.diffuse;\n"
+         "  vec3 specular = coloured.specular;\n"
          "  vec3 emission = slMat.emission;\n"
          "  if (slComponent == 1) { return slFalseColor == 1 ? slRamp(slLuminance(ambient)) : ambient; }\n"
          "  if (slComponent == 2) { return slFalseColor == 1 ? slRamp(slLuminance(diffuse)) : diffuse; }\n"
@@ -228,12 +213,9 @@ std::string fragmentImplementation(Frequency frequency, const FragmentInputs& in
       if (inputs.tangentNormalMap)
       {
         // Tangent-space normal map (OpenGL, green up) with MikkTSpace
-        // handedness: bitangent = w (N x T).
-        out += "    vec3 slTan = normalize(slTangentVC.xyz - dot(slTangentVC.xyz, normalVCVSOutput) * normalVCVSOutput);\n"
-               "    vec3 slBit = (slTangentVC.w < 0.0f ? -1.0f : 1.0f) * cross(normalVCVSOutput, slTan);\n"
-               "    vec3 slNts = texture(normalTex, tcoordVCVSOutput).xyz * 2.0f - 1.0f;\n"
-               "    slNts = normalize(slNts * vec3(slNormalScale, slNormalScale, 1.0f));\n"
-               "    normalVCVSOutput = normalize(mat3(slTan, slBit, normalVCVSOutput) * slNts);\n";
+        // handedness, decoded as the CPU's slNormalMapFilter does.
+        out += "    normalVCVSOutput = slTangentToSurface(slDecodeNormal(texture(normalTex, tcoordVCVSOutput).rgb, 1.0f,"
+               " slNormalScale), normalVCVSOutput, slTangentVC.xyz, slTangentVC.w);\n";
       }
       out += "    slT = slLightAll(vertexVC.xyz, normalVCVSOutput);\n"
              "    slCos = slComponent == 5 ? slChosenCosTheta(vertexVC.xyz, normalVCVSOutput) : 0.0f;\n";

@@ -175,7 +175,8 @@ bool slSceneRenderer::Prepare()
     this->Scene->ApplyMaterial(overlayActor->GetProperty());
     this->Renderer->AddActor(overlayActor);
   }
-  this->Scene->ApplyToRenderer(this->Renderer);
+  // Fitted to the mesh alone (not the overlays), as the CPU filters fit it.
+  this->Scene->ApplyToRenderer(this->Renderer, mesh->GetBounds(), this->Width, this->Height);
   if (this->UseShadeLabLighting)
   {
     // The pass reads the scene's model and frequency each time it is given the scene.

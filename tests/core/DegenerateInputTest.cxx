@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 
 using namespace shadelab;
@@ -57,23 +58,61 @@ TEST(Degenerate, ZeroNormalGivesOnlyAmbientAndEmission)
   }
 }
 
+/// Diffuse of a white unit light at N.L = 1 on k_d = 1: rho, or rho/pi for
+/// the energy-normalised models (docs/lighting-core.md).
+float unitDiffuse(int model)
+{
+  const bool normalised = model == glsl::SL_MODEL_LAMBERT_NORMALIZED || model == glsl::SL_MODEL_PHONG_NORMALIZED ||
+    model == glsl::SL_MODEL_BLINN_PHONG_NORMALIZED;
+  return normalised ? static_cast<float>(1.0 / M_PI) : 1.0f;
+}
+
 TEST(Degenerate, LightAtTheShadedPoint)
 {
+  // A positional light exactly at the shaded point has no direction: it adds
+  // its ambient term (reach 1: d = 0 gives f_att = min(1, 1/(c3 d^2)) = 1)
+  // and nothing else. Beside it, a directional light from +z shades as usual.
+  const glm::vec3 p(0, 0, 1), n(0, 0, 1), eye(0, 0, 5);
+  glsl::slMaterial m = unitMaterial(8);
+  m.ambient = glm::vec3(1.0f);
+  m.emission = glm::vec3(0.5f);
+  glsl::slLight atPoint = everyLightType()[1];
+  ASSERT_EQ(atPoint.position, p);
+  atPoint.ambient = glm::vec3(0.25f);
   for (int model : kAllModels)
   {
-    const auto t =
-      shadePoint(everyLightType(), unitMaterial(8), model, glm::vec3(0, 0, 1), glm::vec3(0, 0, 1), glm::vec3(0, 0, 5));
-    expectFinite(t, "light at point");
+    const auto alone = shadePoint({ atPoint }, m, model, p, n, eye);
+    expectFinite(alone, "light at point");
+    EXPECT_EQ(alone.diffuse, glm::vec3(0.0f)) << model;
+    EXPECT_EQ(alone.specular, glm::vec3(0.0f)) << model;
+    EXPECT_EQ(alone.ambient, glm::vec3(0.25f)) << model;
+    EXPECT_EQ(alone.emission, glm::vec3(0.5f)) << model;
+
+    const auto both = shadePoint({ atPoint, directionalFrom(n) }, m, model, p, n, eye);
+    EXPECT_NEAR(both.diffuse.x, unitDiffuse(model), 1e-6f) << model;
+    EXPECT_EQ(both.ambient, glm::vec3(0.25f)) << model;
   }
 }
 
 TEST(Degenerate, EyeAtTheShadedPoint)
 {
+  // The eye at the point leaves no view direction: the view-independent
+  // terms are exact, and specular stays finite and within its peak value.
+  const glm::vec3 p(0.0f), n(0, 0, 1);
   for (int model : kAllModels)
   {
-    expectFinite(shadePoint(everyLightType(), unitMaterial(8), model, glm::vec3(0.0f), glm::vec3(0, 0, 1),
-                   glm::vec3(0.0f)),
-      "eye at point");
+    const auto t = shadePoint({ directionalFrom(n) }, unitMaterial(8), model, p, n, p);
+    expectFinite(t, "eye at point");
+    EXPECT_NEAR(t.diffuse.x, unitDiffuse(model), 1e-6f) << model;
+    EXPECT_EQ(t.ambient, glm::vec3(0.0f)) << model;
+    // Peak of the normalised Phong lobe, (n + 2) / (2 pi), bounds every model here.
+    EXPECT_GE(t.specular.x, 0.0f) << model;
+    EXPECT_LE(t.specular.x, static_cast<float>((8 + 2) / (2 * M_PI)) + 1e-6f) << model;
+  }
+  // Every light type at once stays finite too.
+  for (int model : kAllModels)
+  {
+    expectFinite(shadePoint(everyLightType(), unitMaterial(8), model, p, n, p), "eye at point, every light");
   }
 }
 

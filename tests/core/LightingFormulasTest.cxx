@@ -271,3 +271,44 @@ TEST(Luminance, IsTheRec709Weighting)
   EXPECT_NEAR(shadelab::glsl::slLuminance(glm::vec3(0, 0, 1)), 0.0722f, 1e-7f);
   EXPECT_NEAR(shadelab::glsl::slLuminance(glm::vec3(0.37f)), 0.37f, 1e-6f);
 }
+
+TEST(ColourProducts, FoldedLightShadesAsTheLightAndMaterial)
+{
+  // slFoldLight + slUnitMaterial (how the CPU kernel and the render pass
+  // shade) against slShadeLightUnit with the light and material as given,
+  // and the lecture's products written out here: intensity x light colour x
+  // coefficient x weight, then the base colour on ambient and diffuse.
+  glsl::slLight light = whiteLight(glsl::SL_LIGHT_POINT);
+  light.position = glm::vec3(0.4f, -0.3f, 2.0f);
+  light.ambient = glm::vec3(0.1f, 0.2f, 0.3f);
+  light.diffuse = glm::vec3(0.9f, 0.5f, 0.2f);
+  light.specular = glm::vec3(0.3f, 0.6f, 0.9f);
+  light.intensity = 1.7f;
+  light.attenuation = glm::vec3(0.5f, 0.1f, 0.2f);
+  glsl::slMaterial m = unitMaterial(24.0f);
+  m.ambient = glm::vec3(0.25f, 0.5f, 0.75f);
+  m.diffuse = glm::vec3(0.6f, 0.3f, 0.15f);
+  m.specular = glm::vec3(0.2f, 0.4f, 0.8f);
+  m.emission = glm::vec3(0.05f);
+  const glm::vec3 base(0.5f, 0.8f, 1.0f);
+  const glm::vec3 P(0.1f, 0.0f, 0.0f), n = glm::normalize(glm::vec3(0.1f, 0.2f, 1.0f));
+  const glm::vec3 v = glm::normalize(glm::vec3(-0.3f, 0.1f, 1.0f));
+  for (int model = 0; model < 6; ++model)
+  {
+    const glsl::slTerms direct = glsl::slShadeLightUnit(light, m, model, P, n, v);
+    const glsl::slTerms folded =
+      glsl::slShadeLightUnit(glsl::slFoldLight(light, m), glsl::slUnitMaterial(m), model, P, n, v);
+    const glsl::slLightWeights w = glsl::slLightWeightsAt(light, model, P, n, v, m.shininess);
+    const glsl::slTerms coloured = glsl::slWithBaseColour(folded, base);
+    for (int c = 0; c < 3; ++c)
+    {
+      EXPECT_NEAR(folded.ambient[c], direct.ambient[c], 1e-6f * std::abs(direct.ambient[c]) + 1e-9f) << model;
+      EXPECT_NEAR(folded.diffuse[c], direct.diffuse[c], 1e-6f * std::abs(direct.diffuse[c]) + 1e-9f) << model;
+      EXPECT_NEAR(folded.specular[c], direct.specular[c], 1e-6f * std::abs(direct.specular[c]) + 1e-9f) << model;
+      // w carries the intensity: w = intensity x reach x factor.
+      EXPECT_NEAR(coloured.ambient[c], w.ambient * light.ambient[c] * m.ambient[c] * base[c], 1e-6) << model;
+      EXPECT_NEAR(coloured.diffuse[c], w.diffuse * light.diffuse[c] * m.diffuse[c] * base[c], 1e-6) << model;
+      EXPECT_NEAR(coloured.specular[c], w.specular * light.specular[c] * m.specular[c], 1e-6) << model;
+    }
+  }
+}

@@ -1,11 +1,15 @@
 // The 8-lane batch types (SIMDFloat8.h, SIMDVec3x8.h) that compile
 // slLighting.glsl for the radiance filter's loop: their built-ins against
 // <cmath>, and lane independence of the mix() selects.
+#include "shadelab/LightingGLSL.h"
 #include "shadelab/LightingGLSLBatch.h"
+#include "shadelab/LightingGLSLDouble.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 using shadelab::simd::vfloat8;
@@ -174,5 +178,60 @@ TEST(SIMDBatch, SelectsAreLaneByLaneAndKeepNaNOut)
   for (int i = 0; i < 8; ++i)
   {
     EXPECT_NEAR(p.v[i], expected[i], 1e-6) << "lane " << i;
+  }
+}
+
+TEST(SIMDBatch, SpecularWithinTwiceFloatEvaluationAtEveryShininess)
+{
+  // The batch compilation's specular factor (the radiance kernel's) against
+  // the same formula in double (LightingGLSLDouble.h) from the same float
+  // N, L, V, beside the plain float compilation (libm's powf): its largest
+  // relative error over the lobe stays within twice the plain float one's.
+  // The bounds per shininess are in docs/lighting-cpu.md.
+  namespace glsl = shadelab::glsl;
+  namespace glsl8 = shadelab::glsl8;
+  namespace glsld = shadelab::glsld;
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int model : { glsl::SL_MODEL_PHONG, glsl::SL_MODEL_BLINN_PHONG })
+  {
+    for (float n : { 10.0f, 100.0f, 1000.0f, 2000.0f, 10000.0f, 100000.0f, 40.5f, 2000.5f })
+    {
+      double worstBatch = 0.0, worstFloat = 0.0;
+      for (int round = 0; round < 4000; ++round)
+      {
+        float lx[8], lz[8], vx[8], vy[8], vz[8];
+        for (int i = 0; i < 8; ++i)
+        {
+          // L at up to 80 degrees; V within 2 lobe widths of the mirror direction.
+          const double ti = 1.4 * unit(random), d = 2.0 * unit(random) / std::sqrt(double(n)),
+                       phi = 6.283185307179586 * unit(random);
+          lx[i] = float(std::sin(ti));
+          lz[i] = float(std::cos(ti));
+          const glm::dvec3 R(-std::sin(ti), 0.0, std::cos(ti)), T(std::cos(ti), 0.0, std::sin(ti));
+          const glm::dvec3 V = std::cos(d) * R + std::sin(d) * (std::cos(phi) * T + std::sin(phi) * glm::dvec3(0, 1, 0));
+          vx[i] = float(V.x);
+          vy[i] = float(V.y);
+          vz[i] = float(V.z);
+        }
+        const shadelab::simd::vec3x8 N(vfloat8(0.0f), vfloat8(0.0f), vfloat8(1.0f));
+        const shadelab::simd::vec3x8 L(lanes(lx), vfloat8(0.0f), lanes(lz));
+        const shadelab::simd::vec3x8 V(lanes(vx), lanes(vy), lanes(vz));
+        const vfloat8 batch = glsl8::slSpecularFactor(model, N, L, V, vfloat8(n));
+        for (int i = 0; i < 8; ++i)
+        {
+          const glm::vec3 Nf(0.0f, 0.0f, 1.0f), Lf(lx[i], 0.0f, lz[i]), Vf(vx[i], vy[i], vz[i]);
+          const double exact = glsld::slSpecularFactor(model, glm::dvec3(Nf), glm::dvec3(Lf), glm::dvec3(Vf), n);
+          if (exact < 1e-3)
+          {
+            continue;
+          }
+          worstBatch = std::max(worstBatch, std::abs(batch.v[i] - exact) / exact);
+          worstFloat = std::max(worstFloat, std::abs(glsl::slSpecularFactor(model, Nf, Lf, Vf, n) - exact) / exact);
+        }
+      }
+      std::printf("model %d n %g: batch %.3g, float %.3g relative\n", model, double(n), worstBatch, worstFloat);
+      EXPECT_LE(worstBatch, 2.0 * worstFloat) << "model " << model << " n " << n;
+    }
   }
 }

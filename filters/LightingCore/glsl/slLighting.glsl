@@ -300,6 +300,44 @@ SL_FUNC slTerms slWeightedTerms(slLightWeights w, slLight light, slMaterial m)
   return t;
 }
 
+// The lighting equation is linear in each light's intensity and colours and
+// in the material's k_a, k_d and k_s, so their products can be formed once
+// per light rather than once per point and light: slFoldLight multiplies the
+// intensity and k_a, k_d, k_s into the light's colours (intensity 1), and
+// slUnitMaterial is the material left to shade with (k_a = k_d = k_s = 1,
+// emission and shininess kept). slShadeLightUnit(slFoldLight(l, m),
+// slUnitMaterial(m), ...) is slShadeLightUnit(l, m, ...). The CPU radiance
+// kernel and the render pass both shade this way.
+SL_FUNC slLight slFoldLight(slLight light, slMaterial m)
+{
+  slLight folded = light;
+  folded.ambient = light.intensity * (light.ambient * m.ambient);
+  folded.diffuse = light.intensity * (light.diffuse * m.diffuse);
+  folded.specular = light.intensity * (light.specular * m.specular);
+  folded.intensity = 1.0f;
+  return folded;
+}
+
+SL_FUNC slMaterial slUnitMaterial(slMaterial m)
+{
+  slMaterial unit = m;
+  unit.ambient = vec3(1.0f);
+  unit.diffuse = vec3(1.0f);
+  unit.specular = vec3(1.0f);
+  return unit;
+}
+
+// A base colour (vertex colours, a diffuse texture) multiplies k_a and k_d,
+// so it multiplies the ambient and diffuse terms, once per point after the
+// lights are summed.
+SL_FUNC slTerms slWithBaseColour(slTerms t, vec3 base)
+{
+  slTerms coloured = t;
+  coloured.ambient = t.ambient * base;
+  coloured.diffuse = t.diffuse * base;
+  return coloured;
+}
+
 // What one light contributes at surface point P with unit normal n and unit
 // direction v toward the eye: ambient, diffuse and specular. Shaders
 // normalise n and v once for all lights.
@@ -337,7 +375,7 @@ SL_FUNC vec3 slTotal(slTerms t)
 }
 
 // ---------------------------------------------------------------------------
-// Derived quantities for the CPU lighting filters (issue 4). Each is built on
+// Derived quantities for the CPU lighting filters. Each is built on
 // the functions above, never a second copy of their formulas.
 
 // Below this cosine an incident direction counts as grazing: slBRDF returns 0

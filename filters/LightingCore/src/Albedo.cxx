@@ -1,32 +1,137 @@
 #include "shadelab/Albedo.h"
 
+#include "shadelab/LightingGLSLDouble.h"
+
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace shadelab
 {
 
-double directionalAlbedo(int model, const glsl::slMaterial& material, double thetaI, int steps)
+namespace
 {
-  const double pi = 3.14159265358979323846;
-  const glm::vec3 N(0.0f, 0.0f, 1.0f);
-  const glm::vec3 L(static_cast<float>(std::sin(thetaI)), 0.0f, static_cast<float>(std::cos(thetaI)));
-  const double dTheta = 0.5 * pi / steps, dPhi = pi / steps;
-  double sum = 0.0;
-  for (int i = 0; i < steps; ++i)
+constexpr double kPi = 3.14159265358979323846;
+
+// 15-point Kronrod nodes on [-1, 1] (the odd ones are the 7-point Gauss
+// nodes) and weights, from QUADPACK.
+constexpr double kNodes[8] = { 0.991455371120812639206854697526329, 0.949107912342758524526189684047851,
+  0.864864423359769072789712788640926, 0.741531185599394439863864773280788, 0.586087235467691130294144845693013,
+  0.405845151377397166906606412076961, 0.207784955007898467600689403773245, 0.0 };
+constexpr double kKronrod[8] = { 0.022935322010529224963732008058970, 0.063092092629978553290700663189204,
+  0.104790010322250183839876322541518, 0.140653259715525918745189590510238, 0.169004726639267902826583426598550,
+  0.190350578064785409913256402421014, 0.204432940075298892414161999234649, 0.209482141084727828012999174891714 };
+constexpr double kGauss[4] = { 0.129484966168869693270611432679082, 0.279705391489276667901467771423780,
+  0.381830050505118944950369775488975, 0.417959183673469387755102040816327 };
+
+constexpr int kMaxDepth = 40;
+
+/// Integral of @p f over [a, b], bisecting until |K15 - G7| <= @p tolerance
+/// (each half gets half of it).
+template <class F>
+double adaptive(const F& f, double a, double b, double tolerance, int depth = 0)
+{
+  const double centre = 0.5 * (a + b), half = 0.5 * (b - a);
+  const double middle = f(centre);
+  double kronrod = kKronrod[7] * middle, gauss = kGauss[3] * middle;
+  for (int i = 0; i < 7; ++i)
   {
-    const double thetaO = (i + 0.5) * dTheta;
-    double ring = 0.0;
-    for (int j = 0; j < 2 * steps; ++j)
+    const double sum = f(centre - half * kNodes[i]) + f(centre + half * kNodes[i]);
+    kronrod += kKronrod[i] * sum;
+    if (i % 2 == 1)
     {
-      const double phiO = (j + 0.5) * dPhi;
-      const glm::vec3 V(static_cast<float>(std::sin(thetaO) * std::cos(phiO)),
-        static_cast<float>(std::sin(thetaO) * std::sin(phiO)), static_cast<float>(std::cos(thetaO)));
-      const glm::vec3 f = glsl::slBRDF(model, material, N, L, V);
-      ring += (f.x + f.y + f.z) / 3.0;
+      gauss += kGauss[i / 2] * sum;
     }
-    sum += ring * std::cos(thetaO) * std::sin(thetaO);
   }
-  return sum * dTheta * dPhi;
+  kronrod *= half;
+  gauss *= half;
+  if (std::abs(kronrod - gauss) <= tolerance || depth >= kMaxDepth)
+  {
+    return kronrod;
+  }
+  return adaptive(f, a, centre, 0.5 * tolerance, depth + 1) + adaptive(f, centre, b, 0.5 * tolerance, depth + 1);
+}
+
+/// Integral over [0, end] of @p f split at @p breaks (ascending, those inside).
+template <class F>
+double piecewise(const F& f, const std::vector<double>& breaks, double end, double tolerance)
+{
+  double sum = 0.0, start = 0.0;
+  for (double b : breaks)
+  {
+    if (b > start && b < end)
+    {
+      sum += adaptive(f, start, b, tolerance * (b - start) / end);
+      start = b;
+    }
+  }
+  return sum + adaptive(f, start, end, tolerance * (end - start) / end);
+}
+} // namespace
+
+double directionalAlbedo(int model, const glsl::slMaterial& material, double thetaI)
+{
+  glsld::slMaterial m;
+  m.ambient = glm::dvec3(material.ambient);
+  m.diffuse = glm::dvec3(material.diffuse);
+  m.specular = glm::dvec3(material.specular);
+  m.emission = glm::dvec3(material.emission);
+  m.shininess = material.shininess;
+  const double sinI = std::sin(thetaI), cosI = std::cos(thetaI);
+  const glm::dvec3 N(0.0, 0.0, 1.0), L(sinI, 0.0, cosI);
+  const bool blinn = model == glsl::SL_MODEL_BLINN_PHONG || model == glsl::SL_MODEL_BLINN_PHONG_NORMALIZED;
+
+  // f_r cos(theta_o) for V toward the eye, mean of R, G, B.
+  auto integrand = [&](const glm::dvec3& V) {
+    const glm::dvec3 f = glsld::slBRDF(model, m, N, L, V);
+    return (f.x + f.y + f.z) / 3.0 * std::max(0.0, V.z);
+  };
+
+  // Polar breakpoints: the lobe's width times 1, 2, 4, ... and, for Phong,
+  // the kink of max(0, R.V)^n at a right angle from R.
+  std::vector<double> breaks;
+  for (double b = 0.25 / std::sqrt(m.shininess + 1.0); b < kPi; b *= 2.0)
+  {
+    breaks.push_back(b);
+  }
+  if (!blinn)
+  {
+    breaks.push_back(0.5 * kPi);
+    std::sort(breaks.begin(), breaks.end());
+  }
+
+  // The frame of the pole: R with T1 in the plane of incidence (N.T1 =
+  // sin theta_i) for the Phong and Lambert models; N for Blinn-Phong's H.
+  const glm::dvec3 R(-sinI, 0.0, cosI), T1(cosI, 0.0, sinI), T2(0.0, 1.0, 0.0);
+  auto overAzimuth = [&](double phi, double tolerance) {
+    const double cosPhi = std::cos(phi), sinPhi = std::sin(phi);
+    // N.V = A cos(t - delta) (Phong, t the angle from R) or A cos(2t - delta)
+    // (Blinn-Phong, t the angle of H from N): the horizon is at
+    // t = pi/2 + delta, or half that.
+    const double delta = std::atan2(sinI * cosPhi, cosI);
+    if (blinn)
+    {
+      auto f = [&](double t) {
+        const glm::dvec3 H(std::sin(t) * cosPhi, std::sin(t) * sinPhi, std::cos(t));
+        const double LdotH = glm::dot(L, H);
+        return integrand(2.0 * LdotH * H - L) * 4.0 * LdotH * std::sin(t);
+      };
+      return piecewise(f, breaks, 0.5 * (0.5 * kPi + delta), tolerance);
+    }
+    auto f = [&](double t) {
+      const glm::dvec3 V = std::cos(t) * R + std::sin(t) * (cosPhi * T1 + sinPhi * T2);
+      return integrand(V) * std::sin(t);
+    };
+    return piecewise(f, breaks, 0.5 * kPi + delta, tolerance);
+  };
+
+  // The integrand is even in the azimuth (mirror symmetry about the plane of
+  // incidence): twice the integral over [0, pi]. A first pass sets the scale
+  // of the tolerance.
+  const double rough = 2.0 * adaptive([&](double phi) { return overAzimuth(phi, 1e-4); }, 0.0, kPi, 1e-2);
+  const double tolerance = 1e-9 * std::max(1.0, std::abs(rough));
+  auto outer = [&](double phi) { return overAzimuth(phi, 0.1 * tolerance); };
+  return 2.0 * (adaptive(outer, 0.0, 0.5 * kPi, 0.25 * tolerance) + adaptive(outer, 0.5 * kPi, kPi, 0.25 * tolerance));
 }
 
 } // namespace shadelab

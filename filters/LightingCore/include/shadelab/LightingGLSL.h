@@ -3,7 +3,9 @@
 /**
  * @file LightingGLSL.h
  * @brief The ShadeLab lighting equation compiled as C++: glsl/slLighting.glsl
- * included into namespace shadelab::glsl with GLM standing in for GLSL.
+ * included into namespace shadelab::glsl with GLM standing in for GLSL, and
+ * after it glsl/slNormalMapping.glsl (slDecodeNormal, slTangentToSurface) and
+ * glsl/slFalseColor.glsl (slRamp, slDiverging).
  *
  * This is how the CPU side evaluates the very same source text that the render
  * pass embeds into its shaders (see LightingShaderSource.h). Nothing here may
@@ -23,6 +25,8 @@ namespace glsl
 using namespace glm;
 #define SL_FUNC inline
 #include "slLighting.glsl"
+#include "slNormalMapping.glsl"
+#include "slFalseColor.glsl"
 #undef SL_FUNC
 } // namespace glsl
 } // namespace shadelab

@@ -1,0 +1,88 @@
+#include "BenchMachine.h"
+
+#include <vtkSMPTools.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <memory>
+#include <thread>
+
+namespace
+{
+/// The value after "key" and a colon on the first line of @p file that starts with it.
+std::string field(const char* file, const std::string& key)
+{
+  std::ifstream in(file);
+  for (std::string line; std::getline(in, line);)
+  {
+    if (line.compare(0, key.size(), key) == 0)
+    {
+      const size_t colon = line.find(':');
+      return colon == std::string::npos ? "" : line.substr(line.find_first_not_of(" \t", colon + 1));
+    }
+  }
+  return "";
+}
+
+/// Best copy bandwidth in GB/s of @p bytes from @p from to @p to, split over @p chunks.
+double copyBandwidth(const char* from, char* to, size_t bytes, int chunks, bool parallel)
+{
+  double best = 0;
+  for (int r = 0; r < 5; ++r)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    auto copy = [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType c = begin; c < end; ++c)
+      {
+        const size_t first = bytes / chunks * c, last = c + 1 == chunks ? bytes : bytes / chunks * (c + 1);
+        std::memcpy(to + first, from + first, last - first);
+      }
+    };
+    if (parallel)
+    {
+      vtkSMPTools::For(0, chunks, 1, copy);
+    }
+    else
+    {
+      copy(0, chunks);
+    }
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    best = std::max(best, 2.0 * static_cast<double>(bytes) / s / 1e9);
+  }
+  return best;
+}
+} // namespace
+
+BenchMachine BenchMachine::measure()
+{
+  BenchMachine m;
+  m.cpuModel = field("/proc/cpuinfo", "model name");
+  m.logicalCores = static_cast<int>(std::thread::hardware_concurrency());
+  m.threads = vtkSMPTools::GetEstimatedNumberOfThreads();
+  m.smpBackend = vtkSMPTools::GetBackend();
+  m.memoryGiB = std::atof(field("/proc/meminfo", "MemTotal").c_str()) / (1024.0 * 1024.0); // kB
+  std::ifstream load("/proc/loadavg");
+  std::string a, b, c;
+  load >> a >> b >> c;
+  m.loadAverage = a + " " + b + " " + c;
+
+  const size_t bytes = size_t(256) << 20;
+  std::unique_ptr<char[]> from(new char[bytes]), to(new char[bytes]);
+  std::memset(from.get(), 1, bytes); // map every page before timing
+  std::memset(to.get(), 0, bytes);
+  m.bandwidthOneThread = copyBandwidth(from.get(), to.get(), bytes, 64, false);
+  m.bandwidthAllThreads = copyBandwidth(from.get(), to.get(), bytes, 64, true);
+  return m;
+}
+
+void BenchMachine::print() const
+{
+  std::printf("machine: %s, %d logical cores, %.1f GiB; load average %s\n", this->cpuModel.c_str(),
+    this->logicalCores, this->memoryGiB, this->loadAverage.c_str());
+  std::printf("threads: %d (vtkSMPTools backend %s)\n", this->threads, this->smpBackend.c_str());
+  std::printf("memory bandwidth (256 MiB copy, read + write, best of 5): %.1f GB/s on 1 thread, %.1f GB/s on %d\n\n",
+    this->bandwidthOneThread, this->bandwidthAllThreads, this->threads);
+}

@@ -1,0 +1,30 @@
+#ifndef BenchTiming_h
+#define BenchTiming_h
+/**
+ * @brief Times repeated runs of a job: wall-clock and CPU seconds (user +
+ *        system, all threads) of each run, with the median and the range.
+ *
+ * Input: the number of runs and the job. Output: every run's times, so a
+ * bench can print the median with its range, never a single run.
+ */
+#include <functional>
+#include <vector>
+
+struct BenchTimes
+{
+  std::vector<double> wall; ///< seconds, one per run
+  std::vector<double> cpu;  ///< CPU seconds of each run, all threads together
+
+  double median() const;    ///< median wall seconds
+  double minimum() const;
+  double maximum() const;
+  double medianCpu() const; ///< median CPU seconds
+};
+
+/// Runs @p job @p runs times and times each run.
+BenchTimes timeRuns(int runs, const std::function<void()>& job);
+
+/// Median of @p values (the upper one of the middle two for an even count).
+double medianOf(std::vector<double> values);
+
+#endif
