@@ -445,7 +445,8 @@ TEST(ComponentViews, FalseColourIsTheFieldImagesRamp)
 
   stage.pass->SetComponent(slLightingPass::COS_THETA);
   const glm::vec3 cosColour = shadelab::glsl::slDiverging(std::cos(a));
-  const float* p = stage.render().at(50, 50);
+  const Image rendered = stage.render(); // kept: at() points into it
+  const float* p = rendered.at(50, 50);
   EXPECT_NEAR(p[0], cosColour.x, 1.0f / 255.0f);
   EXPECT_NEAR(p[1], cosColour.y, 1.0f / 255.0f);
   EXPECT_NEAR(p[2], cosColour.z, 1.0f / 255.0f);
@@ -453,7 +454,8 @@ TEST(ComponentViews, FalseColourIsTheFieldImagesRamp)
   stage.pass->SetComponent(slLightingPass::DIFFUSE);
   const glm::vec3 diffuse = scene.lights[0].diffuse * scene.material.diffuse * std::cos(a);
   const glm::vec3 rampColour = shadelab::glsl::slRamp(shadelab::glsl::slLuminance(diffuse));
-  const float* q = stage.render().at(50, 50);
+  const Image second = stage.render();
+  const float* q = second.at(50, 50);
   EXPECT_NEAR(q[0], rampColour.x, 1.0f / 255.0f);
   EXPECT_NEAR(q[1], rampColour.y, 1.0f / 255.0f);
   EXPECT_NEAR(q[2], rampColour.z, 1.0f / 255.0f);
