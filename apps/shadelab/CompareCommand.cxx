@@ -2,6 +2,7 @@
 #include "CommandLine.h"
 #include "Commands.h"
 #include "Inputs.h"
+#include "OutputFormats.h"
 
 #include "shadelab/Scene.h"
 #include "slComparisonRenderer.h"
@@ -22,7 +23,7 @@ int runCompare(const std::vector<std::string>& args)
 {
   const std::vector<OptionSpec> specs{
     { "scene", "s", "FILE", "JSON scene (default: ShadeLab's built-in scene)" },
-    { "output", "o", "FILE", "composite image to write (.png, .exr, ...)" },
+    { "output", "o", "FILE", outputHelp("composite image to write", OutputKind::Image) },
     { "models", "", "", "compare Lambert | Phong | Blinn-Phong (at the scene's frequency) instead of frequencies" },
     { "diff", "", "", "add a panel with the difference of the last two panels, amplified" },
     { "amplify", "", "X", "amplification of the difference panel (default 8)" },
@@ -39,6 +40,7 @@ int runCompare(const std::vector<std::string>& args)
     return 0;
   }
   const std::string meshPath = cl.meshWithOutput();
+  checkOutputOption(cl, "output", { OutputKind::Image });
   int width = 400, height = 300;
   if (cl.has("size"))
   {

@@ -3,6 +3,7 @@
 #include "Commands.h"
 #include "Inputs.h"
 #include "LightingOptions.h"
+#include "OutputFormats.h"
 
 #include "slCosineField.h"
 #include "slScene.h"
@@ -35,6 +36,8 @@ int runCosine(const std::vector<std::string>& args)
     return 0;
   }
   const std::string meshPath = cl.meshWithOutput();
+  checkOutputOption(cl, "output", { OutputKind::Mesh });
+  checkOutputOption(cl, "image", { OutputKind::Image });
   vtkNew<slCosineField> filter;
   vtkSmartPointer<slScene> scene = configureLitFilter(cl, filter);
   filter->SetLightIndex(cl.getIndex("light", -1, -1, 1000000));

@@ -3,6 +3,7 @@
 #include "Commands.h"
 #include "Inputs.h"
 #include "NormalsOptions.h"
+#include "OutputFormats.h"
 
 #include "slBumpMapFilter.h"
 #include "slDisplacementFilter.h"
@@ -24,7 +25,7 @@ namespace
 int runDetail(const std::vector<std::string>& args)
 {
   const std::vector<OptionSpec> specs{
-    { "output", "o", "FILE", "mesh to write (.vtp, .vtk, .ply, .obj, .stl)" },
+    { "output", "o", "FILE", outputHelp("mesh to write", OutputKind::Mesh) },
     { "normal-map", "", "IMG", "tangent-space normal map (OpenGL, green up)" },
     { "directx", "", "", "the normal map is DirectX (green down)" },
     { "strength", "", "S", "normal-map strength, 0-10 (default 1)" },
@@ -46,6 +47,7 @@ int runDetail(const std::vector<std::string>& args)
     return 0;
   }
   const std::string meshPath = cl.meshWithOutput();
+  checkOutputOption(cl, "output", { OutputKind::Mesh });
   const int modes = cl.has("normal-map") + cl.has("bump-map") + cl.has("displace");
   if (modes != 1)
   {

@@ -3,6 +3,7 @@
 #include "Commands.h"
 #include "Inputs.h"
 #include "LightingOptions.h"
+#include "OutputFormats.h"
 #include "slScene.h"
 
 #include "slImageReader.h"
@@ -38,6 +39,8 @@ int runLight(const std::vector<std::string>& args)
     return 0;
   }
   const std::string meshPath = cl.meshWithOutput();
+  checkOutputOption(cl, "output", { OutputKind::Mesh });
+  checkOutputOption(cl, "image", { OutputKind::Image });
   vtkNew<slRadianceFilter> filter;
   vtkSmartPointer<slScene> scene = configureLitFilter(cl, filter);
   filter->SetPerLightArrays(cl.has("per-light"));

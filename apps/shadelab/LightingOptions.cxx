@@ -1,4 +1,5 @@
 #include "LightingOptions.h"
+#include "OutputFormats.h"
 
 #include "Inputs.h"
 #include "slFieldImageRenderer.h"
@@ -23,9 +24,9 @@ std::vector<OptionSpec> litOptions()
   return {
     { "scene", "s", "FILE", "JSON scene (default: ShadeLab's built-in two-light scene)" },
     { "model", "", "NAME", "override the scene's lighting model" },
-    { "output", "o", "FILE", "mesh to write (.vtp, .vtk, .ply, ...); arrays are kept in .vtp and .vtk" },
+    { "output", "o", "FILE", outputHelp("mesh to write; .vtp and .vtk keep the arrays", OutputKind::Mesh) },
     { "allow-zero-normals", "", "", "light zero-length normals as 'no direction' instead of failing" },
-    { "image", "", "FILE", "also write an image of the fields, colour-mapped, with the lights drawn" },
+    { "image", "", "FILE", outputHelp("also write an image of the fields, colour-mapped, with the lights drawn", OutputKind::Image) },
     { "fields", "", "A,B,...", "arrays the image shows (default depends on the subcommand)" },
     { "help", "h", "", "show this help" },
   };

@@ -3,6 +3,7 @@
 #include "Commands.h"
 #include "Inputs.h"
 #include "LightingOptions.h"
+#include "OutputFormats.h"
 
 #include "shadelab/AtomicFile.h"
 #include "shadelab/Scene.h"
@@ -73,25 +74,6 @@ void writeTable(vtkTable* table, const std::string& path)
   }
 }
 
-/// True for the file types OpenImageIO writes as pictures.
-bool isImageFile(const std::string& path)
-{
-  const size_t dot = path.find_last_of('.');
-  std::string ext = dot == std::string::npos ? "" : path.substr(dot);
-  for (char& c : ext)
-  {
-    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  }
-  for (const char* image : { ".png", ".jpg", ".jpeg", ".exr", ".tif", ".tiff", ".hdr", ".bmp" })
-  {
-    if (ext == image)
-    {
-      return true;
-    }
-  }
-  return false;
-}
-
 std::vector<OptionSpec> lobeOptions()
 {
   std::vector<OptionSpec> specs = litOptions();
@@ -133,6 +115,10 @@ int runLobe(const std::vector<std::string>& args)
     throw UsageError("missing -o/--output FILE");
   }
   const std::string output = cl.get("output");
+  // The table is CSV; otherwise the extension chooses between a mesh and an image.
+  const OutputKind kind = cl.has("albedo-table") ? checkOutputName(output, { OutputKind::Table })
+                                                 : checkOutputName(output, { OutputKind::Mesh, OutputKind::Image });
+  checkOutputOption(cl, "slice", { OutputKind::Mesh });
   if (cl.has("albedo-table"))
   {
     vtkNew<slAlbedoTable> table;
@@ -140,7 +126,7 @@ int runLobe(const std::vector<std::string>& args)
     table->Update();
     writeTable(table->GetOutput(), output);
   }
-  else if (cl.positional().empty() && isImageFile(output))
+  else if (cl.positional().empty() && kind == OutputKind::Image)
   {
     // One image: the 3D lobes, the polar slice and the albedo curves.
     vtkNew<slLobeImageRenderer> image;
@@ -189,7 +175,7 @@ int runLobe(const std::vector<std::string>& args)
       std::cout << "drew " << lobes->GetNumberOfLobesDrawn() << " lobes: only that many points of " << meshPath
                 << " face the light\n";
     }
-    if (isImageFile(output))
+    if (kind == OutputKind::Image)
     {
       // The lit mesh with its lobes, in orange, through ShadeLab's lighting pass.
       vtkNew<slSceneRenderer> renderer;

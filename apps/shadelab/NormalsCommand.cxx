@@ -3,6 +3,7 @@
 #include "Commands.h"
 #include "Inputs.h"
 #include "NormalsOptions.h"
+#include "OutputFormats.h"
 
 #include "slPolyDataNormals.h"
 
@@ -21,7 +22,7 @@ namespace
 int runNormals(const std::vector<std::string>& args)
 {
   std::vector<OptionSpec> specs{
-    { "output", "o", "FILE", "mesh to write (.vtp, .vtk, .ply, .obj, .stl)" },
+    { "output", "o", "FILE", outputHelp("mesh to write", OutputKind::Mesh) },
     { "cells", "", "", "also write face normals (cell array \"Normals\"; VTP and VTK keep it)" },
   };
   for (const OptionSpec& s : normalsOptionSpecs())
@@ -41,6 +42,7 @@ int runNormals(const std::vector<std::string>& args)
     return 0;
   }
   const std::string meshPath = cl.meshWithOutput();
+  checkOutputOption(cl, "output", { OutputKind::Mesh });
   vtkNew<slPolyDataNormals> normals;
   applyNormalsOptions(cl, normals);
   normals->SetComputeCellNormals(cl.has("cells"));

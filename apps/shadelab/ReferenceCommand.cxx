@@ -3,6 +3,7 @@
 #include "Commands.h"
 #include "Inputs.h"
 #include "LightingOptions.h"
+#include "OutputFormats.h"
 
 #include "slRadianceReference.h"
 #include "slScene.h"
@@ -71,6 +72,8 @@ int runReference(const std::vector<std::string>& args)
     return 0;
   }
   const std::string meshPath = cl.meshWithOutput();
+  checkOutputOption(cl, "output", { OutputKind::Mesh });
+  checkOutputOption(cl, "image", { OutputKind::Image });
   vtkNew<slRadianceReference> filter;
   vtkSmartPointer<slScene> scene = configureLitFilter(cl, filter);
   if (cl.has("envmap"))

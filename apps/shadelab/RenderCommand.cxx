@@ -2,6 +2,7 @@
 #include "CommandLine.h"
 #include "Commands.h"
 #include "Inputs.h"
+#include "OutputFormats.h"
 
 #include "slImageWriter.h"
 #include "slLightingPass.h"
@@ -49,7 +50,7 @@ int runRender(const std::vector<std::string>& args)
 {
   const std::vector<OptionSpec> specs{
     { "scene", "s", "FILE", "JSON scene (default: ShadeLab's built-in two-light scene)" },
-    { "output", "o", "FILE", "image to write; format from the extension (.png, .exr, .tif, ...)" },
+    { "output", "o", "FILE", outputHelp("image to write", OutputKind::Image) },
     { "size", "", "WxH", "image size in pixels (default: the scene's imageSize)" },
     { "model", "", "NAME", "override the scene's lighting model" },
     { "frequency", "", "NAME", "override the scene's shading frequency: flat, gouraud, phong" },
@@ -71,6 +72,7 @@ int runRender(const std::vector<std::string>& args)
     return 0;
   }
   const std::string meshPath = cl.meshWithOutput();
+  checkOutputOption(cl, "output", { OutputKind::Image });
 
   vtkSmartPointer<slScene> scene = loadScene(cl.get("scene"));
   applySceneOverrides(cl, scene);

@@ -3,6 +3,7 @@
 #include "Commands.h"
 #include "Inputs.h"
 #include "NormalsOptions.h"
+#include "OutputFormats.h"
 
 #include "slPolyDataNormals.h"
 #include "slPolyDataTangents.h"
@@ -22,7 +23,7 @@ namespace
 {
 int runTangents(const std::vector<std::string>& args)
 {
-  std::vector<OptionSpec> specs{ { "output", "o", "FILE", "mesh to write (.vtp or .vtk keep the Tangents array)" } };
+  std::vector<OptionSpec> specs{ { "output", "o", "FILE", outputHelp("mesh to write; .vtp and .vtk keep the Tangents array", OutputKind::Mesh) } };
   for (const OptionSpec& s : normalsOptionSpecs())
   {
     specs.push_back(s);
@@ -41,6 +42,7 @@ int runTangents(const std::vector<std::string>& args)
     return 0;
   }
   const std::string meshPath = cl.meshWithOutput();
+  checkOutputOption(cl, "output", { OutputKind::Mesh });
   vtkNew<slPolyDataNormals> normals;
   applyNormalsOptions(cl, normals);
   const std::string& path = meshPath;

@@ -2,7 +2,7 @@
 #include "CommandLine.h"
 #include "Commands.h"
 
-#include <vtkObject.h>
+#include "slOutputWindow.h"
 
 #include <exception>
 #include <iostream>
@@ -66,17 +66,16 @@ int main(int argc, char** argv)
     std::cout << "shadelab " << SHADELAB_VERSION << "\n";
     return 0;
   }
-  // ShadeLab reports every problem itself, as one line; VTK's own multi-line
-  // reports (with source file names) would only repeat it. --verbose shows them.
+  // ShadeLab reports every problem itself, as one line that gives VTK's reason
+  // (slErrorCapture); VTK's own multi-line reports (with source file names)
+  // would only repeat it. --verbose shows them as well.
   const auto verbose = std::find(args.begin(), args.end(), "--verbose");
-  if (verbose != args.end())
+  const bool echo = verbose != args.end();
+  if (echo)
   {
     args.erase(verbose);
   }
-  else
-  {
-    vtkObject::GlobalWarningDisplayOff();
-  }
+  slOutputWindow::Install(echo);
 
   const std::string name = args[0];
   for (const auto& command : shadelab::app::commands())

@@ -2,13 +2,25 @@
 #define slErrorCapture_h
 /**
  * @class   slErrorCapture
- * @brief   Observer that records the text of VTK error and warning events.
+ * @brief   Records the text of the VTK errors and warnings of one operation.
  *
- * VTK readers report problems through vtkErrorMacro, which formats a
- * multi-line message and then carries on. slErrorCapture, attached to such a
- * reader, keeps the last error's own text (without the "ERROR: In file,
- * line" preamble) so ShadeLab can turn it into one line naming the file.
+ * VTK objects report problems through vtkErrorMacro, which formats a
+ * multi-line message and carries on. slErrorCapture keeps the first error's
+ * own text (without the "ERROR: In file, line" and "Class (0x...): "
+ * preambles) so ShadeLab can turn it into one line naming the file: the
+ * first, because later ones are its consequences (the executive's "returned
+ * failure for request").
+ *
+ * It hears two ways: the objects given to Watch() (their ErrorEvent and
+ * WarningEvent), and, while it exists, every message that reaches VTK's
+ * output window when that window is an slOutputWindow (the newest live
+ * capture gets it). The latter catches the objects a reader or writer makes
+ * internally. Both need vtkObject::GlobalWarningDisplay on: VTK formats no
+ * message at all while it is off.
+ *
  * Internal helper: not wrapped.
+ *
+ * @sa slOutputWindow
  */
 
 #include "ShadeLabIOModule.h"
@@ -30,20 +42,30 @@ public:
 
   void Execute(vtkObject* caller, unsigned long eventId, void* callData) override;
 
-  bool HasError() const { return !this->LastError.empty(); }
-  /// The message of the last error, stripped to its own text.
-  const std::string& GetLastError() const { return this->LastError; }
-  void Clear() { this->LastError.clear(); }
+  bool HasError() const { return !this->Error.empty(); }
+  /// The first error's own text, on one line; "" if none.
+  const std::string& GetError() const { return this->Error; }
+  /// The first warning's own text, on one line; "" if none.
+  const std::string& GetWarning() const { return this->Warning; }
+  void Clear();
 
-  /// The text of a VTK error message after its "Class (0x...): " preamble.
+  /// Records @p message (a VTK error if @p isError, else a warning) in the
+  /// newest live slErrorCapture. False if there is none.
+  static bool Deliver(const char* message, bool isError);
+
+  /// The text of a VTK message after its "ERROR: In FILE, line N" line and
+  /// its "Class (0x...): " preamble, on one line.
   static std::string StripPreamble(const std::string& message);
 
 protected:
-  slErrorCapture() = default;
-  ~slErrorCapture() override = default;
+  slErrorCapture();
+  ~slErrorCapture() override;
 
 private:
-  std::string LastError;
+  void Record(const char* message, bool isError);
+
+  std::string Error;
+  std::string Warning;
 };
 
 #endif

@@ -21,3 +21,18 @@ bool slExtensionInList(const std::string& extension, const char* list)
 {
   return !extension.empty() && (" " + std::string(list) + " ").find(" " + extension + " ") != std::string::npos;
 }
+
+std::string slFormatProblem(const char* fileName, const char* kind, const char* list)
+{
+  const std::string ext = slLowerExtension(fileName);
+  if (slExtensionInList(ext, list))
+  {
+    return std::string();
+  }
+  const std::string supported = std::string(" (supported: ") + list + ")";
+  if (ext.empty())
+  {
+    return std::string("no file extension to tell the ") + kind + " format" + supported;
+  }
+  return std::string("unsupported ") + kind + " format \"" + ext + "\"" + supported;
+}

@@ -1,6 +1,8 @@
 #include "slImageWriter.h"
 
 #include "shadelab/AtomicFile.h"
+#include "shadelab/MemoryFile.h"
+#include "slFileExtension.h"
 
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
@@ -24,6 +26,16 @@ slImageWriter::slImageWriter()
 slImageWriter::~slImageWriter()
 {
   this->SetFileName(nullptr);
+}
+
+const char* slImageWriter::GetSupportedExtensions()
+{
+  return ".png .jpg .jpeg .exr .hdr .tif .tiff .bmp .tga .ppm";
+}
+
+bool slImageWriter::CanWriteFile(const char* fileName)
+{
+  return slExtensionInList(slLowerExtension(fileName), GetSupportedExtensions());
 }
 
 int slImageWriter::FillOutputPortInformation(int, vtkInformation*)
@@ -57,6 +69,12 @@ bool slImageWriter::WriteImage(vtkImageData* image)
   {
     return fail("no output file given");
   }
+  const std::string formatProblem = slFormatProblem(name.c_str(), "image", GetSupportedExtensions());
+  if (!formatProblem.empty())
+  {
+    return fail(formatProblem);
+  }
+  const std::string ext = slLowerExtension(name.c_str());
   vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
   int dims[3] = { 0, 0, 0 };
   if (image)
@@ -86,17 +104,24 @@ bool slImageWriter::WriteImage(vtkImageData* image)
   OIIO::ImageBuf flipped = OIIO::ImageBufAlgo::flip(wrapped);
   try
   {
-    shadelab::AtomicOutput output(name);
-    if (!flipped.write(output.temporaryPath()))
+    // OpenImageIO's writers do not all report a failed write (PNG reports
+    // success on a full disk): they write to memory, ShadeLab to the disk.
+    shadelab::MemoryFile memory;
+    if (!flipped.write(memory.path(), OIIO::TypeUnknown, ext.substr(1)))
     {
       std::string reason = flipped.geterror();
       for (char& c : reason)
       {
         c = c == '\n' ? ' ' : c;
       }
-      return fail("cannot write image: " + reason);
+      return fail("cannot write image: " + (reason.empty() ? std::string("the image writer failed") : reason));
     }
-    output.commit();
+    const std::string bytes = memory.contents();
+    if (bytes.empty())
+    {
+      return fail("cannot write image: the image writer produced nothing");
+    }
+    shadelab::writeFileAtomically(name, bytes);
   }
   catch (const std::runtime_error& e)
   {

@@ -4,14 +4,16 @@
  * @class   slImageWriter
  * @brief   Writes a 2D vtkImageData through OpenImageIO, all or nothing.
  *
- * The format follows the file name's extension (.png, .exr, .hdr, .tif, .jpg,
- * ...). Unsigned char scalars are written as 8-bit, float scalars as float
+ * The format follows the file name's extension (GetSupportedExtensions()).
+ * Unsigned char scalars are written as 8-bit, float scalars as float
  * where the format allows it (EXR, HDR, TIFF) and quantised otherwise.
  * Row 0 of the vtkImageData is the bottom of the picture.
  *
- * The image goes to a temporary file beside the target which is renamed over
- * it only once complete: a failure never leaves a partial file nor destroys
- * an existing one.
+ * OpenImageIO encodes the image in memory; ShadeLab then writes the bytes to
+ * a temporary file beside the target, syncs it and renames it over the
+ * target: a failure (a full disk included) never leaves a partial file nor
+ * destroys an existing one, and GetErrorMessage() names the file and the
+ * system's reason.
  *
  * @sa slImageReader vtkWindowToImageFilter
  */
@@ -41,6 +43,12 @@ public:
 
   /// The reason the last Write() failed, or "".
   const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
+
+  /// True if slImageWriter writes files with the extension of @p fileName.
+  static bool CanWriteFile(const char* fileName);
+
+  /// The extensions it writes, space separated: ".png .jpg ...".
+  static const char* GetSupportedExtensions();
 
 protected:
   slImageWriter();

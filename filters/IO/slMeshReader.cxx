@@ -211,7 +211,7 @@ int slMeshReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInform
     if (errors->HasError())
     {
       // VTK's messages may quote bytes of the file.
-      return this->Fail(shadelab::printableText(errors->GetLastError(), 200));
+      return this->Fail(shadelab::printableText(errors->GetError(), 200));
     }
     vtkSmartPointer<vtkPolyData> read = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
     if (auto* composite = vtkCompositeDataSet::SafeDownCast(reader->GetOutputDataObject(0)))

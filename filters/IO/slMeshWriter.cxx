@@ -1,9 +1,13 @@
 #include "slMeshWriter.h"
 
 #include "shadelab/AtomicFile.h"
+#include "shadelab/MemoryFile.h"
+#include "slBinaryPLYSize.h"
 #include "slErrorCapture.h"
 #include "slFileExtension.h"
 
+#include <vtkCellArray.h>
+#include <vtkErrorCode.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkNew.h>
@@ -16,6 +20,7 @@
 #include <vtkSmartPointer.h>
 #include <vtkXMLPolyDataWriter.h>
 
+#include <fstream>
 #include <stdexcept>
 
 vtkStandardNewMacro(slMeshWriter);
@@ -65,6 +70,24 @@ vtkSmartPointer<vtkAlgorithm> makeWriter(const std::string& ext, vtkPolyData* me
     return w;
   }
   return nullptr;
+}
+/// The size of the complete binary PLY file vtkPLYWriter wrote for @p mesh
+/// at @p path, from its header (which a full disk still lets through) and
+/// the polygons' corner count (vtkPLYWriter writes polygons only).
+long long expectedPLYSize(const std::string& path, vtkPolyData* mesh)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string head(65536, '\0');
+  in.read(&head[0], static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<size_t>(in.gcount()));
+  const std::int64_t size = slBinaryPLYSize(head, mesh->GetPolys()->GetNumberOfConnectivityIds());
+  if (size < 0)
+  {
+    // Its header never reached the file; the size check then asks the file
+    // system for room for it.
+    return static_cast<long long>(head.size()) + 1;
+  }
+  return size;
 }
 } // namespace
 
@@ -118,27 +141,48 @@ bool slMeshWriter::WriteMesh(vtkPolyData* mesh)
   {
     return fail("no output file given");
   }
-  const std::string ext = slLowerExtension(name.c_str());
-  if (!CanWriteFile(name.c_str()))
+  const std::string formatProblem = slFormatProblem(name.c_str(), "mesh", GetSupportedExtensions());
+  if (!formatProblem.empty())
   {
-    return fail("unsupported mesh format \"" + ext + "\" (supported: " + GetSupportedExtensions() + ")");
+    return fail(formatProblem);
   }
   if (!mesh || mesh->GetNumberOfPoints() == 0)
   {
     return fail("nothing to write (empty mesh)");
   }
+  const std::string ext = slLowerExtension(name.c_str());
   try
   {
+    // VTK's writers do not all notice a failed write (a full disk can leave a
+    // truncated .vtp behind a success): they write to memory, where writing
+    // cannot fail that way, and AtomicOutput writes the bytes, checking each
+    // step. vtkPLYWriter cannot: it appends ".ply" to any other file name and
+    // its string output is empty in VTK 9.1. It writes the temporary file
+    // itself, whose size is then checked against its header.
+    const bool ply = ext == ".ply";
+    shadelab::MemoryFile memory;
     shadelab::AtomicOutput output(name);
-    vtkSmartPointer<vtkAlgorithm> writer = makeWriter(ext, mesh, output.temporaryPath());
+    vtkSmartPointer<vtkAlgorithm> writer = makeWriter(ext, mesh, ply ? output.temporaryPath() : memory.path());
     vtkNew<slErrorCapture> errors;
     errors->Watch(writer);
     writer->Update();
-    if (errors->HasError())
+    const std::string bytes = ply ? std::string() : memory.contents();
+    if (errors->HasError() || writer->GetErrorCode() != 0 || (!ply && bytes.empty()))
     {
-      return fail("cannot write mesh: " + errors->GetLastError());
+      const std::string reason = errors->HasError() ? errors->GetError()
+        : writer->GetErrorCode() != 0
+        ? vtkErrorCode::GetStringFromErrorCode(writer->GetErrorCode())
+        : std::string("the writer produced nothing");
+      return fail("cannot write mesh: " + reason);
     }
-    output.commit();
+    if (ply)
+    {
+      output.commitWritten(expectedPLYSize(output.temporaryPath(), mesh));
+    }
+    else
+    {
+      output.commit(bytes.data(), bytes.size());
+    }
   }
   catch (const std::runtime_error& e)
   {

@@ -12,9 +12,11 @@
  * .obj (vtkOBJWriter; keeps point normals and texture coordinates only),
  * .stl (vtkSTLWriter, binary; geometry only).
  *
- * The mesh goes to a temporary file beside the target, renamed over it only
- * once complete: a failure never leaves a partial file nor destroys an
- * existing one. GetErrorMessage() gives a one-line reason naming the file.
+ * VTK encodes the mesh in memory; ShadeLab then writes the bytes to a
+ * temporary file beside the target, syncs it and renames it over the target:
+ * a failure (a full disk included) never leaves a partial file nor destroys
+ * an existing one. GetErrorMessage() gives a one-line reason naming the file
+ * (and the system's reason, e.g. "No space left on device").
  *
  * @sa slMeshReader
  */

@@ -32,7 +32,7 @@ std::string slLoadTexture(const char* fileName, slnormals::Texture& texture)
   }
   if (errors->HasError())
   {
-    return std::string(fileName) + ": " + errors->GetLastError();
+    return std::string(fileName) + ": " + errors->GetError();
   }
   vtkImageData* image = reader->GetOutput();
   vtkDataArray* scalars = image->GetPointData()->GetScalars();

@@ -1,18 +1,25 @@
 #include "slOffscreen.h"
 
+#include "slGLXContextCheck.h"
+
+#include <vtkCallbackCommand.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkRenderWindow.h>
 #include <vtkWindowToImageFilter.h>
 
 #include <cstdlib>
+#include <stdexcept>
 
 std::string slDisplayProblem()
 {
   const char* display = std::getenv("DISPLAY");
-  return display && *display
-    ? std::string()
-    : std::string("no X display (DISPLAY is unset): Debian's VTK renders through X11; run under xvfb-run");
+  if (!display || !*display)
+  {
+    return "no X display (DISPLAY is unset): Debian's VTK renders through X11; run under xvfb-run";
+  }
+  // VTK aborts the process when it cannot create its context: try first.
+  return slGLXContextProblem();
 }
 
 vtkSmartPointer<vtkRenderWindow> slOffscreenWindow(int width, int height)
@@ -21,6 +28,14 @@ vtkSmartPointer<vtkRenderWindow> slOffscreenWindow(int width, int height)
   window->SetOffScreenRendering(1);
   window->SetMultiSamples(0);
   window->SetSize(width, height);
+  // When it cannot create its GLX context (after slDisplayProblem() could),
+  // VTK 9.1 calls abort() unless ExitEvent is observed; it then returns
+  // without a context. Stop there with the reason instead of either.
+  vtkNew<vtkCallbackCommand> noContext;
+  noContext->SetCallback([](vtkObject*, unsigned long, void*, void*) {
+    throw std::runtime_error("VTK cannot create an OpenGL context on the X display");
+  });
+  window->AddObserver(vtkCommand::ExitEvent, noContext);
   return window;
 }
 

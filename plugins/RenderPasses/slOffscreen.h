@@ -17,11 +17,13 @@ class vtkImageData;
 class vtkRenderWindow;
 
 /// The one-line reason rendering is impossible here, or "" if an X display
-/// is available (Debian's VTK renders through X11 only).
+/// is available (Debian's VTK renders through X11 only) and an OpenGL
+/// context can be created on it (slGLXContextProblem(), which retries).
 SHADELABRENDERPASSES_EXPORT std::string slDisplayProblem();
 
 /// An offscreen window of @p width x @p height, multisampling off, so that
-/// the same scene gives the same pixels.
+/// the same scene gives the same pixels. Where VTK would abort() because it
+/// cannot create its OpenGL context, rendering it throws std::runtime_error.
 SHADELABRENDERPASSES_EXPORT vtkSmartPointer<vtkRenderWindow> slOffscreenWindow(int width, int height);
 
 /// Renders @p window and returns its back buffer as RGB unsigned char, row 0

@@ -445,7 +445,8 @@ TEST(ComponentViews, FalseColourIsTheFieldImagesRamp)
 
   stage.pass->SetComponent(slLightingPass::COS_THETA);
   const glm::vec3 cosColour = shadelab::glsl::slDiverging(std::cos(a));
-  const float* p = stage.render().at(50, 50);
+  const Image rendered = stage.render(); // kept: at() points into it
+  const float* p = rendered.at(50, 50);
   EXPECT_NEAR(p[0], cosColour.x, 1.0f / 255.0f);
   EXPECT_NEAR(p[1], cosColour.y, 1.0f / 255.0f);
   EXPECT_NEAR(p[2], cosColour.z, 1.0f / 255.0f);
@@ -453,7 +454,8 @@ TEST(ComponentViews, FalseColourIsTheFieldImagesRamp)
   stage.pass->SetComponent(slLightingPass::DIFFUSE);
   const glm::vec3 diffuse = scene.lights[0].diffuse * scene.material.diffuse * std::cos(a);
   const glm::vec3 rampColour = shadelab::glsl::slRamp(shadelab::glsl::slLuminance(diffuse));
-  const float* q = stage.render().at(50, 50);
+  const Image second = stage.render();
+  const float* q = second.at(50, 50);
   EXPECT_NEAR(q[0], rampColour.x, 1.0f / 255.0f);
   EXPECT_NEAR(q[1], rampColour.y, 1.0f / 255.0f);
   EXPECT_NEAR(q[2], rampColour.z, 1.0f / 255.0f);
@@ -533,7 +535,8 @@ TEST(BaseColour, PointScalarsMultiplyKd)
   setUniformColours(mesh, 255, 128, 64); // base colour everywhere
   passtest::Stage stage = passtest::litStage(mesh, scene, 100, 100);
   stage.actor->GetMapper()->ScalarVisibilityOn();
-  const float* pixel = stage.render().at(50, 50);
+  const Image rendered = stage.render(); // kept: at() points into it
+  const float* pixel = rendered.at(50, 50);
   EXPECT_NEAR(pixel[0], 0.8f * 255.0f / 255.0f, 1.5f / 255.0f);
   EXPECT_NEAR(pixel[1], 0.8f * 128.0f / 255.0f, 1.5f / 255.0f);
   EXPECT_NEAR(pixel[2], 0.8f * 64.0f / 255.0f, 1.5f / 255.0f);
@@ -561,7 +564,8 @@ TEST(BaseColour, CPUAndGPUAgreeOnEightBitColours)
 
   passtest::Stage stage = passtest::litStage(mesh, scene, 100, 100);
   stage.actor->GetMapper()->ScalarVisibilityOn();
-  const float* pixel = stage.render().at(50, 50);
+  const Image rendered = stage.render(); // kept: at() points into it
+  const float* pixel = rendered.at(50, 50);
   for (int c = 0; c < 3; ++c)
   {
     EXPECT_NEAR(pixel[c], radiance[c], 1.5 / 255.0) << c;
@@ -587,7 +591,8 @@ TEST(BaseColour, ActorTextureMultipliesKd)
   texture->SetInputData(image);
   passtest::Stage stage = passtest::litStage(facingSquare(1.0), scene, 100, 100); // texture coordinates over [0, 1]^2
   stage.actor->SetTexture(texture);
-  const float* pixel = stage.render().at(50, 50);
+  const Image rendered = stage.render(); // kept: at() points into it
+  const float* pixel = rendered.at(50, 50);
   EXPECT_NEAR(pixel[0], 0.8f * 200.0f / 255.0f, 1.5f / 255.0f);
   EXPECT_NEAR(pixel[1], 0.8f * 100.0f / 255.0f, 1.5f / 255.0f);
   EXPECT_NEAR(pixel[2], 0.8f * 50.0f / 255.0f, 1.5f / 255.0f);

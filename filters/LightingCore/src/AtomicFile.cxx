@@ -1,36 +1,121 @@
 #include "shadelab/AtomicFile.h"
 
 #include <cerrno>
+#include <climits>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
-#include <sys/stat.h>
+#include <dirent.h>
+#include <fcntl.h>
 #include <stdexcept>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 #include <vector>
 
 namespace shadelab
 {
+namespace
+{
+const char* const PartialMarker = ".partial-";
+const std::size_t RandomLength = 6; // mkstemps' XXXXXX
+
+std::string folderOf(const std::string& path)
+{
+  const std::size_t slash = path.find_last_of('/');
+  return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
+}
+
+/// The longest file name the target's folder allows (NAME_MAX unless the
+/// file system says otherwise).
+std::size_t nameMaxOf(const std::string& folder)
+{
+  const long max = ::pathconf(folder.empty() ? "." : folder.c_str(), _PC_NAME_MAX);
+  return max > 0 ? static_cast<std::size_t>(max) : NAME_MAX;
+}
+
+/// Removes every unlocked temporary file of @p name in its folder: such a file
+/// belongs to no live AtomicOutput (each holds its lock until it is gone).
+void removeStaleTemporaries(const TemporaryName& name)
+{
+  const std::string folder = folderOf(name.prefix);
+  const std::string prefix = name.prefix.substr(folder.size());
+  DIR* dir = ::opendir(folder.empty() ? "." : folder.c_str());
+  if (!dir)
+  {
+    return; // creating the temporary file reports the reason
+  }
+  while (const dirent* entry = ::readdir(dir))
+  {
+    const std::string file = entry->d_name;
+    if (file.size() != prefix.size() + RandomLength + name.suffix.size() || file.compare(0, prefix.size(), prefix) != 0 ||
+      file.compare(file.size() - name.suffix.size(), name.suffix.size(), name.suffix) != 0)
+    {
+      continue;
+    }
+    const std::string path = folder + file;
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK);
+    if (fd < 0)
+    {
+      continue;
+    }
+    struct stat info;
+    if (::fstat(fd, &info) == 0 && S_ISREG(info.st_mode) && ::flock(fd, LOCK_EX | LOCK_NB) == 0)
+    {
+      ::unlink(path.c_str()); // under the lock: its creator, if any, sees it unlinked and retries
+    }
+    ::close(fd);
+  }
+  ::closedir(dir);
+}
+} // namespace
+
+TemporaryName temporaryNameFor(const std::string& target, std::size_t nameMax)
+{
+  const std::string folder = folderOf(target);
+  const std::string name = target.substr(folder.size());
+  const std::size_t dot = name.find_last_of('.');
+  std::string extension = dot == std::string::npos || dot == 0 ? std::string() : name.substr(dot);
+  std::string stem = name.substr(0, name.size() - extension.size());
+  const std::size_t fixed = 1 + std::strlen(PartialMarker) + RandomLength;
+  if (fixed + extension.size() > nameMax)
+  {
+    extension.clear(); // no writer takes such an extension; the name must still fit
+  }
+  stem.resize(std::min(stem.size(), nameMax - fixed - extension.size()));
+  return { folder + "." + stem + PartialMarker, extension };
+}
 
 AtomicOutput::AtomicOutput(std::string target)
   : Target(std::move(target))
 {
-  const size_t slash = this->Target.find_last_of('/');
-  const std::string folder = slash == std::string::npos ? std::string() : this->Target.substr(0, slash + 1);
-  const std::string name = slash == std::string::npos ? this->Target : this->Target.substr(slash + 1);
-  const size_t dot = name.find_last_of('.');
-  const std::string extension = dot == std::string::npos || dot == 0 ? std::string() : name.substr(dot);
-  const std::string stem = name.substr(0, name.size() - extension.size());
+  const TemporaryName name = temporaryNameFor(this->Target, nameMaxOf(folderOf(this->Target)));
+  removeStaleTemporaries(name);
 
-  std::string pattern = folder + "." + stem + ".partial-XXXXXX" + extension;
-  std::vector<char> buffer(pattern.begin(), pattern.end());
-  buffer.push_back('\0');
-  const int fd = mkstemps(buffer.data(), static_cast<int>(extension.size()));
-  if (fd < 0)
+  // Another process's cleanup may unlink the file between mkstemps and flock;
+  // the unlinked file then has no links left, and a new one is made.
+  for (int attempt = 0; this->Descriptor < 0; ++attempt)
   {
-    throw std::runtime_error(this->Target + ": cannot create output file: " + std::strerror(errno));
+    std::string pattern = name.prefix + std::string(RandomLength, 'X') + name.suffix;
+    std::vector<char> buffer(pattern.begin(), pattern.end());
+    buffer.push_back('\0');
+    const int fd = ::mkostemps(buffer.data(), static_cast<int>(name.suffix.size()), O_CLOEXEC);
+    if (fd < 0)
+    {
+      throw std::runtime_error(this->Target + ": cannot create output file: " + std::strerror(errno));
+    }
+    // The lock is advisory: were flock() unsupported here, writing still works.
+    ::flock(fd, LOCK_EX);
+    struct stat info;
+    if (::fstat(fd, &info) == 0 && info.st_nlink == 0 && attempt < 10)
+    {
+      ::close(fd);
+      continue;
+    }
+    this->Descriptor = fd;
+    this->Temporary = buffer.data();
   }
+
   // mkstemps creates the file 0600; give it the mode a plain open() would
   // (0666 less the umask), or the mode of the file it will replace.
   struct stat existing;
@@ -45,41 +130,95 @@ AtomicOutput::AtomicOutput(std::string target)
     ::umask(mask);
     mode = 0666 & ~mask;
   }
-  ::fchmod(fd, mode);
-  ::close(fd);
-  this->Temporary = buffer.data();
+  ::fchmod(this->Descriptor, mode);
 }
 
 AtomicOutput::~AtomicOutput()
 {
-  if (!this->Committed)
+  if (!this->Committed && !this->Temporary.empty())
   {
-    std::remove(this->Temporary.c_str());
+    ::unlink(this->Temporary.c_str());
+  }
+  if (this->Descriptor >= 0)
+  {
+    ::close(this->Descriptor);
   }
 }
 
-void AtomicOutput::commit()
+void AtomicOutput::fail(const std::string& what, int error) const
 {
-  if (std::rename(this->Temporary.c_str(), this->Target.c_str()) != 0)
+  throw std::runtime_error(this->Target + ": " + what + ": " + std::strerror(error));
+}
+
+void AtomicOutput::commit(const char* data, std::size_t size)
+{
+  while (size > 0)
   {
-    throw std::runtime_error(this->Target + ": cannot write output file: " + std::strerror(errno));
+    const ssize_t written = ::write(this->Descriptor, data, size);
+    if (written < 0 && errno == EINTR)
+    {
+      continue;
+    }
+    if (written <= 0)
+    {
+      this->fail("cannot write output file", written < 0 ? errno : ENOSPC);
+    }
+    data += written;
+    size -= static_cast<std::size_t>(written);
+  }
+  this->syncAndRename();
+}
+
+void AtomicOutput::commitWritten(long long expectedSize)
+{
+  struct stat info;
+  if (::fstat(this->Descriptor, &info) != 0)
+  {
+    this->fail("cannot write output file", errno);
+  }
+  if (info.st_size != expectedSize)
+  {
+    if (info.st_size < expectedSize)
+    {
+      const int error = ::posix_fallocate(this->Descriptor, 0, static_cast<off_t>(expectedSize));
+      if (error != 0)
+      {
+        this->fail("cannot write output file", error);
+      }
+    }
+    throw std::runtime_error(this->Target + ": cannot write output file: the writer wrote " +
+      std::to_string(info.st_size) + " bytes of " + std::to_string(expectedSize));
+  }
+  this->syncAndRename();
+}
+
+void AtomicOutput::syncAndRename()
+{
+  // The data must be on the disk before the new name points at it, or a crash
+  // right after the rename could leave an empty or partial file under it.
+  if (::fsync(this->Descriptor) != 0)
+  {
+    this->fail("cannot write output file", errno);
+  }
+  if (::rename(this->Temporary.c_str(), this->Target.c_str()) != 0)
+  {
+    this->fail("cannot write output file", errno);
   }
   this->Committed = true;
+  // The rename itself is durable once the folder is synced.
+  const std::string folder = folderOf(this->Target);
+  const int dir = ::open(folder.empty() ? "." : folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dir >= 0)
+  {
+    ::fsync(dir);
+    ::close(dir);
+  }
 }
 
 void writeFileAtomically(const std::string& path, const std::string& bytes)
 {
   AtomicOutput output(path);
-  {
-    std::ofstream out(output.temporaryPath(), std::ios::binary | std::ios::trunc);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.flush();
-    if (!out)
-    {
-      throw std::runtime_error(path + ": write failed");
-    }
-  }
-  output.commit();
+  output.commit(bytes.data(), bytes.size());
 }
 
 } // namespace shadelab

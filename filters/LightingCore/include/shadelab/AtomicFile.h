@@ -3,24 +3,30 @@
 /**
  * @file AtomicFile.h
  * @brief All-or-nothing output files: write to a temporary file beside the
- * target, then rename it over the target.
+ * target, sync it, then rename it over the target.
  *
  * A failed or interrupted write therefore never leaves a half-written file and
  * never destroys an existing one. Used for every file ShadeLab writes.
+ *
+ * The temporary file is named `.NAME.partial-XXXXXX.EXT` (NAME cut short when
+ * the whole would exceed the folder's NAME_MAX) and is held under an exclusive
+ * flock() while it exists. A process killed mid-write leaves it behind
+ * unlocked: the next AtomicOutput for the same target removes such files,
+ * never one another live process still holds.
  */
 
+#include <cstddef>
 #include <string>
 
 namespace shadelab
 {
 
 /// A temporary file in the target's folder that becomes the target on commit().
-/// The temporary name keeps the target's extension, so writers that choose the
-/// format by extension (OpenImageIO, VTK) behave as for the target.
 class AtomicOutput
 {
 public:
-  /// Creates the temporary file. Throws std::runtime_error naming @p target
+  /// Removes stale temporary files of @p target, then creates and locks its
+  /// own. Throws std::runtime_error naming @p target and the system's reason
   /// if its folder is not writable.
   explicit AtomicOutput(std::string target);
   /// Removes the temporary file unless commit() succeeded.
@@ -28,21 +34,45 @@ public:
   AtomicOutput(const AtomicOutput&) = delete;
   AtomicOutput& operator=(const AtomicOutput&) = delete;
 
-  /// Where to write the content.
   const std::string& temporaryPath() const { return this->Temporary; }
   const std::string& targetPath() const { return this->Target; }
 
-  /// Renames the temporary file to the target. Throws std::runtime_error.
-  void commit();
+  /// Writes @p size bytes at @p data to the temporary file, syncs it to the
+  /// disk, renames it to the target and syncs the folder. Throws
+  /// std::runtime_error "TARGET: cannot write output file: REASON" (REASON is
+  /// the system's, e.g. "No space left on device"); the target is then as
+  /// before and the temporary file is removed by the destructor.
+  void commit(const char* data, std::size_t size);
+
+  /// As commit(data, size) for a temporary file another writer filled through
+  /// temporaryPath(), which must now hold exactly @p expectedSize bytes: a
+  /// writer that does not notice a failed write leaves fewer. The message then
+  /// gives the system's reason when it can find one (it asks the file system
+  /// for the missing space), else the two sizes.
+  void commitWritten(long long expectedSize);
 
 private:
+  [[noreturn]] void fail(const std::string& what, int error) const;
+  void syncAndRename();
+
   std::string Target;
   std::string Temporary;
+  int Descriptor = -1;
   bool Committed = false;
 };
 
 /// Writes @p bytes to @p path through an AtomicOutput. Throws std::runtime_error.
 void writeFileAtomically(const std::string& path, const std::string& bytes);
+
+/// The name AtomicOutput gives the temporary files of @p target, as the part
+/// before the six random characters and the part after them (folder included
+/// in the first). Both together stay within @p nameMax bytes.
+struct TemporaryName
+{
+  std::string prefix;
+  std::string suffix;
+};
+TemporaryName temporaryNameFor(const std::string& target, std::size_t nameMax);
 
 } // namespace shadelab
 

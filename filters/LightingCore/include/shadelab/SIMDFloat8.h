@@ -190,9 +190,12 @@ inline vfloat8 exp2(vfloat8 x)
 /// around them).
 inline vfloat8 log2(vfloat8 x)
 {
-  const v8si bits = (v8si)x.v;
-  const v8si e = (bits - 0x3f3504f3) >> 23;
-  const vfloat8 t = vfloat8((v8sf)(bits - (v8si)((v8su)e << 23))) - 1.0f; // unsigned: e may be negative
+  // The bit arithmetic is unsigned (it wraps for negative x and -0, where
+  // signed lanes would overflow); only the shift that extracts the signed
+  // exponent works on signed lanes.
+  const v8su bits = (v8su)x.v;
+  const v8si e = (v8si)(bits - 0x3f3504f3u) >> 23;
+  const vfloat8 t = vfloat8((v8sf)(bits - ((v8su)e << 23))) - 1.0f;
   // Estrin's scheme, as in exp2: 3 multiply-adds deep instead of 7.
   const vfloat8 t2 = t * t;
   const vfloat8 t4 = t2 * t2;
