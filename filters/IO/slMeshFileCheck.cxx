@@ -10,6 +10,8 @@
 #include <fstream>
 #include <iterator>
 
+#include <sys/stat.h>
+
 namespace
 {
 unsigned long long fileSize(const std::string& fileName)
@@ -206,6 +208,13 @@ std::string slXMLCountsProblem(const std::string& fileName)
 
 std::string slMeshFileProblem(const std::string& fileName, const std::string& ext)
 {
+  // An empty file is said to be empty, in every format, rather than left to
+  // each parser's own wording (which varies with the library's version).
+  struct stat status;
+  if (stat(fileName.c_str(), &status) == 0 && S_ISREG(status.st_mode) && status.st_size == 0)
+  {
+    return "the file is empty";
+  }
   if (ext == ".obj")
   {
     return slOBJProblem(fileName);

@@ -54,7 +54,7 @@ CASES = [
     mesh_case("obj point index beyond", "a.obj", obj(b"p 4\n"), 'line 4: vertex index 4 is out of range [1, 3]'),
     mesh_case("obj face of two corners", "a.obj", obj(b"f 1 2\n"), 'line 4: f needs at least 3 vertices, it has 2'),
     mesh_case("obj no faces", "a.obj", obj(b""), 'no polygons among its 0 cells'),
-    mesh_case("obj empty", "a.obj", b"", 'no points: empty, truncated or not a obj file'),
+    mesh_case("obj empty", "a.obj", b"", 'the file is empty'),
     mesh_case("obj binary garbage", "a.obj", bytes(range(256)), 'Line longer than 262144:'),
     # PLY
     mesh_case("ply truncated ascii", "a.ply", ply_ascii(b"")[:-6], 'line 12: the file ends before element "vertex" row 3 of 3'),
@@ -78,7 +78,7 @@ CASES = [
               'line 8: list count type "float" is not an integer type'),
     mesh_case("ply bad magic with escapes", "a.ply", b"\x1b]0;owned\x07\nformat ascii 1.0\n", 'line 1: expected "ply", found "\\x1B]0;owned\\x07"'),
     mesh_case("ply negative element count", "a.ply", b"ply\nformat ascii 1.0\nelement vertex -3\nend_header\n", 'line 3: element needs a name and a count, found "element vertex -3"'),
-    mesh_case("ply empty", "a.ply", b"", 'line 1: expected "ply", found ""'),
+    mesh_case("ply empty", "a.ply", b"", 'the file is empty'),
     # found by fuzzing: a NUL byte cut an ASCII row short for vtkPLY, which then parsed a null word
     mesh_case("ply nul byte in ascii row", "a.ply", ply_ascii(b"3 0 1 2\n").replace(b"1 0 0\n", b"1 \x000 0\n"),
               'line 11 (element "vertex" row 2 of 3): a NUL byte'),
@@ -108,7 +108,7 @@ CASES = [
     mesh_case("stl header only with count", "a.stl", stl_binary(0, declared=5), 'truncated binary STL: its header announces 5 triangles (334 bytes), the file has 84 bytes'),
     mesh_case("stl shorter than header", "a.stl", b"\x80\x81\x82" * 10, 'binary STL shorter than its 84-byte header (30 bytes)'),
     mesh_case("stl ascii garbage", "a.stl", b"solid x\n  facet normal 0 0 1\n    outer loop\n      vertex 0 0\n", 'STLReader: error while reading file a.stl at line 4: Parse error reading STL vertex'),
-    mesh_case("stl empty", "a.stl", b"", 'STLReader error reading file: a.stl Premature EOF while reading header.'),
+    mesh_case("stl empty", "a.stl", b"", 'the file is empty'),
     # VTP
     mesh_case("vtp index beyond points", "a.vtp", vtp(b"0 1 7"), 'polygon 0 names point 7, but the mesh has 3 points (0 to 2)'),
     mesh_case("vtp negative index", "a.vtp", vtp(b"0 -1 2"), 'polygon 0 names point -1, but the mesh has 3 points (0 to 2)'),
@@ -117,7 +117,7 @@ CASES = [
     mesh_case("vtp huge point count", "a.vtp", vtp(b"0 1 2", points=10**12), 'NumberOfPoints=1000000000000 is more than a file of 516 bytes can hold'),
     mesh_case("vtp malformed xml", "a.vtp", b"<VTKFile type=\"PolyData\"><PolyData>",
               'Error parsing XML in stream at line 1, column 35, byte index 35: no element found'),
-    mesh_case("vtp empty", "a.vtp", b"", 'Error parsing XML in stream at line 1, column 0, byte index -1: no element found'),
+    mesh_case("vtp empty", "a.vtp", b"", 'the file is empty'),
     # found by fuzzing: a compression header VTK allocated for (8.6 GB)
     mesh_case("vtp compressed header block count", "a.vtp", vtp_compressed_header(2000000000),
               'DataArray "Points": its compression header declares 2000000000 blocks of 32768 bytes, more than a file '
