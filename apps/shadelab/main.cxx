@@ -43,7 +43,7 @@ void printUsage(std::ostream& out)
 {
   out << "usage: shadelab <subcommand> [options]   (shadelab <subcommand> --help for details)\n\n"
          "ShadeLab: local lighting (Lambert, Phong, Blinn-Phong) for VTK meshes.\n"
-         "Any subcommand also takes --verbose: show VTK's own warnings and errors.\n\nsubcommands:\n";
+         "Any subcommand also takes --verbose: show VTK's and the image libraries' own warnings and errors.\n\nsubcommands:\n";
   for (const auto& command : shadelab::app::commands())
   {
     std::string name = command.name;

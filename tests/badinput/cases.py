@@ -216,10 +216,12 @@ CASES = [
      "s.json": None}, 1, 'shadelab cosine: s.json: is a directory, not a scene file\n'),
     ("scene missing", ["cosine", "m.off", "--scene", "nothere.json", "-o", "out.vtp"], {"m.off": TETRA_OFF}, 1, 'shadelab cosine: nothere.json: cannot open scene file\n'),
     # images
-    image_case("png truncated", "t.png", png(cut=20), 'shadelab light: t.png: cannot read image: Read error: hit end of file PNG read error: IDAT: Read error: hit end of file PNG library error\n'),
+    image_case("png truncated", "t.png", png(cut=20), 'shadelab light: t.png: cannot read image: PNG chunk \'IDAT\' at byte 33 declares 16 bytes of data; 8 bytes remain in the file\n'),
     image_case("png bad crc", "t.png", png(crc_ok=False), 'shadelab light: t.png: cannot read image: PNG read error: IDAT: CRC error PNG library error\n'),
     image_case("png huge header", "t.png", png(width=100000, height=100000), 'shadelab light: t.png: cannot read image: its header declares 100000x100000 pixels of 3 channels, more than ShadeLab reads (2^28 values)\n'),
-    image_case("png garbage", "t.png", b"\x89PNG\r\n\x1a\n\x1b[31m garbage", 'shadelab light: t.png: cannot read image: Invalid image file "t.png": PNG read error: m[20]ga: invalid chunk type\n'),
+    # 8 + 25 bytes of signature and IHDR; the tEXt chunk's 9 bytes of data are 4 short of a CRC.
+    image_case("png chunk longer than the file", "t.png", png(text_claim=1953300627), 'shadelab light: t.png: cannot read image: PNG chunk \'tEXt\' at byte 33 declares 1953300627 bytes of data; 5 bytes remain in the file\n'),
+    image_case("png garbage", "t.png", b"\x89PNG\r\n\x1a\n\x1b[31m garbage", 'shadelab light: t.png: cannot read image: PNG chunk \'m ga\' at byte 8 declares 458961713 bytes of data; 1 byte remains in the file\n'),
     image_case("png empty", "t.png", b"", 'shadelab light: t.png: cannot read image: Invalid image file "t.png": Not a PNG file\n'),
     image_case("jpg truncated", "t.jpg", "seed:fuzz_image_jpg/gradient.jpg:300", 'shadelab light: t.jpg: cannot read image: Invalid image file "t.jpg": JPEG error: Premature end of JPEG file ("t.jpg") Bad JPEG header for "t.jpg"\n'),
     image_case("jpg garbage", "t.jpg", b"\xff\xd8\xff\xe0 not really", 'shadelab light: t.jpg: cannot read image: Invalid image file "t.jpg": JPEG error: Premature end of JPEG file ("t.jpg") Bad JPEG header for "t.jpg"\n'),

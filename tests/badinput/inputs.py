@@ -100,13 +100,17 @@ def glb(edit=None, cut=0, **parts):
     return out[:len(out) - cut]
 
 
-def png(width=4, height=4, crc_ok=True, cut=0):
+def png(width=4, height=4, crc_ok=True, cut=0, text_claim=None):
+    """A 4-row RGB PNG; with @text_claim, the IHDR is followed by a tEXt chunk
+    whose length field claims @text_claim bytes and the file ends 9 bytes later."""
     def chunk(kind, payload, good=True):
         crc = zlib.crc32(kind + payload) ^ (0 if good else 1)
         return struct.pack(">I", len(payload)) + kind + payload + struct.pack(">I", crc)
     rows = b"".join(b"\0" + b"\x80\x40\x20" * width for _ in range(min(height, 4)))
-    data = (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)) +
-            chunk(b"IDAT", zlib.compress(rows), crc_ok) + chunk(b"IEND", b""))
+    data = b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0))
+    if text_claim is not None:
+        return data + struct.pack(">I", text_claim) + b"tEXtComment\0x"
+    data += chunk(b"IDAT", zlib.compress(rows), crc_ok) + chunk(b"IEND", b"")
     return data[:len(data) - cut]
 
 
