@@ -7,13 +7,15 @@
 # line per run and the median and range per rank count. Run it where
 # ParaView may be installed:
 #
-#   bash scripts/clean-root.sh --name paraview "bash scripts/paraview-scale.sh [RESOLUTION [RUNS]]"
+#   bash scripts/clean-root.sh --name paraview "bash scripts/paraview-scale.sh [RESOLUTION [RUNS [THREADS]]]"
 #
-# RESOLUTION 2050 (default) gives 8,396,800 triangles; RUNS defaults to 5.
+# RESOLUTION 2050 (default) gives 8,396,800 triangles; RUNS defaults to 5;
+# THREADS, the vtkSMPTools threads per rank, to VTK's choice (every core).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 resolution=${1:-2050}
 runs=${2:-5}
+threads=${3:-0}
 bash scripts/paraview-test.sh --build-only
 plugin=$PWD/build-pv/lib/paraview-5.11/plugins/ShadeLab/ShadeLab.so
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
@@ -25,7 +27,7 @@ for run in $(seq "$runs"); do
   for n in 1 2 4; do
     echo "run $run, $n ranks (load average $(cut -d' ' -f1-3 /proc/loadavg))"
     mpiexec --oversubscribe --host 127.0.0.1:4 -n "$n" pvbatch --symmetric tests/paraview/scale.py "$plugin" \
-      "$resolution" | tee -a "$log"
+      "$resolution" "$threads" | tee -a "$log"
   done
 done
 /usr/bin/python3 tests/paraview/scale_summary.py < "$log"

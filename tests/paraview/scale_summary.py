@@ -1,26 +1,28 @@
 """Reads the lines of tests/paraview/scale.py (every rank of every run) and
-prints per rank count the median and range over runs of the normals and
-radiance times (the slowest rank of a run: a run ends when its last rank
-does) and the largest RSS of any rank, as a Markdown table."""
+prints per rank count the median and range over runs of the times of
+ShadeLab Normals (with the ghost layer it asks for, and alone) and ShadeLab
+Radiance, and the largest RSS of any rank, as a Markdown table. Ranks wait
+for each other at a barrier after each step, so a run's time is any rank's."""
 import re
 import statistics
 import sys
 
-LINE = re.compile(r"ranks (\d+) rank (\d+): (\d+) triangles, normals ([\d.]+) s, radiance ([\d.]+) s, "
-                  r"max RSS (\d+) MB")
+LINE = re.compile(r"ranks (\d+) rank (\d+): (\d+) triangles, (\d+) threads of (\w+), normals ([\d.]+) s "
+                  r"\(filter alone ([\d.]+) s\), radiance ([\d.]+) s, max RSS (\d+) MB")
 
-runs = {}  # ranks -> list of [normals, radiance, rss] per run, the slowest rank
+runs = {}  # ranks -> list of [normals, normals alone, radiance, rss] per run
 seen = {}  # ranks -> ranks of the current run reported so far
 for line in sys.stdin:
     m = LINE.search(line)
     if not m:
         continue
-    ranks, normals, radiance, rss = int(m[1]), float(m[4]), float(m[5]), int(m[6])
+    ranks, threads = int(m[1]), int(m[4])
+    values = [float(m[6]), float(m[7]), float(m[8]), int(m[9])]
     if seen.get(ranks, 0) % ranks == 0:
-        runs.setdefault(ranks, []).append([0.0, 0.0, 0])
+        runs.setdefault(ranks, []).append([0.0, 0.0, 0.0, 0, threads])
     seen[ranks] = seen.get(ranks, 0) + 1
     run = runs[ranks][-1]
-    run[0], run[1], run[2] = max(run[0], normals), max(run[1], radiance), max(run[2], rss)
+    run[:4] = [max(a, b) for a, b in zip(run, values)]
 
 
 def cell(values, serial=None):
@@ -30,12 +32,13 @@ def cell(values, serial=None):
     return text
 
 
-print("| ranks | runs | normals: median (range), speed-up | radiance: median (range), speed-up | max RSS per rank |")
-print("|---|---|---|---|---|")
+print("| ranks | threads per rank | runs | normals with ghost layer | normals alone | radiance | max RSS per rank |")
+print("|---|---|---|---|---|---|---|")
 serial = runs.get(1)
 for ranks in sorted(runs):
     r = runs[ranks]
-    normals, radiance = [x[0] for x in r], [x[1] for x in r]
-    print("| %d | %d | %s | %s | %d MB |" % (
-        ranks, len(r), cell(normals, statistics.median([x[0] for x in serial]) if serial else None),
-        cell(radiance, statistics.median([x[1] for x in serial]) if serial else None), max(x[2] for x in r)))
+    columns = []
+    for k in range(3):
+        base = statistics.median([x[k] for x in serial]) if serial else None
+        columns.append(cell([x[k] for x in r], base))
+    print("| %d | %d | %d | %s | %d MB |" % (ranks, r[0][4], len(r), " | ".join(columns), max(x[3] for x in r)))
