@@ -36,9 +36,10 @@ def timed(update):
     return time.time() - start
 
 
-# The first update on several ranks also makes the sphere again with the
-# ghost layer that ShadeLab Normals asks for; the second (after a change
-# that re-executes only the filter) is the filter alone.
+# On several ranks ShadeLab Normals asks for one ghost level more than the
+# sphere was made with, so its first update also runs the source again
+# (vtkSphereSource makes its piece without ghost cells); the second, after a
+# change that re-executes only the filter, is the filter alone.
 first = timed(normals.UpdatePipeline)
 normals.FeatureAngle = 31
 alone = timed(normals.UpdatePipeline)

@@ -1,7 +1,7 @@
 """Reads the lines of tests/paraview/scale.py (every rank of every run) and
 prints per rank count the median and range over runs of the times of
-ShadeLab Normals (with the ghost layer it asks for, and alone) and ShadeLab
-Radiance, and the largest RSS of any rank, as a Markdown table. Ranks wait
+ShadeLab Normals (its first update, which on several ranks runs the source
+again, and the filter alone) and ShadeLab Radiance, and the largest RSS of any rank, as a Markdown table. Ranks wait
 for each other at a barrier after each step, so a run's time is any rank's."""
 import re
 import statistics
@@ -32,7 +32,7 @@ def cell(values, serial=None):
     return text
 
 
-print("| ranks | threads per rank | runs | normals with ghost layer | normals alone | radiance | max RSS per rank |")
+print("| ranks | threads per rank | runs | normals, first update | normals alone | radiance | max RSS per rank |")
 print("|---|---|---|---|---|---|---|")
 serial = runs.get(1)
 for ranks in sorted(runs):
