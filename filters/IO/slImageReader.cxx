@@ -1,6 +1,6 @@
 #include "slImageReader.h"
 
-#include "slPNGCheck.h"
+#include "slImageFileCheck.h"
 #include "slStderrCapture.h"
 
 #include "shadelab/PrintableText.h"
@@ -53,9 +53,9 @@ int slImageReader::RequestInformation(vtkInformation*, vtkInformationVector**, v
   // The extent is only known after reading; report it here from the header.
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   int extent[6] = { 0, -1, 0, -1, 0, 0 };
-  // A PNG whose chunks do not fit the file is reported by RequestData; the
-  // header is not read here, as libpng would allocate what the chunks claim.
-  if (this->FileName && slPNGProblem(this->FileName).empty())
+  // A file whose length fields reach past its end is reported by RequestData;
+  // its header is not read here, as its library would allocate what they claim.
+  if (this->FileName && slImageFileProblem(this->FileName).empty())
   {
     const slStderrCapture quiet;
     forgetCached(this->FileName);
@@ -90,10 +90,10 @@ int slImageReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInfor
     vtkErrorMacro(<< this->ErrorMessage);
     return 0;
   }
-  const std::string pngProblem = slPNGProblem(name);
-  if (!pngProblem.empty())
+  const std::string fileProblem = slImageFileProblem(name);
+  if (!fileProblem.empty())
   {
-    this->ErrorMessage = name + ": cannot read image: " + pngProblem;
+    this->ErrorMessage = name + ": cannot read image: " + fileProblem;
     vtkErrorMacro(<< this->ErrorMessage);
     return 0;
   }

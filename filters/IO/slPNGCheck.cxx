@@ -1,4 +1,4 @@
-#include "slPNGCheck.h"
+#include "slImageFileCheck.h"
 
 #include "shadelab/PrintableText.h"
 
@@ -45,8 +45,7 @@ std::string slPNGProblem(const std::string& fileName)
     {
       const std::uint64_t remain = left > 4 ? left - 4 : 0; // what its data may take, before the CRC
       return "PNG chunk '" + type + "' at byte " + std::to_string(at) + " declares " + std::to_string(length) +
-        " bytes of data; " + std::to_string(remain) + (remain == 1 ? " byte remains" : " bytes remain") +
-        " in the file";
+        " bytes of data; " + slBytesRemain(remain);
     }
     if (std::memcmp(header + 4, "IEND", 4) == 0)
     {

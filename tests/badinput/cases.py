@@ -3,7 +3,7 @@
 Arguments and messages use paths relative to the case's folder, where the
 input files are written and every out.* argument already exists with other
 content. Each case expects exactly one line on stderr."""
-from inputs import (QUAD_OBJ, TETRA_OFF, THREE_LIGHTS, glb, gltf, legacy_vtk, obj, ply_ascii, ply_binary,
+from inputs import (QUAD_OBJ, TETRA_OFF, THREE_LIGHTS, exr, glb, gltf, legacy_vtk, obj, ply_ascii, ply_binary,
                     ply_header, png, stl_binary, vtp, vtp_appended_base64_header, vtp_compressed_header)
 
 
@@ -221,6 +221,9 @@ CASES = [
     image_case("png huge header", "t.png", png(width=100000, height=100000), 'shadelab light: t.png: cannot read image: its header declares 100000x100000 pixels of 3 channels, more than ShadeLab reads (2^28 values)\n'),
     # 8 + 25 bytes of signature and IHDR; the tEXt chunk's 9 bytes of data are 4 short of a CRC.
     image_case("png chunk longer than the file", "t.png", png(text_claim=1953300627), 'shadelab light: t.png: cannot read image: PNG chunk \'tEXt\' at byte 33 declares 1953300627 bytes of data; 5 bytes remain in the file\n'),
+    image_case("exr attribute longer than the file", "t.exr", exr(1979711507), 'shadelab light: t.exr: cannot read image: EXR attribute \'comments\' (string) at byte 8 declares 1979711507 bytes; 3 bytes remain in the file\n'),
+    image_case("exr attribute of negative size", "t.exr", exr(-5), 'shadelab light: t.exr: cannot read image: EXR attribute \'comments\' (string) at byte 8 declares -5 bytes; 3 bytes remain in the file\n'),
+    image_case("exr name without its end", "t.exr", exr(), 'shadelab light: t.exr: cannot read image: EXR header at byte 8: an attribute name that does not end within 255 bytes or before the end of the file\n'),
     image_case("png garbage", "t.png", b"\x89PNG\r\n\x1a\n\x1b[31m garbage", 'shadelab light: t.png: cannot read image: PNG chunk \'m ga\' at byte 8 declares 458961713 bytes of data; 1 byte remains in the file\n'),
     image_case("png empty", "t.png", b"", 'shadelab light: t.png: cannot read image: Invalid image file "t.png": Not a PNG file\n'),
     image_case("jpg truncated", "t.jpg", "seed:fuzz_image_jpg/gradient.jpg:300", 'shadelab light: t.jpg: cannot read image: Invalid image file "t.jpg": JPEG error: Premature end of JPEG file ("t.jpg") Bad JPEG header for "t.jpg"\n'),

@@ -114,6 +114,16 @@ def png(width=4, height=4, crc_ok=True, cut=0, text_claim=None):
     return data[:len(data) - cut]
 
 
+def exr(attribute_size=None, name=b"comments"):
+    """The start of an OpenEXR header: one string attribute @name whose size
+    field says @attribute_size, followed by 3 bytes; or, with @attribute_size
+    None, a 300-byte name with no NUL after it."""
+    head = b"\x76\x2f\x31\x01\x02\x00\x00\x00"
+    if attribute_size is None:
+        return head + b"n" * 300
+    return head + name + b"\0string\0" + struct.pack("<i", attribute_size) + b"abc"
+
+
 def vtp_compressed_header(blocks):
     """A zlib-compressed VTP whose points array's header declares @blocks blocks."""
     header = base64.b64encode(struct.pack("<III", blocks, 32768, 0)).decode().encode()
