@@ -22,6 +22,11 @@ std::vector<Command>& registry()
 }
 } // namespace
 
+void reportProblem(const std::string& command, const std::string& message)
+{
+  std::cerr << "shadelab " << command << ": " << message << "\n";
+}
+
 CommandRegistration::CommandRegistration(const Command& command)
 {
   std::vector<Command>& table = registry();
@@ -88,12 +93,12 @@ int main(int argc, char** argv)
       }
       catch (const shadelab::app::UsageError& e)
       {
-        std::cerr << "shadelab " << name << ": " << e.what() << "\n";
+        shadelab::app::reportProblem(name, e.what());
         return 2;
       }
       catch (const std::exception& e)
       {
-        std::cerr << "shadelab " << name << ": " << e.what() << "\n";
+        shadelab::app::reportProblem(name, e.what());
         return 1;
       }
     }
