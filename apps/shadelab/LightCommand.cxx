@@ -2,6 +2,7 @@
 #include "CommandLine.h"
 #include "Commands.h"
 #include "Inputs.h"
+#include "MeshJobs.h"
 #include "LightingOptions.h"
 #include "OutputFormats.h"
 #include "slScene.h"
@@ -28,18 +29,19 @@ int runLight(const std::vector<std::string>& args)
   specs.push_back({ "per-light", "", "", "also write Radiance_<i> for every light i" });
   specs.push_back({ "diffuse-array", "", "NAME", "an RGB(A) point array of MESH: a base colour multiplying k_a and k_d (as in render)" });
   specs.push_back({ "diffuse-texture", "", "FILE", "an image: a base colour multiplying k_a and k_d at the texture coordinates" });
+  specs = withMeshJobOptions(specs);
   const CommandLine cl(args, specs);
   if (cl.has("help"))
   {
-    std::cout << "usage: shadelab light MESH [--scene S.json] -o OUT.vtp\n\n"
+    std::cout << "usage: shadelab light MESH... [--scene S.json] -o OUT\n\n"
                  "Evaluates the lighting equation per point and writes the point arrays Ambient,\n"
                  "Diffuse, Specular, Emission and Radiance (RGB, linear).\n"
-                 "MESH: " << meshFormatsText() << "; point normals are computed if missing.\n\noptions:\n"
-              << CommandLine::describe(specs);
+                 "MESH: " << meshFormatsText() << "; point normals are computed if missing.\n"
+              << meshJobsHelp() << "\noptions:\n" << CommandLine::describe(specs);
     return 0;
   }
-  const std::string meshPath = cl.meshWithOutput();
-  checkOutputOption(cl, "output", { OutputKind::Mesh });
+  const std::vector<MeshJob> jobs = meshJobs(cl);
+  checkSingleMeshOption(cl, "image", jobs);
   checkOutputOption(cl, "image", { OutputKind::Image });
   vtkNew<slRadianceFilter> filter;
   vtkSmartPointer<slScene> scene = configureLitFilter(cl, filter);
@@ -59,12 +61,13 @@ int runLight(const std::vector<std::string>& args)
     }
     filter->SetDiffuseTexture(texture->GetOutput());
   }
-  filter->SetInputData(loadMeshWithNormals(meshPath));
-  runLitFilter(filter, meshPath);
-  writeFieldImageIfAsked(cl, filter->GetOutput(), scene, "Ambient,Diffuse,Specular,Radiance");
-  writeMesh(filter->GetOutput(), cl.get("output"));
-  std::cout << "wrote " << cl.get("output") << "\n";
-  return 0;
+  return runMeshJobs("light", jobs, [&](const MeshJob& job) {
+    filter->SetInputData(loadMeshWithNormals(job.input));
+    runLitFilter(filter, job.input);
+    writeFieldImageIfAsked(cl, filter->GetOutput(), scene, "Ambient,Diffuse,Specular,Radiance");
+    writeMesh(filter->GetOutput(), job.output);
+    std::cout << "wrote " << job.output << "\n";
+  });
 }
 
 const CommandRegistration registration{ { 31, "light",

@@ -1,5 +1,6 @@
 #include "MeshJobs.h"
 
+#include "Commands.h"
 #include "OutputFormats.h"
 
 #include <filesystem>
@@ -10,11 +11,28 @@ namespace shadelab
 namespace app
 {
 
-OptionSpec meshFormatOption()
+const char* meshJobsHelp()
 {
-  return { "format", "", "EXT",
-    std::string("with -o FOLDER: the format of each output, FOLDER/NAME.EXT (") + outputExtensions(OutputKind::Mesh) +
-      "; default vtp)" };
+  return "With -o FOLDER, each MESH is written to FOLDER/NAME.EXT; a MESH that fails is\n"
+         "reported and the others are still done (exit status 1 if any failed).\n";
+}
+
+std::vector<OptionSpec> withMeshJobOptions(std::vector<OptionSpec> specs)
+{
+  for (auto at = specs.begin(); at != specs.end(); ++at)
+  {
+    if (at->name == "output")
+    {
+      at->valueName = "OUT";
+      at->help += ", or an existing folder";
+      specs.insert(at + 1,
+        { "format", "", "EXT",
+          std::string("with -o FOLDER: the format of each output, FOLDER/NAME.EXT (") +
+            outputExtensions(OutputKind::Mesh) + "; default vtp)" });
+      break;
+    }
+  }
+  return specs;
 }
 
 std::vector<MeshJob> meshJobs(const CommandLine& cl)
@@ -64,6 +82,38 @@ std::vector<MeshJob> meshJobs(const CommandLine& cl)
     jobs.push_back({ mesh, path });
   }
   return jobs;
+}
+
+void checkSingleMeshOption(const CommandLine& cl, const std::string& option, const std::vector<MeshJob>& jobs)
+{
+  if (jobs.size() > 1 && cl.has(option))
+  {
+    throw UsageError("--" + option + ": only with one MESH (got " + std::to_string(jobs.size()) + ")");
+  }
+}
+
+int runMeshJobs(const std::string& command, const std::vector<MeshJob>& jobs,
+  const std::function<void(const MeshJob&)>& run)
+{
+  if (jobs.size() == 1)
+  {
+    run(jobs[0]);
+    return 0;
+  }
+  int failed = 0;
+  for (const MeshJob& job : jobs)
+  {
+    try
+    {
+      run(job);
+    }
+    catch (const std::exception& e) // anything about this MESH: the others still run
+    {
+      reportProblem(command, e.what());
+      ++failed;
+    }
+  }
+  return failed ? 1 : 0;
 }
 
 } // namespace app

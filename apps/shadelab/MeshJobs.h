@@ -12,6 +12,7 @@
 
 #include "CommandLine.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -26,14 +27,29 @@ struct MeshJob
   std::string output;
 };
 
-/// The --format option that names the output format of a batch.
-OptionSpec meshFormatOption();
+/// The --help paragraph on batches, ending in a newline.
+const char* meshJobsHelp();
+
+/// @p specs with -o/--output taking a mesh file or a folder (OUT) and the
+/// --format option of a batch after it.
+std::vector<OptionSpec> withMeshJobOptions(std::vector<OptionSpec> specs);
 
 /// The jobs of the MESH arguments and -o of @p cl. Throws UsageError: no
 /// MESH or no -o; several MESH arguments and -o not an existing folder;
 /// --format without a folder, or not a mesh format; two MESH arguments that
 /// would write the same file.
 std::vector<MeshJob> meshJobs(const CommandLine& cl);
+
+/// A UsageError if option @p option of @p cl, which names one file for one
+/// MESH (such as --image), is given for a batch of several.
+void checkSingleMeshOption(const CommandLine& cl, const std::string& option, const std::vector<MeshJob>& jobs);
+
+/// Runs @p run for each of @p jobs and returns the exit status. One job runs
+/// as it is: its problem ends the command. Of several, one that fails is
+/// reported in its line ("shadelab COMMAND: PROBLEM") and the others still
+/// run; the status is then 1.
+int runMeshJobs(const std::string& command, const std::vector<MeshJob>& jobs,
+  const std::function<void(const MeshJob&)>& run);
 
 } // namespace app
 } // namespace shadelab

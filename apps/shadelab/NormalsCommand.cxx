@@ -40,8 +40,7 @@ void computeNormals(const CommandLine& cl, const MeshJob& job)
 int runNormals(const std::vector<std::string>& args)
 {
   std::vector<OptionSpec> specs{
-    { "output", "o", "OUT", outputHelp("mesh to write", OutputKind::Mesh) + ", or an existing folder" },
-    meshFormatOption(),
+    { "output", "o", "FILE", outputHelp("mesh to write", OutputKind::Mesh) },
     { "cells", "", "", "also write face normals (cell array \"Normals\"; VTP and VTK keep it)" },
   };
   for (const OptionSpec& s : normalsOptionSpecs())
@@ -49,6 +48,7 @@ int runNormals(const std::vector<std::string>& args)
     specs.push_back(s);
   }
   specs.push_back({ "help", "h", "", "show this help" });
+  specs = withMeshJobOptions(specs);
   const CommandLine cl(args, specs);
   if (cl.has("help"))
   {
@@ -57,31 +57,10 @@ int runNormals(const std::vector<std::string>& args)
               << meshFormatsText()
               << ") with slPolyDataNormals: weighted face normals,\n"
                  "points split along sharp edges, polygons oriented consistently.\n"
-                 "With -o FOLDER, each MESH is written to FOLDER/NAME.EXT; a MESH that fails is\n"
-                 "reported and the others are still done (exit status 1 if any failed).\n\noptions:\n"
-              << CommandLine::describe(specs);
+              << meshJobsHelp() << "\noptions:\n" << CommandLine::describe(specs);
     return 0;
   }
-  const std::vector<MeshJob> jobs = meshJobs(cl);
-  if (jobs.size() == 1)
-  {
-    computeNormals(cl, jobs[0]);
-    return 0;
-  }
-  int failed = 0;
-  for (const MeshJob& job : jobs)
-  {
-    try
-    {
-      computeNormals(cl, job);
-    }
-    catch (const std::exception& e) // anything about this MESH: the others still run
-    {
-      reportProblem("normals", e.what());
-      ++failed;
-    }
-  }
-  return failed ? 1 : 0;
+  return runMeshJobs("normals", meshJobs(cl), [&cl](const MeshJob& job) { computeNormals(cl, job); });
 }
 
 const CommandRegistration registration{ { 20, "normals",

@@ -1,6 +1,6 @@
-"""`shadelab normals MESH... -o FOLDER`: each mesh gives the file a run of its
-own would give, a failing mesh is one line and does not stop the others,
-and name clashes and misuse are refused before any work."""
+"""`shadelab normals|light|cosine MESH... -o FOLDER`: each mesh gives the file
+a run of its own would give, a failing mesh is one line and does not stop
+the others, and name clashes and misuse are refused before any work."""
 import filecmp
 import os
 import subprocess
@@ -13,8 +13,11 @@ TETRA = b"OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1
 BAD = b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"
 
 
-def normals(*args, cwd):
-    return subprocess.run([SHADELAB, "normals", *args], capture_output=True, text=True, timeout=300, cwd=cwd)
+COMMANDS = {"normals": ["--weighting", "area"], "light": ["--model", "phong"], "cosine": ["--no-cells"]}
+
+
+def shadelab(command, *args, cwd):
+    return subprocess.run([SHADELAB, command, *args], capture_output=True, text=True, timeout=300, cwd=cwd)
 
 
 class BatchTest(unittest.TestCase):
@@ -28,18 +31,23 @@ class BatchTest(unittest.TestCase):
         os.mkdir(os.path.join(self.work, "out"))
 
     def test_each_mesh_as_its_own_run_and_failures_do_not_stop_the_rest(self):
-        r = normals(SPOT, "bad.obj", "tet.off", "-o", "out", "--weighting", "area", cwd=self.work)
-        self.assertEqual(r.returncode, 1)
-        self.assertEqual(r.stderr, "shadelab normals: bad.obj: line 4: vertex index 9 is out of range [1, 3]\n")
-        self.assertEqual(sorted(os.listdir(os.path.join(self.work, "out"))), ["spot.vtp", "tet.vtp"])
-        for mesh, name in ((SPOT, "spot"), ("tet.off", "tet")):
-            single = normals(mesh, "-o", name + ".vtp", "--weighting", "area", cwd=self.work)
-            self.assertEqual(single.returncode, 0, single.stderr)
-            self.assertTrue(filecmp.cmp(os.path.join(self.work, name + ".vtp"),
-                                        os.path.join(self.work, "out", name + ".vtp"), shallow=False), name)
+        for command, options in COMMANDS.items():
+            with self.subTest(command=command):
+                out = os.path.join(self.work, command)
+                os.mkdir(out)
+                r = shadelab(command, SPOT, "bad.obj", "tet.off", "-o", out, *options, cwd=self.work)
+                self.assertEqual(r.returncode, 1)
+                self.assertEqual(r.stderr,
+                                 "shadelab %s: bad.obj: line 4: vertex index 9 is out of range [1, 3]\n" % command)
+                self.assertEqual(sorted(os.listdir(out)), ["spot.vtp", "tet.vtp"])
+                for mesh, name in ((SPOT, "spot"), ("tet.off", "tet")):
+                    single = shadelab(command, mesh, "-o", name + ".vtp", *options, cwd=self.work)
+                    self.assertEqual(single.returncode, 0, single.stderr)
+                    self.assertTrue(filecmp.cmp(os.path.join(self.work, name + ".vtp"), os.path.join(out, name + ".vtp"),
+                                                shallow=False), name)
 
     def test_format_names_the_outputs(self):
-        r = normals(SPOT, "tet.off", "-o", "out", "--format", "ply", cwd=self.work)
+        r = shadelab("normals", SPOT, "tet.off", "-o", "out", "--format", "ply", cwd=self.work)
         self.assertEqual(r.returncode, 0, r.stderr)
         self.assertEqual(sorted(os.listdir(os.path.join(self.work, "out"))), ["spot.ply", "tet.ply"])
 
@@ -53,15 +61,17 @@ class BatchTest(unittest.TestCase):
             ((SPOT, "-o", "out", "--format", "png"),
              '--format .png: unsupported mesh format ".png" (supported: .vtp .vtk .ply .obj .stl)'),
         ]
-        for args, message in cases:
+        cosine = [((SPOT, "tet.off", "-o", "out", "--image", "one.png"), "--image: only with one MESH (got 2)")]
+        for command, args, message in [("normals", *c) for c in cases] + [("cosine", *c) for c in cosine]:
             with self.subTest(args=args):
-                r = normals(*args, cwd=self.work)
+                r = shadelab(command, *args, cwd=self.work)
                 self.assertEqual(r.returncode, 2)
-                self.assertTrue(r.stderr.startswith("shadelab normals: ") and r.stderr.endswith(message + "\n"),
+                self.assertTrue(r.stderr.startswith("shadelab %s: " % command) and r.stderr.endswith(message + "\n"),
                                 r.stderr)
                 self.assertEqual(r.stderr.count("\n"), 1)
                 self.assertEqual(os.listdir(os.path.join(self.work, "out")), [])
                 self.assertFalse(os.path.exists(os.path.join(self.work, "one.vtp")))
+                self.assertFalse(os.path.exists(os.path.join(self.work, "one.png")))
 
 
 if __name__ == "__main__":

@@ -248,7 +248,7 @@ CASES = [
     cli_case("render unknown component", ["render", "m.off", "--component", "glow", "-o", "out.png"], 'shadelab render: --component: "glow" is not one of total, ambient, diffuse, specular, emission, cos\n'),
     cli_case("unknown option", ["normals", "m.off", "--shiny", "-o", "out.vtp"], 'shadelab normals: unknown option --shiny (see --help)\n'),
     cli_case("missing output", ["normals", "m.off"], 'shadelab normals: missing -o/--output FILE\n'),
-    cli_case("two meshes", ["light", "m.off", "m.off", "-o", "out.vtp"], 'shadelab light: expected one MESH argument, got 2\n'),
+    cli_case("two meshes", ["tangents", "m.off", "m.off", "-o", "out.vtp"], 'shadelab tangents: expected one MESH argument, got 2\n'),
     cli_case("two meshes to one file", ["normals", "m.off", "m.off", "-o", "out.vtp"], 'shadelab normals: -o/--output: with 2 MESH arguments, "out.vtp" must be an existing folder\n'),
     cli_case("option without value", ["normals", "m.off", "-o"], 'shadelab normals: option -o needs a value (OUT)\n'),
     cli_case("unknown model", ["light", "m.off", "--model", "toon", "-o", "out.vtp"], 'shadelab light: --model: "toon" is not a lighting model (lambert, phong, blinn-phong, lambert-normalized, phong-normalized, blinn-phong-normalized)\n'),
