@@ -1,5 +1,6 @@
 #include "slImageReader.h"
 
+#include "slImageCodec.h"
 #include "slImageFileCheck.h"
 #include "slStderrCapture.h"
 
@@ -16,9 +17,6 @@
 
 #include <filesystem>
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-#include <OpenImageIO/imagecache.h>
 
 vtkStandardNewMacro(slImageReader);
 
@@ -29,12 +27,19 @@ namespace
 /// header claiming more is rejected before anything is allocated.
 constexpr double kMaximumValues = 268435456.0;
 
-/// Drops what OpenImageIO's shared cache holds for @p name: the file may have
-/// changed since it was last read in this process, and a stale spec read
-/// against new contents reads outside them.
-void forgetCached(const std::string& name)
+/// The one-line reason a read failed: the library's @p error, else what it
+/// printed on stderr, else "unknown format".
+std::string failureReason(std::string error, const slStderrCapture& printed)
 {
-  OIIO::ImageCache::create(true)->invalidate(OIIO::ustring(name), true);
+  if (error.empty())
+  {
+    error = printed.Text();
+  }
+  for (char& c : error)
+  {
+    c = c == '\n' ? ' ' : c;
+  }
+  return error.empty() ? "unknown format" : shadelab::printableText(error, 200);
 }
 } // namespace
 
@@ -55,15 +60,19 @@ int slImageReader::RequestInformation(vtkInformation*, vtkInformationVector**, v
   int extent[6] = { 0, -1, 0, -1, 0, 0 };
   // A file whose length fields reach past its end is reported by RequestData;
   // its header is not read here, as its library would allocate what they claim.
-  if (this->FileName && slImageFileProblem(this->FileName).empty())
+  std::string ignored;
+  const slImageCodec* codec = slLoadImageCodec(ignored);
+  if (codec && this->FileName && slImageFileProblem(this->FileName).empty())
   {
     const slStderrCapture quiet;
-    forgetCached(this->FileName);
-    OIIO::ImageBuf probe(this->FileName);
-    if (probe.init_spec(this->FileName, 0, 0))
+    // The file may have changed since this process last read it, and a stale
+    // header read against new contents reads outside them.
+    codec->Forget(this->FileName);
+    slImageHeader header;
+    if (codec->ReadHeader(this->FileName, header, ignored))
     {
-      extent[1] = probe.spec().width - 1;
-      extent[3] = probe.spec().height - 1;
+      extent[1] = header.Width - 1;
+      extent[3] = header.Height - 1;
     }
   }
   outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
@@ -97,32 +106,53 @@ int slImageReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInfor
     vtkErrorMacro(<< this->ErrorMessage);
     return 0;
   }
+  std::string codecProblem;
+  const slImageCodec* codec = slLoadImageCodec(codecProblem);
+  if (!codec)
+  {
+    this->ErrorMessage = name + ": cannot read image: " + codecProblem;
+    vtkErrorMacro(<< this->ErrorMessage);
+    return 0;
+  }
   // The image libraries' own lines on stderr are held back: the problem is
   // reported once, in ErrorMessage.
   slStderrCapture quiet;
-  forgetCached(name);
-  OIIO::ImageBuf image(name);
-  const bool haveSpec = image.init_spec(name, 0, 0);
-  const bool is8Bit = haveSpec && image.spec().format == OIIO::TypeDesc::UINT8;
-  const OIIO::TypeDesc type = is8Bit && !this->OutputFloat ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT;
+  codec->Forget(name);
+  slImageHeader header;
   std::string reason;
-  if (haveSpec && static_cast<double>(image.spec().width) * image.spec().height * image.spec().nchannels > kMaximumValues)
+  const bool haveHeader = codec->ReadHeader(name, header, reason);
+  const bool asFloat = !(header.EightBit && !this->OutputFloat);
+  vtkSmartPointer<vtkDataArray> scalars;
+  if (haveHeader && static_cast<double>(header.Width) * header.Height * header.Channels > kMaximumValues)
   {
-    reason = "its header declares " + std::to_string(image.spec().width) + "x" + std::to_string(image.spec().height) +
-      " pixels of " + std::to_string(image.spec().nchannels) + " channels, more than ShadeLab reads (2^28 values)";
+    reason = "its header declares " + std::to_string(header.Width) + "x" + std::to_string(header.Height) +
+      " pixels of " + std::to_string(header.Channels) + " channels, more than ShadeLab reads (2^28 values)";
   }
-  else if (!image.read(0, 0, /*force*/ true, type))
+  else if (haveHeader)
   {
-    reason = image.geterror();
-    if (reason.empty())
+    if (asFloat)
     {
-      reason = quiet.Text();
+      scalars = vtkSmartPointer<vtkFloatArray>::New();
     }
-    for (char& c : reason)
+    else
     {
-      c = c == '\n' ? ' ' : c;
+      scalars = vtkSmartPointer<vtkUnsignedCharArray>::New();
     }
-    reason = reason.empty() ? "unknown format" : shadelab::printableText(reason, 200);
+    scalars->SetName("ImageScalars");
+    scalars->SetNumberOfComponents(header.Channels);
+    scalars->SetNumberOfTuples(static_cast<vtkIdType>(header.Width) * header.Height);
+    if (codec->ReadPixels(name, asFloat, scalars->GetVoidPointer(0), reason))
+    {
+      reason.clear();
+    }
+    else
+    {
+      reason = failureReason(reason, quiet);
+    }
+  }
+  else
+  {
+    reason = failureReason(reason, quiet);
   }
   if (!reason.empty())
   {
@@ -130,27 +160,7 @@ int slImageReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInfor
     vtkErrorMacro(<< this->ErrorMessage);
     return 0;
   }
-  // OpenImageIO's row 0 is the top of the picture; VTK's is the bottom.
-  OIIO::ImageBuf flipped = OIIO::ImageBufAlgo::flip(image);
-
-  const OIIO::ImageSpec& spec = flipped.spec();
-  const int channels = spec.nchannels;
-  const vtkIdType pixels = static_cast<vtkIdType>(spec.width) * spec.height;
-  vtkSmartPointer<vtkDataArray> scalars;
-  if (type == OIIO::TypeDesc::UINT8)
-  {
-    scalars = vtkSmartPointer<vtkUnsignedCharArray>::New();
-  }
-  else
-  {
-    scalars = vtkSmartPointer<vtkFloatArray>::New();
-  }
-  scalars->SetName("ImageScalars");
-  scalars->SetNumberOfComponents(channels);
-  scalars->SetNumberOfTuples(pixels);
-  flipped.get_pixels(OIIO::ROI::All(), type, scalars->GetVoidPointer(0));
-
-  output->SetExtent(0, spec.width - 1, 0, spec.height - 1, 0, 0);
+  output->SetExtent(0, header.Width - 1, 0, header.Height - 1, 0, 0);
   output->GetPointData()->SetScalars(scalars);
   return 1;
 }

@@ -3,6 +3,7 @@
 #include "shadelab/AtomicFile.h"
 #include "shadelab/MemoryFile.h"
 #include "slFileExtension.h"
+#include "slImageCodec.h"
 
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
@@ -11,8 +12,6 @@
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
 
 #include <stdexcept>
 
@@ -85,31 +84,33 @@ bool slImageWriter::WriteImage(vtkImageData* image)
   {
     return fail("nothing to write (the input is not a non-empty 2D image with scalars)");
   }
-  OIIO::TypeDesc type;
+  bool isFloat = false;
   switch (scalars->GetDataType())
   {
     case VTK_UNSIGNED_CHAR:
-      type = OIIO::TypeDesc::UINT8;
       break;
     case VTK_FLOAT:
-      type = OIIO::TypeDesc::FLOAT;
+      isFloat = true;
       break;
     default:
       return fail(std::string("unsupported scalar type ") + scalars->GetDataTypeAsString() +
         " (use unsigned char or float)");
   }
-  const OIIO::ImageSpec spec(dims[0], dims[1], scalars->GetNumberOfComponents(), type);
-  // Wrap VTK's buffer (bottom row first) and flip to OpenImageIO's top-first.
-  OIIO::ImageBuf wrapped(spec, scalars->GetVoidPointer(0));
-  OIIO::ImageBuf flipped = OIIO::ImageBufAlgo::flip(wrapped);
+  std::string codecProblem;
+  const slImageCodec* codec = slLoadImageCodec(codecProblem);
+  if (!codec)
+  {
+    return fail(codecProblem);
+  }
   try
   {
     // OpenImageIO's writers do not all report a failed write (PNG reports
     // success on a full disk): they write to memory, ShadeLab to the disk.
     shadelab::MemoryFile memory;
-    if (!flipped.write(memory.path(), OIIO::TypeUnknown, ext.substr(1)))
+    std::string reason;
+    if (!codec->Write(memory.path(), ext.substr(1), dims[0], dims[1], scalars->GetNumberOfComponents(), isFloat,
+          scalars->GetVoidPointer(0), reason))
     {
-      std::string reason = flipped.geterror();
       for (char& c : reason)
       {
         c = c == '\n' ? ' ' : c;

@@ -1,0 +1,52 @@
+#ifndef slImageCodec_h
+#define slImageCodec_h
+/**
+ * @file slImageCodec.h
+ * @brief What slImageReader and slImageWriter ask of OpenImageIO, behind a
+ * library loaded on first use.
+ *
+ * OpenImageIO brings 261 shared libraries (codecs, DICOM, video) whose
+ * loading and relocation take about a quarter of a second at every start
+ * of a program that links it, used or not. ShadeLab::IO therefore does not
+ * link it: the functions below live in libShadeLabImageCodec.so (a module
+ * beside libShadeLabIO), which slLoadImageCodec() opens the first time an
+ * image is read or written. Internal to ShadeLab::IO.
+ */
+
+#include <string>
+
+/// Size and kind of an image file, from its header.
+struct slImageHeader
+{
+  int Width = 0;
+  int Height = 0;
+  int Channels = 0;
+  bool EightBit = false; ///< 8-bit unsigned values (otherwise read as float)
+};
+
+/// The image functions; every one returns false with a one-line reason in
+/// @p error (which may be empty when the library gives none).
+struct slImageCodec
+{
+  /// Forgets what the library caches for @p path (the file may have changed).
+  void (*Forget)(const std::string& path);
+  /// The header of @p path.
+  bool (*ReadHeader)(const std::string& path, slImageHeader& header, std::string& error);
+  /// Every pixel of @p path, bottom row first (VTK's order), as unsigned
+  /// char (@p asFloat false; the file must be 8-bit) or float, into
+  /// @p pixels (width x height x channels values).
+  bool (*ReadPixels)(const std::string& path, bool asFloat, void* pixels, std::string& error);
+  /// Encodes @p pixels (bottom row first; unsigned char or float) in the
+  /// format named by @p format ("png", "exr", ...) into the file @p path.
+  bool (*Write)(const std::string& path, const std::string& format, int width, int height, int channels,
+    bool isFloat, const void* pixels, std::string& error);
+};
+
+/// The codec, loaded on the first call; nullptr with the reason in @p error
+/// when libShadeLabImageCodec.so cannot be loaded.
+const slImageCodec* slLoadImageCodec(std::string& error);
+
+/// The symbol the codec library exports.
+extern "C" const slImageCodec* slImageCodecOpenImageIO();
+
+#endif
