@@ -1,5 +1,6 @@
 #include "CommandLine.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -60,6 +61,16 @@ CommandLine::CommandLine(const std::vector<std::string>& args, const std::vector
         throw UsageError("option " + word + " needs a value (" + spec->valueName + ")");
       }
       inlineValue = args[++i];
+    }
+    if (!spec->choices.empty() &&
+      std::find(spec->choices.begin(), spec->choices.end(), inlineValue) == spec->choices.end())
+    {
+      std::string names;
+      for (const std::string& choice : spec->choices)
+      {
+        names += (names.empty() ? "" : ", ") + choice;
+      }
+      throw UsageError("option --" + spec->name + ": unknown value \"" + inlineValue + "\" (" + names + ")");
     }
     this->Values[spec->name] = inlineValue;
   }

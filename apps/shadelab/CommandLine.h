@@ -37,6 +37,8 @@ struct OptionSpec
   std::string shortName; ///< e.g. "o", or ""
   std::string valueName; ///< e.g. "FILE"; empty for a flag
   std::string help;
+  /// The values the option may take; empty: any. Checked when parsing.
+  std::vector<std::string> choices = {};
 };
 
 class CommandLine

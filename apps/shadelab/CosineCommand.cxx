@@ -49,7 +49,7 @@ int runCosine(const std::vector<std::string>& args)
     runLitFilter(filter, job.input);
     writeFieldImageIfAsked(
       cl, filter->GetOutput(), scene, cl.has("light") ? "CosThetaRaw,CosTheta" : "CosThetaRaw_0,CosTheta_0");
-    writeMesh(filter->GetOutput(), job.output);
+    writeMesh(filter->GetOutput(), job.output, cl);
     std::cout << "wrote " << job.output << "\n";
   });
 }

@@ -26,6 +26,7 @@ int runDetail(const std::vector<std::string>& args)
 {
   const std::vector<OptionSpec> specs{
     { "output", "o", "FILE", outputHelp("mesh to write", OutputKind::Mesh) },
+    meshCompressionOption(),
     { "normal-map", "", "IMG", "tangent-space normal map (OpenGL, green up)" },
     { "directx", "", "", "the normal map is DirectX (green down)" },
     { "strength", "", "S", "normal-map strength, 0-10 (default 1)" },
@@ -83,7 +84,7 @@ int runDetail(const std::vector<std::string>& args)
   noteNonPolygonCells(mesh, "detail", path);
   filter->SetInputData(mesh);
   vtkSmartPointer<vtkPolyData> out = runMeshFilter(filter, path);
-  writeMesh(out, cl.get("output"));
+  writeMesh(out, cl.get("output"), cl);
   std::cout << "wrote " << cl.get("output") << ": " << out->GetNumberOfPoints() << " points\n";
   return 0;
 }

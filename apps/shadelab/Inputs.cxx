@@ -98,9 +98,24 @@ void parseSize(const std::string& text, int& width, int& height)
   }
 }
 
-void writeMesh(vtkPolyData* mesh, const std::string& path)
+OptionSpec meshCompressionOption()
 {
+  std::vector<std::string> names;
+  for (int c = slMeshWriter::NONE; c <= slMeshWriter::ZLIB; ++c)
+  {
+    names.emplace_back(slMeshWriter::GetCompressionName(c));
+  }
+  return { "compress", "", "NAME",
+    "VTP compression: lz4 (default; fast), zlib (smaller, about 6 times slower to write) or none", names };
+}
+
+void writeMesh(vtkPolyData* mesh, const std::string& path, const CommandLine& cl)
+{
+  // The parser has checked the name against meshCompressionOption()'s list.
+  const int compression = slMeshWriter::GetCompressionByName(
+    cl.get("compress", slMeshWriter::GetCompressionName(slMeshWriter::LZ4)));
   vtkNew<slMeshWriter> writer;
+  writer->SetCompression(compression);
   writer->SetInputData(mesh);
   writer->SetFileName(path.c_str());
   if (!writer->Write())

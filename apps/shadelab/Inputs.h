@@ -21,6 +21,7 @@ namespace shadelab
 namespace app
 {
 class CommandLine;
+struct OptionSpec;
 
 /// "OBJ, PLY, STL, VTP, VTK or OFF".
 const char* meshFormatsText();
@@ -42,8 +43,12 @@ void applySceneOverrides(const CommandLine& cl, slScene* scene);
 /// Parses "WxH" (16..8192 each). Throws UsageError.
 void parseSize(const std::string& text, int& width, int& height);
 
-/// Writes a mesh all-or-nothing (VTP, VTK, PLY, OBJ, STL). Throws JobError.
-void writeMesh(vtkPolyData* mesh, const std::string& path);
+/// The --compress option of every subcommand that writes meshes.
+OptionSpec meshCompressionOption();
+
+/// Writes a mesh all-or-nothing (VTP, VTK, PLY, OBJ, STL), VTP compressed
+/// as --compress of @p cl says. Throws JobError.
+void writeMesh(vtkPolyData* mesh, const std::string& path, const CommandLine& cl);
 
 /// Writes an image all-or-nothing. Throws JobError.
 void writeImage(vtkImageData* image, const std::string& path);

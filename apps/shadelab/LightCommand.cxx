@@ -65,7 +65,7 @@ int runLight(const std::vector<std::string>& args)
     filter->SetInputData(loadMeshWithNormals(job.input));
     runLitFilter(filter, job.input);
     writeFieldImageIfAsked(cl, filter->GetOutput(), scene, "Ambient,Diffuse,Specular,Radiance");
-    writeMesh(filter->GetOutput(), job.output);
+    writeMesh(filter->GetOutput(), job.output, cl);
     std::cout << "wrote " << job.output << "\n";
   });
 }

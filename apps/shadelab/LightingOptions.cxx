@@ -25,6 +25,7 @@ std::vector<OptionSpec> litOptions()
     { "scene", "s", "FILE", "JSON scene (default: ShadeLab's built-in two-light scene)" },
     { "model", "", "NAME", "override the scene's lighting model" },
     { "output", "o", "FILE", outputHelp("mesh to write; .vtp and .vtk keep the arrays", OutputKind::Mesh) },
+    meshCompressionOption(),
     { "allow-zero-normals", "", "", "light zero-length normals as 'no direction' instead of failing" },
     { "image", "", "FILE", outputHelp("also write an image of the fields, colour-mapped, with the lights drawn", OutputKind::Image) },
     { "fields", "", "A,B,...", "arrays the image shows (default depends on the subcommand)" },

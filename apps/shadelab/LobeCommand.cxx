@@ -151,10 +151,10 @@ int runLobe(const std::vector<std::string>& args)
     lobe->SetModel(modelNumber(cl));
     applyLobeOptions(cl, lobe);
     lobe->Update();
-    writeMesh(lobe->GetOutput(0), output);
+    writeMesh(lobe->GetOutput(0), output, cl);
     if (cl.has("slice"))
     {
-      writeMesh(lobe->GetSliceOutput(), cl.get("slice"));
+      writeMesh(lobe->GetSliceOutput(), cl.get("slice"), cl);
       std::cout << "wrote " << cl.get("slice") << "\n";
     }
   }
@@ -190,7 +190,7 @@ int runLobe(const std::vector<std::string>& args)
     }
     else
     {
-      writeMesh(lobes->GetOutput(), output);
+      writeMesh(lobes->GetOutput(), output, cl);
     }
   }
   std::cout << "wrote " << output << "\n";

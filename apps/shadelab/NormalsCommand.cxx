@@ -30,7 +30,7 @@ void computeNormals(const CommandLine& cl, const MeshJob& job)
   noteNonPolygonCells(mesh, "normals", job.input);
   normals->SetInputData(mesh);
   vtkSmartPointer<vtkPolyData> out = runMeshFilter(normals, job.input);
-  writeMesh(out, job.output);
+  writeMesh(out, job.output, cl);
   std::cout << "wrote " << job.output << ": " << out->GetNumberOfPoints() << " points ("
             << out->GetNumberOfPoints() - mesh->GetNumberOfPoints() << " added along sharp edges), "
             << out->GetNumberOfPolys() << " polygons, " << normals->GetNumberOfFlippedPolygons()

@@ -1,5 +1,7 @@
 #include "NormalsOptions.h"
 
+#include "Inputs.h"
+
 #include "slPolyDataFilter.h"
 #include "slPolyDataNormals.h"
 
@@ -22,6 +24,7 @@ std::vector<OptionSpec> normalsOptionSpecs()
     { "no-consistency", "", "", "do not reorder polygons to agree across shared edges" },
     { "outward", "", "", "orient closed surfaces outward" },
     { "weld", "", "", "compute normals as if coincident points were one (unwelded seams)" },
+    meshCompressionOption(),
   };
 }
 

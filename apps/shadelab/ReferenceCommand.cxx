@@ -90,7 +90,7 @@ int runReference(const std::vector<std::string>& args)
   filter->SetInputData(loadMeshWithNormals(meshPath));
   runLitFilter(filter, meshPath);
   writeFieldImageIfAsked(cl, filter->GetOutput(), scene, "Radiance,DiscreteRadiance,RadianceError,RadianceStdError");
-  writeMesh(filter->GetOutput(), cl.get("output"));
+  writeMesh(filter->GetOutput(), cl.get("output"), cl);
   printSummary(filter->GetOutput());
   std::cout << "wrote " << cl.get("output") << "\n";
   return 0;

@@ -56,7 +56,7 @@ int runTangents(const std::vector<std::string>& args)
   vtkNew<slPolyDataTangents> tangents;
   tangents->SetInputData(mesh);
   vtkSmartPointer<vtkPolyData> out = runMeshFilter(tangents, path);
-  writeMesh(out, cl.get("output"));
+  writeMesh(out, cl.get("output"), cl);
   std::cout << "wrote " << cl.get("output") << ": " << out->GetNumberOfPoints() << " points ("
             << tangents->GetNumberOfSplitPoints() << " split along mirror seams)\n";
   return 0;

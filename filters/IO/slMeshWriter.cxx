@@ -27,15 +27,33 @@ vtkStandardNewMacro(slMeshWriter);
 
 namespace
 {
+/// The names of slMeshWriter::Compressions, in order.
+constexpr const char* kCompressionNames[] = { "none", "lz4", "zlib" };
+
 /// A VTK writer for @p ext writing @p mesh to @p path; null if unsupported.
-vtkSmartPointer<vtkAlgorithm> makeWriter(const std::string& ext, vtkPolyData* mesh, const std::string& path)
+vtkSmartPointer<vtkAlgorithm> makeWriter(
+  const std::string& ext, vtkPolyData* mesh, const std::string& path, int compression)
 {
   if (ext == ".vtp")
   {
     auto w = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
     w->SetInputData(mesh);
     w->SetFileName(path.c_str());
+    // Raw appended data: base64 would cost more time than it saves.
     w->SetDataModeToAppended();
+    w->EncodeAppendedDataOff();
+    switch (compression)
+    {
+      case slMeshWriter::NONE:
+        w->SetCompressorTypeToNone();
+        break;
+      case slMeshWriter::ZLIB:
+        w->SetCompressorTypeToZLib();
+        break;
+      case slMeshWriter::LZ4:
+        w->SetCompressorTypeToLZ4();
+        break;
+    }
     return w;
   }
   if (ext == ".vtk")
@@ -162,7 +180,7 @@ bool slMeshWriter::WriteMesh(vtkPolyData* mesh)
     const bool ply = ext == ".ply";
     shadelab::MemoryFile memory;
     shadelab::AtomicOutput output(name);
-    vtkSmartPointer<vtkAlgorithm> writer = makeWriter(ext, mesh, ply ? output.temporaryPath() : memory.path());
+    vtkSmartPointer<vtkAlgorithm> writer = makeWriter(ext, mesh, ply ? output.temporaryPath() : memory.path(), this->Compression);
     vtkNew<slErrorCapture> errors;
     errors->Watch(writer);
     writer->Update();
@@ -197,4 +215,22 @@ void slMeshWriter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "Compression: " << GetCompressionName(this->Compression) << "\n";
+}
+
+const char* slMeshWriter::GetCompressionName(int compression)
+{
+  return compression >= NONE && compression <= ZLIB ? kCompressionNames[compression] : nullptr;
+}
+
+int slMeshWriter::GetCompressionByName(const std::string& name)
+{
+  for (int c = NONE; c <= ZLIB; ++c)
+  {
+    if (name == kCompressionNames[c])
+    {
+      return c;
+    }
+  }
+  return -1;
 }

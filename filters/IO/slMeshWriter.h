@@ -6,7 +6,8 @@
  *          nothing.
  *
  * The format follows the file name's extension (case insensitive):
- * .vtp (vtkXMLPolyDataWriter, binary, keeps every array), .vtk
+ * .vtp (vtkXMLPolyDataWriter, raw binary appended data compressed as
+ * Compression says, keeps every array), .vtk
  * (vtkPolyDataWriter, binary, keeps every array), .ply (vtkPLYWriter,
  * binary; keeps point normals, texture coordinates and RGB colours only),
  * .obj (vtkOBJWriter; keeps point normals and texture coordinates only),
@@ -17,6 +18,14 @@
  * a failure (a full disk included) never leaves a partial file nor destroys
  * an existing one. GetErrorMessage() gives a one-line reason naming the file
  * (and the system's reason, e.g. "No space left on device").
+ *
+ * VTP compression: LZ4 by default, about ten times faster to write than
+ * zlib for about twice the size (bench/io/vtp_encoding.py;
+ * docs/architecture.md has the figures).
+ *
+ * Caveats: ParaView 5.11 as Debian 12 ships it cannot read appended VTP
+ * data, compressed or not (its VTK and Debian's libexpat; see
+ * docs/paraview.md): convert to inline binary for it.
  *
  * @sa slMeshReader
  */
@@ -39,6 +48,26 @@ public:
   vtkSetStringMacro(FileName);
   vtkGetStringMacro(FileName);
   ///@}
+
+  /// VTP compression.
+  enum Compressions
+  {
+    NONE = 0,
+    LZ4 = 1,
+    ZLIB = 2,
+  };
+
+  ///@{
+  /// How .vtp data is compressed (default LZ4); other formats ignore it.
+  vtkSetClampMacro(Compression, int, NONE, ZLIB);
+  vtkGetMacro(Compression, int);
+  ///@}
+
+  /// "none", "lz4" or "zlib"; nullptr for another value.
+  static const char* GetCompressionName(int compression);
+
+  /// The Compressions value named @p name, or -1.
+  static int GetCompressionByName(const std::string& name);
 
   /// Updates the input and writes it. Returns true on success.
   bool Write();
@@ -66,6 +95,7 @@ private:
   bool WriteMesh(vtkPolyData* mesh);
 
   char* FileName = nullptr;
+  int Compression = LZ4;
   std::string ErrorMessage;
 };
 

@@ -250,6 +250,7 @@ CASES = [
     cli_case("missing output", ["normals", "m.off"], 'shadelab normals: missing -o/--output FILE\n'),
     cli_case("two meshes", ["tangents", "m.off", "m.off", "-o", "out.vtp"], 'shadelab tangents: expected one MESH argument, got 2\n'),
     cli_case("two meshes to one file", ["normals", "m.off", "m.off", "-o", "out.vtp"], 'shadelab normals: -o/--output: with 2 MESH arguments, "out.vtp" must be an existing folder\n'),
+    cli_case("unknown compression", ["normals", "m.off", "-o", "out.vtp", "--compress", "gzip"], 'shadelab normals: option --compress: unknown value "gzip" (none, lz4, zlib)\n'),
     cli_case("option without value", ["normals", "m.off", "-o"], 'shadelab normals: option -o needs a value (OUT)\n'),
     cli_case("unknown model", ["light", "m.off", "--model", "toon", "-o", "out.vtp"], 'shadelab light: --model: "toon" is not a lighting model (lambert, phong, blinn-phong, lambert-normalized, phong-normalized, blinn-phong-normalized)\n'),
     cli_case("unknown frequency", ["render", "m.off", "--frequency", "sometimes", "-o", "out.png"], 'shadelab render: --frequency: "sometimes" is not one of flat, gouraud, phong\n'),
