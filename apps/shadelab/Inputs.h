@@ -32,6 +32,9 @@ vtkSmartPointer<vtkPolyData> loadMesh(const std::string& path);
 /// Throws JobError ("FILE: KEY.PATH: problem").
 vtkSmartPointer<slScene> loadScene(const std::string& path);
 
+/// The help of --model: what it does and every model's name (LightingTables.h).
+std::string modelOptionHelp();
+
 /// The lighting model named by option --@p option; UsageError listing the
 /// valid names otherwise.
 ShadingModel parseModelOption(const std::string& option, const std::string& value);

@@ -23,7 +23,7 @@ std::vector<OptionSpec> litOptions()
 {
   return {
     { "scene", "s", "FILE", "JSON scene (default: ShadeLab's built-in two-light scene)" },
-    { "model", "", "NAME", "override the scene's lighting model" },
+    { "model", "", "NAME", modelOptionHelp() },
     { "output", "o", "FILE", outputHelp("mesh to write; .vtp and .vtk keep the arrays", OutputKind::Mesh) },
     { "allow-zero-normals", "", "", "light zero-length normals as 'no direction' instead of failing" },
     { "image", "", "FILE", outputHelp("also write an image of the fields, colour-mapped, with the lights drawn", OutputKind::Image) },

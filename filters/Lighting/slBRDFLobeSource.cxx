@@ -2,6 +2,8 @@
 
 #include "slLobeGeometry.h"
 
+#include "shadelab/Scene.h"
+
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
 #include <vtkInformationVector.h>
@@ -58,6 +60,21 @@ int slBRDFLobeSource::RequestData(vtkInformation*, vtkInformationVector**, vtkIn
     output->GetPointData()->SetScalars(values);
   }
   return 1;
+}
+
+void slBRDFLobeSource::SetModel(int model)
+{
+  const std::string problem = shadelab::modelValueProblem(model);
+  if (!problem.empty())
+  {
+    vtkErrorMacro("SetModel: " << problem);
+    return;
+  }
+  if (model != this->Model)
+  {
+    this->Model = model;
+    this->Modified();
+  }
 }
 
 void slBRDFLobeSource::PrintSelf(ostream& os, vtkIndent indent)

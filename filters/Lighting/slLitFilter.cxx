@@ -210,6 +210,21 @@ bool slLitFilter::PrepareLighting(
   return true;
 }
 
+void slLitFilter::SetModel(int model)
+{
+  const std::string problem = model == -1 ? std::string() : shadelab::modelValueProblem(model);
+  if (!problem.empty())
+  {
+    vtkErrorMacro("SetModel: " << problem << ", or -1 for the scene's own");
+    return;
+  }
+  if (model != this->Model)
+  {
+    this->Model = model;
+    this->Modified();
+  }
+}
+
 void slLitFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

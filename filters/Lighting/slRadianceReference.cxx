@@ -128,7 +128,7 @@ int slRadianceReference::RequestData(
   in.normals = normals.data();
   in.lights = setup.lights;
   in.material = setup.material;
-  in.model = setup.model;
+  in.model = static_cast<ShadingModel>(setup.model);
   in.eye = setup.eye;
   RadianceKernelOutput out;
   out.ambient = ambient->GetPointer(0);

@@ -7,6 +7,7 @@
 
 #include "shadelab/Albedo.h"
 #include "shadelab/LightingGLSLDouble.h"
+#include "shadelab/LightingTables.h"
 
 #include <gtest/gtest.h>
 
@@ -124,8 +125,17 @@ double referenceAlbedo(int model, double n, double thetaI)
   return 2.0 * composite(ring, thetaBreaks);
 }
 
-const int kModels[] = { glsl::SL_MODEL_LAMBERT, glsl::SL_MODEL_PHONG, glsl::SL_MODEL_BLINN_PHONG,
-  glsl::SL_MODEL_LAMBERT_NORMALIZED, glsl::SL_MODEL_PHONG_NORMALIZED, glsl::SL_MODEL_BLINN_PHONG_NORMALIZED };
+/// Every row of the model table.
+std::vector<int> allModels()
+{
+  std::vector<int> models;
+  for (const LightingModelInfo& m : kLightingModels)
+  {
+    models.push_back(static_cast<int>(m.model));
+  }
+  return models;
+}
+const std::vector<int> kModels = allModels();
 } // namespace
 
 TEST(AlbedoAccuracy, ClosedFormsAtEveryAngleAndNormalIncidence)

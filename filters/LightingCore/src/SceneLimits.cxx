@@ -54,6 +54,11 @@ std::string firstProblem(std::initializer_list<std::string> problems)
 /// never used for it).
 std::string lightProblem(const SceneLight& l, const std::string& path)
 {
+  const std::string typeProblem = lightTypeValueProblem(static_cast<int>(l.type));
+  if (!typeProblem.empty())
+  {
+    return path + ".type: " + typeProblem;
+  }
   const bool positional = l.type == LightType::Point || l.type == LightType::Spot;
   const bool aimed = l.type == LightType::Directional || l.type == LightType::Spot;
   const bool spot = l.type == LightType::Spot;
@@ -90,6 +95,11 @@ std::string numberProblem(double x, double lo, double hi, bool openLo, bool open
 
 std::string sceneValueProblem(const Scene& scene)
 {
+  const std::string modelProblem = modelValueProblem(static_cast<int>(scene.model));
+  if (!modelProblem.empty())
+  {
+    return "shading.model: " + modelProblem;
+  }
   for (size_t i = 0; i < scene.lights.size(); ++i)
   {
     const SceneLight& l = scene.lights[i];

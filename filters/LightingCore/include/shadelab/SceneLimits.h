@@ -42,6 +42,8 @@ std::string numberProblem(double x, double lo, double hi, bool openLo = false, b
 /// would, with the light's name if it has one
 /// ("lights[1] (\"VTK light 0\").intensity: nan is not a finite number").
 /// Light cutoffs in (0, 90] and edges in [0, cutoff], as in scene files.
+/// A model or light type that is not a row of LightingTables.h is a problem
+/// too ("shading.model: 7 is not a lighting model (one of ...)").
 std::string sceneValueProblem(const Scene& scene);
 
 } // namespace shadelab
