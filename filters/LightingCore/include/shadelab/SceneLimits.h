@@ -29,6 +29,9 @@ constexpr double kMaxColourValue = 1e6;
 constexpr double kMaxShininess = 1e5;
 /// Largest spot-light exponent.
 constexpr double kMaxSpotExponent = 1e4;
+/// Smallest and largest image width or height, in pixels.
+constexpr int kMinImageSize = 16;
+constexpr int kMaxImageSize = 8192;
 
 /// "" if @p x can be a scene value in [@p lo, @p hi] (an end excluded when
 /// its flag is set; an infinite end is open): a finite number within
