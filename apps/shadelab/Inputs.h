@@ -22,7 +22,7 @@ namespace app
 {
 class CommandLine;
 
-/// "OBJ, PLY, STL, VTP, VTK or OFF".
+/// The mesh formats loadMesh() reads, as one phrase for help and messages.
 const char* meshFormatsText();
 
 /// Reads a mesh with slMeshReader. Throws JobError ("FILE: problem").

@@ -219,7 +219,7 @@ void slLightingPass::SetFrequency(int frequency)
   if (frequency != this->Frequency)
   {
     this->Frequency = frequency;
-    this->ShaderStageTime.Modified(); // the only parameter that changes shader code
+    this->ShaderStageTime.Modified(); // compiled into the shaders, as the model and the lights' types are
     this->Modified();
   }
 }
