@@ -3,8 +3,8 @@
 Arguments and messages use paths relative to the case's folder, where the
 input files are written and every out.* argument already exists with other
 content. Each case expects exactly one line on stderr."""
-from inputs import (QUAD_OBJ, TETRA_OFF, THREE_LIGHTS, glb, gltf, legacy_vtk, obj, ply_ascii, ply_binary,
-                    ply_header, png, stl_binary, vtp, vtp_appended_base64_header, vtp_compressed_header)
+from inputs import (QUAD_OBJ, TETRA_OFF, THREE_LIGHTS, glb, gltf, legacy_vtk, lighting_models, obj, ply_ascii,
+                    ply_binary, ply_header, png, stl_binary, vtp, vtp_appended_base64_header, vtp_compressed_header)
 
 
 def mesh_case(name, file_name, data, message, status=1):
@@ -245,7 +245,7 @@ CASES = [
     cli_case("missing output", ["normals", "m.off"], 'shadelab normals: missing -o/--output FILE\n'),
     cli_case("two meshes", ["normals", "m.off", "m.off", "-o", "out.vtp"], 'shadelab normals: expected one MESH argument, got 2\n'),
     cli_case("option without value", ["normals", "m.off", "-o"], 'shadelab normals: option -o needs a value (FILE)\n'),
-    cli_case("unknown model", ["light", "m.off", "--model", "toon", "-o", "out.vtp"], 'shadelab light: --model: "toon" is not a lighting model (lambert, phong, blinn-phong, lambert-normalized, phong-normalized, blinn-phong-normalized)\n'),
+    cli_case("unknown model", ["light", "m.off", "--model", "toon", "-o", "out.vtp"], 'shadelab light: --model: "toon" is not a lighting model (' + lighting_models() + ')\n'),
     cli_case("unknown frequency", ["render", "m.off", "--frequency", "sometimes", "-o", "out.png"], 'shadelab render: --frequency: "sometimes" is not one of flat, gouraud, phong\n'),
     cli_case("unknown subcommand", ["paint", "m.off"], 'shadelab: unknown subcommand "paint" (see shadelab --help)\n'),
 ]

@@ -2,7 +2,9 @@
 from which each case breaks one thing."""
 import base64
 import json
+import os
 import struct
+import subprocess
 import zlib
 
 TETRA_OFF = b"OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"
@@ -15,6 +17,13 @@ THREE_LIGHTS = json.dumps({"lights": [
     {"type": "point", "position": [0, 2, 2]},
     {"type": "ambient", "ambient": [0.2, 0.2, 0.2]},
 ]}).encode()
+
+
+def lighting_models():
+    """The lighting models as `shadelab render --help` lists them, from LightingTables.h."""
+    text = subprocess.run([os.environ["SHADELAB_EXE"], "render", "--help"], capture_output=True, text=True,
+                          timeout=120).stdout
+    return next(line for line in text.splitlines() if "--model NAME" in line).split("lighting model: ", 1)[1].strip()
 
 
 def obj(faces, extra=b""):

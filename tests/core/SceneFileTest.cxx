@@ -120,14 +120,28 @@ TEST(SceneFile, WrongTypes)
     "bad.json: imageSize[0]: expected a whole number of pixels, got a number");
 }
 
+namespace
+{
+/// "\"a\", \"b\"": the valid names as the reader lists them.
+std::string quoted(const std::vector<std::string>& names)
+{
+  std::string out;
+  for (const std::string& name : names)
+  {
+    out += (out.empty() ? "\"" : ", \"") + name + "\"";
+  }
+  return out;
+}
+} // namespace
+
 TEST(SceneFile, UnknownNames)
 {
+  ASSERT_EQ(quoted(modelNames()).rfind("\"lambert\", \"phong\", \"blinn-phong\", \"lambert-normalized\"", 0), 0u);
   EXPECT_EQ(errorFor(R"({"shading": {"model": "cook-torrance"}})"),
-    "bad.json: shading.model: \"cook-torrance\" is not one of \"lambert\", \"phong\", \"blinn-phong\", "
-    "\"lambert-normalized\", \"phong-normalized\", \"blinn-phong-normalized\"");
+    "bad.json: shading.model: \"cook-torrance\" is not one of " + quoted(modelNames()));
   EXPECT_EQ(errorFor(withLight(R"({"type": "area"})")).rfind("bad.json: lights[1].type: \"area\" is not one of", 0), 0u);
   EXPECT_EQ(errorFor(withLight(R"({"position": [0, 0, 0]})")),
-    "bad.json: lights[1]: missing key \"type\" (one of \"directional\", \"point\", \"spot\", \"ambient\")");
+    "bad.json: lights[1]: missing key \"type\" (one of " + quoted(lightTypeNames()) + ")");
 }
 
 TEST(SceneFile, OutOfRangeValues)
