@@ -3,8 +3,8 @@ from which each case breaks one thing."""
 import base64
 import json
 import os
+import re
 import struct
-import subprocess
 import zlib
 
 TETRA_OFF = b"OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"
@@ -19,11 +19,27 @@ THREE_LIGHTS = json.dumps({"lights": [
 ]}).encode()
 
 
+TABLES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "filters", "LightingCore", "include",
+                      "shadelab", "LightingTables.h")
+
+
+def table_names(macro):
+    """The scene-file names of the rows of X-macro @p macro in LightingTables.h, in row order."""
+    with open(TABLES) as f:
+        text = f.read()
+    body = text[text.index("#define " + macro + "(X)"):]
+    body = body[:body.index("\n\n")]
+    return re.findall(r'X\(\w+, \w+, "([^"]+)"', body)
+
+
 def lighting_models():
-    """The lighting models as `shadelab render --help` lists them, from LightingTables.h."""
-    text = subprocess.run([os.environ["SHADELAB_EXE"], "render", "--help"], capture_output=True, text=True,
-                          timeout=120).stdout
-    return next(line for line in text.splitlines() if "--model NAME" in line).split("lighting model: ", 1)[1].strip()
+    """The lighting models as messages list them: "lambert, phong, ..."."""
+    return ", ".join(table_names("SHADELAB_LIGHTING_MODELS"))
+
+
+def light_types():
+    """The light types as the scene reader lists them: '"directional", "point", ...'."""
+    return ", ".join('"' + name + '"' for name in table_names("SHADELAB_LIGHT_TYPES"))
 
 
 def obj(faces, extra=b""):
