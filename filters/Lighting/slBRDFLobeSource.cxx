@@ -1,8 +1,7 @@
 #include "slBRDFLobeSource.h"
 
 #include "slLobeGeometry.h"
-
-#include "shadelab/Scene.h"
+#include "slModelCheck.h"
 
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
@@ -64,13 +63,7 @@ int slBRDFLobeSource::RequestData(vtkInformation*, vtkInformationVector**, vtkIn
 
 void slBRDFLobeSource::SetModel(int model)
 {
-  const std::string problem = shadelab::modelValueProblem(model);
-  if (!problem.empty())
-  {
-    vtkErrorMacro("SetModel: " << problem);
-    return;
-  }
-  if (model != this->Model)
+  if (slCheckModel(this, model) && model != this->Model)
   {
     this->Model = model;
     this->Modified();

@@ -5,6 +5,7 @@
 #include "slFloat3View.h"
 #include "slGlobalBounds.h"
 #include "slLightingSetup.h"
+#include "slModelCheck.h"
 #include "shadelab/LightingGLSL.h"
 #include "shadelab/DefaultScene.h"
 #include "shadelab/Scene.h"
@@ -212,13 +213,7 @@ bool slLitFilter::PrepareLighting(
 
 void slLitFilter::SetModel(int model)
 {
-  const std::string problem = model == -1 ? std::string() : shadelab::modelValueProblem(model);
-  if (!problem.empty())
-  {
-    vtkErrorMacro("SetModel: " << problem << ", or -1 for the scene's own");
-    return;
-  }
-  if (model != this->Model)
+  if (slCheckModel(this, model, true) && model != this->Model)
   {
     this->Model = model;
     this->Modified();

@@ -1,6 +1,7 @@
 #include "slLightingPass.h"
 
 #include "slLightingPassShaders.h"
+#include "slModelCheck.h"
 #include "slScene.h"
 
 #include "shadelab/LightingGLSL.h"
@@ -188,13 +189,7 @@ slScene* slLightingPass::GetScene()
 
 void slLightingPass::SetModel(int model)
 {
-  const std::string problem = shadelab::modelValueProblem(model);
-  if (!problem.empty())
-  {
-    vtkErrorMacro("SetModel: " << problem);
-    return;
-  }
-  if (model != this->Model)
+  if (slCheckModel(this, model) && model != this->Model)
   {
     this->Model = model;
     this->ShaderStageTime.Modified(); // compiled into the shaders: model tests fold away

@@ -125,16 +125,6 @@ double referenceAlbedo(int model, double n, double thetaI)
   return 2.0 * composite(ring, thetaBreaks);
 }
 
-/// Every row of the model table.
-std::vector<int> allModels()
-{
-  std::vector<int> models;
-  for (const LightingModelInfo& m : kLightingModels)
-  {
-    models.push_back(static_cast<int>(m.model));
-  }
-  return models;
-}
 const std::vector<int> kModels = allModels();
 } // namespace
 

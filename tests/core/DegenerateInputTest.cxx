@@ -42,16 +42,6 @@ void expectFinite(const glsl::slTerms& t, const std::string& what)
   }
 }
 
-/// Every row of the model table.
-std::vector<int> allModels()
-{
-  std::vector<int> models;
-  for (const LightingModelInfo& m : kLightingModels)
-  {
-    models.push_back(static_cast<int>(m.model));
-  }
-  return models;
-}
 const std::vector<int> kAllModels = allModels();
 } // namespace
 

@@ -50,26 +50,32 @@ TEST(LightingTables, NormalizedColumnIsTheGLSLTest)
   EXPECT_FALSE(glsl::slIsNormalizedModel(-1));
 }
 
+namespace
+{
+/// Each row's name is its enum value's name, parses back to it, and its
+/// value is no problem; the name list has one entry per row.
+template <typename Row, size_t N, typename Enum>
+void expectNamesAreTheRows(const Row (&rows)[N], Enum Row::*value, const std::vector<std::string>& names,
+  const char* (*nameOf)(Enum), bool (*parse)(const std::string&, Enum&), std::string (*problem)(int))
+{
+  ASSERT_EQ(names.size(), N);
+  for (const Row& row : rows)
+  {
+    EXPECT_STREQ(nameOf(row.*value), row.name);
+    Enum parsed{};
+    ASSERT_TRUE(parse(row.name, parsed)) << row.name;
+    EXPECT_EQ(parsed, row.*value);
+    EXPECT_EQ(problem(static_cast<int>(row.*value)), "");
+  }
+}
+} // namespace
+
 TEST(LightingTables, NamesComeFromTheRows)
 {
-  ASSERT_EQ(modelNames().size(), static_cast<size_t>(kLightingModelCount));
-  for (const LightingModelInfo& m : kLightingModels)
-  {
-    EXPECT_STREQ(modelName(m.model), m.name);
-    ShadingModel parsed{};
-    ASSERT_TRUE(parseModelName(m.name, parsed)) << m.name;
-    EXPECT_EQ(parsed, m.model);
-    EXPECT_EQ(modelValueProblem(static_cast<int>(m.model)), "");
-  }
-  ASSERT_EQ(lightTypeNames().size(), static_cast<size_t>(kLightTypeCount));
-  for (const LightTypeInfo& t : kLightTypes)
-  {
-    EXPECT_STREQ(lightTypeName(t.type), t.name);
-    LightType parsed{};
-    ASSERT_TRUE(parseLightTypeName(t.name, parsed)) << t.name;
-    EXPECT_EQ(parsed, t.type);
-    EXPECT_EQ(lightTypeValueProblem(static_cast<int>(t.type)), "");
-  }
+  expectNamesAreTheRows(
+    kLightingModels, &LightingModelInfo::model, modelNames(), &modelName, &parseModelName, &modelValueProblem);
+  expectNamesAreTheRows(
+    kLightTypes, &LightTypeInfo::type, lightTypeNames(), &lightTypeName, &parseLightTypeName, &lightTypeValueProblem);
 }
 
 TEST(LightingTables, ValuesOutsideTheTablesAreNamedAsSuch)
