@@ -29,13 +29,13 @@ std::vector<Cone> conesAt(const ReferenceSetup& s, const glm::vec3& P)
   }
   for (const glsl::slLight& light : s.lights)
   {
-    if (light.type == glsl::SL_LIGHT_AMBIENT)
+    if (!lightHasDirection(light.type))
     {
       continue;
     }
     const glm::vec3 axis = glsl::slDirectionToLight(light, P);
     float sinAlpha = std::sin(s.directionalAngularRadius);
-    if (light.type != glsl::SL_LIGHT_DIRECTIONAL)
+    if (lightTakes(static_cast<LightType>(light.type), kLightPosition))
     {
       const float d = glm::length(light.position - P);
       if (!(d > s.lightRadius))

@@ -193,6 +193,13 @@ constexpr bool lightTakes(LightType type, LightParameterBit bit)
   return (lightTypeInfo(type).parameters & bit) != 0;
 }
 
+/// Whether a light of SL_LIGHT_* type @p type arrives from a direction (it
+/// has diffuse and specular colours), rather than lighting k_a only.
+constexpr bool lightHasDirection(int type)
+{
+  return lightTakes(static_cast<LightType>(type), kLightDiffuse);
+}
+
 } // namespace shadelab
 
 #endif
