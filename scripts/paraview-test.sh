@@ -5,9 +5,10 @@
 # with python3-vtk9, which the main build needs (docs/paraview.md). CI runs
 # it in a clean Debian 12 root (scripts/paraview-ci.sh).
 #
-#   bash scripts/paraview-test.sh
+#   bash scripts/paraview-test.sh [--build-only]
 set -euo pipefail
 cd "$(dirname "$0")/.."
+build_only=${1:-}
 
 packages=(
   paraview paraview-dev python3-paraview  # ParaView 5.11 with its own VTK 9.2
@@ -23,4 +24,6 @@ bash scripts/install-deps.sh --only "${packages[@]}"
 
 cmake -S plugins/ParaView -B build-pv -DCMAKE_BUILD_TYPE=Release -DSHADELAB_WERROR=ON --log-level=WARNING
 cmake --build build-pv -j2
-bash tests/paraview/run-tests.sh build-pv
+if [ "$build_only" != --build-only ]; then
+  bash tests/paraview/run-tests.sh build-pv
+fi

@@ -23,6 +23,9 @@ struct Command
   int (*run)(const std::vector<std::string>& args);
 };
 
+/// Prints "shadelab COMMAND: MESSAGE" on stderr: every problem, one line.
+void reportProblem(const std::string& command, const std::string& message);
+
 /// Every registered subcommand, in the order `shadelab --help` lists them.
 const std::vector<Command>& commands();
 

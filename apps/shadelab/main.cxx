@@ -22,6 +22,11 @@ std::vector<Command>& registry()
 }
 } // namespace
 
+void reportProblem(const std::string& command, const std::string& message)
+{
+  std::cerr << "shadelab " << command << ": " << message << "\n";
+}
+
 CommandRegistration::CommandRegistration(const Command& command)
 {
   std::vector<Command>& table = registry();
@@ -43,7 +48,7 @@ void printUsage(std::ostream& out)
 {
   out << "usage: shadelab <subcommand> [options]   (shadelab <subcommand> --help for details)\n\n"
          "ShadeLab: local lighting (Lambert, Phong, Blinn-Phong) for VTK meshes.\n"
-         "Any subcommand also takes --verbose: show VTK's own warnings and errors.\n\nsubcommands:\n";
+         "Any subcommand also takes --verbose: show VTK's and the image libraries' own warnings and errors.\n\nsubcommands:\n";
   for (const auto& command : shadelab::app::commands())
   {
     std::string name = command.name;
@@ -88,12 +93,12 @@ int main(int argc, char** argv)
       }
       catch (const shadelab::app::UsageError& e)
       {
-        std::cerr << "shadelab " << name << ": " << e.what() << "\n";
+        shadelab::app::reportProblem(name, e.what());
         return 2;
       }
       catch (const std::exception& e)
       {
-        std::cerr << "shadelab " << name << ": " << e.what() << "\n";
+        shadelab::app::reportProblem(name, e.what());
         return 1;
       }
     }

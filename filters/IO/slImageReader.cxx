@@ -1,5 +1,6 @@
 #include "slImageReader.h"
 
+#include "slImageFileCheck.h"
 #include "slStderrCapture.h"
 
 #include "shadelab/PrintableText.h"
@@ -52,7 +53,9 @@ int slImageReader::RequestInformation(vtkInformation*, vtkInformationVector**, v
   // The extent is only known after reading; report it here from the header.
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   int extent[6] = { 0, -1, 0, -1, 0, 0 };
-  if (this->FileName)
+  // A file whose length fields reach past its end is reported by RequestData;
+  // its header is not read here, as its library would allocate what they claim.
+  if (this->FileName && slImageFileProblem(this->FileName).empty())
   {
     const slStderrCapture quiet;
     forgetCached(this->FileName);
@@ -84,6 +87,13 @@ int slImageReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInfor
   if (std::filesystem::is_directory(name, ignored))
   {
     this->ErrorMessage = name + ": cannot read image: it is a directory";
+    vtkErrorMacro(<< this->ErrorMessage);
+    return 0;
+  }
+  const std::string fileProblem = slImageFileProblem(name);
+  if (!fileProblem.empty())
+  {
+    this->ErrorMessage = name + ": cannot read image: " + fileProblem;
     vtkErrorMacro(<< this->ErrorMessage);
     return 0;
   }

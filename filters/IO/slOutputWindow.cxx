@@ -1,6 +1,7 @@
 #include "slOutputWindow.h"
 
 #include "slErrorCapture.h"
+#include "slStderrCapture.h"
 
 #include <vtkLogger.h>
 #include <vtkNew.h>
@@ -14,6 +15,7 @@ void slOutputWindow::Install(bool echo)
   window->SetEcho(echo);
   vtkOutputWindow::SetInstance(window);
   vtkObject::GlobalWarningDisplayOn();
+  slStderrCapture::SetEnabled(!echo);
   if (!echo)
   {
     vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);

@@ -7,8 +7,10 @@
  * Every error and warning VTK formats goes to the newest live slErrorCapture,
  * so the operation that failed can say why in its own one-line message.
  * With Echo off nothing is printed, and VTK's logger (which would print its
- * own copy of every message on stderr) is silenced; with Echo on, messages
- * are also shown as VTK normally shows them.
+ * own copy of every message on stderr) is silenced, and so are the image
+ * libraries' own lines (slStderrCapture); with Echo on, messages are also
+ * shown as VTK normally shows them, and the libraries' lines as they print
+ * them.
  *
  * Install() makes an slOutputWindow the output window of the process and
  * turns vtkObject::GlobalWarningDisplay on: VTK formats no message at all

@@ -1,5 +1,6 @@
 #include "slStderrCapture.h"
 
+#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <unistd.h>
@@ -11,11 +12,27 @@ std::mutex& captureMutex()
   static std::mutex m;
   return m;
 }
+
+std::atomic<bool> captureEnabled{ true };
 } // namespace
+
+void slStderrCapture::SetEnabled(bool enabled)
+{
+  captureEnabled = enabled;
+}
+
+bool slStderrCapture::GetEnabled()
+{
+  return captureEnabled;
+}
 
 slStderrCapture::slStderrCapture()
   : Lock(captureMutex())
 {
+  if (!captureEnabled)
+  {
+    return;
+  }
   std::fflush(stderr);
   char name[] = "/tmp/shadelab-stderr-XXXXXX";
   this->File = mkstemp(name);

@@ -11,6 +11,11 @@
  * file; the destructor restores it, and Text() gives what was written, for
  * use as the reason when the library gives none. Captures are serialised
  * (the descriptor is process-wide). Internal to ShadeLab::IO.
+ *
+ * Caveats: whatever the process prints while a capture lives goes to the
+ * temporary file, a crash report too. SetEnabled(false) leaves stderr alone:
+ * `shadelab --verbose` shows the libraries' own lines that way, and the fuzz
+ * targets keep the sanitizers' reports.
  */
 
 #include <mutex>
@@ -26,6 +31,12 @@ public:
 
   /// What was written to stderr so far, on one line (newlines as "; ").
   std::string Text() const;
+
+  ///@{
+  /// Whether captures made from now on redirect stderr (default true).
+  static void SetEnabled(bool enabled);
+  static bool GetEnabled();
+  ///@}
 
 private:
   std::unique_lock<std::mutex> Lock;

@@ -3,8 +3,8 @@
 Arguments and messages use paths relative to the case's folder, where the
 input files are written and every out.* argument already exists with other
 content. Each case expects exactly one line on stderr."""
-from inputs import (QUAD_OBJ, TETRA_OFF, THREE_LIGHTS, glb, gltf, legacy_vtk, light_types, lighting_models, obj,
-                    ply_ascii, ply_binary, ply_header, png, stl_binary, vtp, vtp_appended_base64_header,
+from inputs import (QUAD_OBJ, TETRA_OFF, THREE_LIGHTS, exr, glb, gltf, legacy_vtk, light_types, lighting_models,
+                    obj, ply_ascii, ply_binary, ply_header, png, stl_binary, vtp, vtp_appended_base64_header,
                     vtp_compressed_header)
 
 
@@ -217,10 +217,15 @@ CASES = [
      "s.json": None}, 1, 'shadelab cosine: s.json: is a directory, not a scene file\n'),
     ("scene missing", ["cosine", "m.off", "--scene", "nothere.json", "-o", "out.vtp"], {"m.off": TETRA_OFF}, 1, 'shadelab cosine: nothere.json: cannot open scene file\n'),
     # images
-    image_case("png truncated", "t.png", png(cut=20), 'shadelab light: t.png: cannot read image: Read error: hit end of file PNG read error: IDAT: Read error: hit end of file PNG library error\n'),
+    image_case("png truncated", "t.png", png(cut=20), 'shadelab light: t.png: cannot read image: PNG chunk \'IDAT\' at byte 33 declares 16 bytes of data; 8 bytes remain in the file\n'),
     image_case("png bad crc", "t.png", png(crc_ok=False), 'shadelab light: t.png: cannot read image: PNG read error: IDAT: CRC error PNG library error\n'),
     image_case("png huge header", "t.png", png(width=100000, height=100000), 'shadelab light: t.png: cannot read image: its header declares 100000x100000 pixels of 3 channels, more than ShadeLab reads (2^28 values)\n'),
-    image_case("png garbage", "t.png", b"\x89PNG\r\n\x1a\n\x1b[31m garbage", 'shadelab light: t.png: cannot read image: Invalid image file "t.png": PNG read error: m[20]ga: invalid chunk type\n'),
+    # 8 + 25 bytes of signature and IHDR; the tEXt chunk's 9 bytes of data are 4 short of a CRC.
+    image_case("png chunk longer than the file", "t.png", png(text_claim=1953300627), 'shadelab light: t.png: cannot read image: PNG chunk \'tEXt\' at byte 33 declares 1953300627 bytes of data; 5 bytes remain in the file\n'),
+    image_case("exr attribute longer than the file", "t.exr", exr(1979711507), 'shadelab light: t.exr: cannot read image: EXR attribute \'comments\' (string) at byte 8 declares 1979711507 bytes; 3 bytes remain in the file\n'),
+    image_case("exr attribute of negative size", "t.exr", exr(-5), 'shadelab light: t.exr: cannot read image: EXR attribute \'comments\' (string) at byte 8 declares -5 bytes; 3 bytes remain in the file\n'),
+    image_case("exr name without its end", "t.exr", exr(), 'shadelab light: t.exr: cannot read image: EXR header at byte 8: an attribute name that does not end within 255 bytes or before the end of the file\n'),
+    image_case("png garbage", "t.png", b"\x89PNG\r\n\x1a\n\x1b[31m garbage", 'shadelab light: t.png: cannot read image: PNG chunk \'m ga\' at byte 8 declares 458961713 bytes of data; 1 byte remains in the file\n'),
     image_case("png empty", "t.png", b"", 'shadelab light: t.png: cannot read image: Invalid image file "t.png": Not a PNG file\n'),
     image_case("jpg truncated", "t.jpg", "seed:fuzz_image_jpg/gradient.jpg:300", 'shadelab light: t.jpg: cannot read image: Invalid image file "t.jpg": JPEG error: Premature end of JPEG file ("t.jpg") Bad JPEG header for "t.jpg"\n'),
     image_case("jpg garbage", "t.jpg", b"\xff\xd8\xff\xe0 not really", 'shadelab light: t.jpg: cannot read image: Invalid image file "t.jpg": JPEG error: Premature end of JPEG file ("t.jpg") Bad JPEG header for "t.jpg"\n'),
@@ -244,8 +249,9 @@ CASES = [
     cli_case("render unknown component", ["render", "m.off", "--component", "glow", "-o", "out.png"], 'shadelab render: --component: "glow" is not one of total, ambient, diffuse, specular, emission, cos\n'),
     cli_case("unknown option", ["normals", "m.off", "--shiny", "-o", "out.vtp"], 'shadelab normals: unknown option --shiny (see --help)\n'),
     cli_case("missing output", ["normals", "m.off"], 'shadelab normals: missing -o/--output FILE\n'),
-    cli_case("two meshes", ["normals", "m.off", "m.off", "-o", "out.vtp"], 'shadelab normals: expected one MESH argument, got 2\n'),
-    cli_case("option without value", ["normals", "m.off", "-o"], 'shadelab normals: option -o needs a value (FILE)\n'),
+    cli_case("two meshes", ["light", "m.off", "m.off", "-o", "out.vtp"], 'shadelab light: expected one MESH argument, got 2\n'),
+    cli_case("two meshes to one file", ["normals", "m.off", "m.off", "-o", "out.vtp"], 'shadelab normals: -o/--output: with 2 MESH arguments, "out.vtp" must be an existing folder\n'),
+    cli_case("option without value", ["normals", "m.off", "-o"], 'shadelab normals: option -o needs a value (OUT)\n'),
     cli_case("unknown model", ["light", "m.off", "--model", "toon", "-o", "out.vtp"], 'shadelab light: --model: "toon" is not a lighting model (' + lighting_models() + ')\n'),
     cli_case("unknown frequency", ["render", "m.off", "--frequency", "sometimes", "-o", "out.png"], 'shadelab render: --frequency: "sometimes" is not one of flat, gouraud, phong\n'),
     cli_case("unknown subcommand", ["paint", "m.off"], 'shadelab: unknown subcommand "paint" (see shadelab --help)\n'),

@@ -125,14 +125,28 @@ def glb(edit=None, cut=0, **parts):
     return out[:len(out) - cut]
 
 
-def png(width=4, height=4, crc_ok=True, cut=0):
+def png(width=4, height=4, crc_ok=True, cut=0, text_claim=None):
+    """A 4-row RGB PNG; with @text_claim, the IHDR is followed by a tEXt chunk
+    whose length field claims @text_claim bytes and the file ends 9 bytes later."""
     def chunk(kind, payload, good=True):
         crc = zlib.crc32(kind + payload) ^ (0 if good else 1)
         return struct.pack(">I", len(payload)) + kind + payload + struct.pack(">I", crc)
     rows = b"".join(b"\0" + b"\x80\x40\x20" * width for _ in range(min(height, 4)))
-    data = (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)) +
-            chunk(b"IDAT", zlib.compress(rows), crc_ok) + chunk(b"IEND", b""))
+    data = b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0))
+    if text_claim is not None:
+        return data + struct.pack(">I", text_claim) + b"tEXtComment\0x"
+    data += chunk(b"IDAT", zlib.compress(rows), crc_ok) + chunk(b"IEND", b"")
     return data[:len(data) - cut]
+
+
+def exr(attribute_size=None, name=b"comments"):
+    """The start of an OpenEXR header: one string attribute @name whose size
+    field says @attribute_size, followed by 3 bytes; or, with @attribute_size
+    None, a 300-byte name with no NUL after it."""
+    head = b"\x76\x2f\x31\x01\x02\x00\x00\x00"
+    if attribute_size is None:
+        return head + b"n" * 300
+    return head + name + b"\0string\0" + struct.pack("<i", attribute_size) + b"abc"
 
 
 def vtp_compressed_header(blocks):

@@ -12,8 +12,11 @@
 
 #include <gtest/gtest.h>
 
+#include <OpenImageIO/imageio.h>
+
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 namespace
 {
@@ -91,6 +94,36 @@ TEST(ImageIO, EXRKeepsFloats)
   vtkDataArray* scalars = reader->GetOutput()->GetPointData()->GetScalars();
   ASSERT_EQ(scalars->GetDataType(), VTK_FLOAT);
   EXPECT_FLOAT_EQ(static_cast<float>(scalars->GetComponent(1 * 5 + 3, 0)), 40 * 3 + 7 + 0.25f);
+}
+
+TEST(ImageIO, ReadsAMultiPartEXR)
+{
+  // Two parts, so two headers that the reader's header check must walk; the
+  // first part is what is read.
+  const TestFolder folder;
+  const std::string path = folder.path("two.exr");
+  OIIO::ImageSpec specs[2] = { OIIO::ImageSpec(4, 2, 3, OIIO::TypeDesc::FLOAT),
+    OIIO::ImageSpec(4, 2, 1, OIIO::TypeDesc::FLOAT) }; // one display window for all parts
+  specs[0].attribute("oiio:subimagename", "first"); // OpenEXR's parts need names
+  specs[1].attribute("oiio:subimagename", "second");
+  auto out = OIIO::ImageOutput::create(path);
+  ASSERT_TRUE(out && out->supports("multiimage"));
+  ASSERT_TRUE(out->open(path, 2, specs)) << out->geterror();
+  const std::vector<float> first(4 * 2 * 3, 0.75f), second(4 * 2, 0.5f);
+  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, first.data()));
+  ASSERT_TRUE(out->open(path, specs[1], OIIO::ImageOutput::AppendSubimage));
+  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, second.data()));
+  ASSERT_TRUE(out->close());
+
+  vtkNew<slImageReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  ASSERT_STREQ(reader->GetErrorMessage(), "");
+  int dims[3];
+  reader->GetOutput()->GetDimensions(dims);
+  EXPECT_EQ(dims[0], 4);
+  EXPECT_EQ(dims[1], 2);
+  EXPECT_FLOAT_EQ(static_cast<float>(reader->GetOutput()->GetPointData()->GetScalars()->GetComponent(5, 2)), 0.75f);
 }
 
 TEST(ImageIO, ReadsTheSharedHDREnvironmentMap)

@@ -1,16 +1,15 @@
 // slImageReader on any bytes as a file of one extension (SL_FUZZ_EXTENSION):
 // an image or an error message, never a crash.
 #include "FuzzInputFile.h"
+#include "FuzzToolOutput.h"
 
 #include "slImageReader.h"
 
 #include <vtkImageData.h>
 #include <vtkNew.h>
-#include <vtkObject.h>
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
-  vtkObject::GlobalWarningDisplayOff();
   const std::string path = fuzzInputFile(data, size, SL_FUZZ_EXTENSION);
   vtkNew<slImageReader> reader;
   reader->SetFileName(path.c_str());

@@ -2,12 +2,12 @@
 // either an error message and an empty output, or a mesh that every
 // ShadeLab filter may follow (finite points, cells naming existing points).
 #include "FuzzInputFile.h"
+#include "FuzzToolOutput.h"
 
 #include "slConnectivityCheck.h"
 #include "slMeshReader.h"
 
 #include <vtkNew.h>
-#include <vtkObject.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 
@@ -16,7 +16,6 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
-  vtkObject::GlobalWarningDisplayOff();
   const std::string path = fuzzInputFile(data, size, SL_FUZZ_EXTENSION);
   vtkNew<slMeshReader> reader;
   reader->SetFileName(path.c_str());

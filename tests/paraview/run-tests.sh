@@ -5,8 +5,8 @@
 #   2. pvbatch on 1, 2 and 3 MPI ranks (oversubscribed as needed), ParaView's
 #      default ghost request off: normals, tangents and radiance agree with
 #      the serial run at every point, and no ghost cells are left;
-#   3. the ShadeLab Render View on 1 and 2 ranks (under Xvfb): lit by the
-#      lighting pass;
+#   3. the ShadeLab Render View on 1 and 2 ranks and in ParaView's GUI
+#      (under Xvfb): lit by the lighting pass;
 #   4. the libexpat bug: expected to fail until Debian fixes it.
 #
 #   bash tests/paraview/run-tests.sh BUILD_DIR
@@ -32,6 +32,7 @@ pvpython "$here/compare_pieces.py" "$work/ranks1.pvtp" "$work/ranks2.pvtp" "$wor
 bash scripts/with-display.sh pvpython "$here/test_view.py" "$plugin" "$work/spot.vtp" "$work"
 bash scripts/with-display.sh "${mpi[@]}" -n 2 pvbatch --symmetric "$here/test_view.py" "$plugin" \
   "$work/spot.vtp" "$work"
+bash "$here/test_gui_view.sh" "$plugin" "$work/spot.vtp" "$work"
 
 if pvpython "$here/test_libexpat.py" "$work/spot.vtp" "$work"; then
   echo "test_libexpat.py passed: Debian's ParaView now reads appended XML; the expected failure can go" >&2

@@ -24,6 +24,7 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -73,6 +74,12 @@ struct Case
   std::string file;
   int width, height;
 };
+
+/// How a case reads in test listings: the scene file and the image size.
+void PrintTo(const Case& c, std::ostream* os)
+{
+  *os << std::filesystem::path(c.file).filename().string() << " at " << c.width << "x" << c.height;
+}
 
 std::vector<Case> cases()
 {

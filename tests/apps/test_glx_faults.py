@@ -1,0 +1,55 @@
+"""GLX context creation that fails, as it does for a moment when many
+processes start rendering on one X server. A shim preloaded into
+`shadelab render` (glx_fault_shim.c) makes chosen creation attempts fail:
+a passing failure is retried and the render succeeds; a lasting one, before
+VTK tries or when VTK tries, is one line and exit status 1, never abort()
+(VTK 9.1's reaction), and the existing output stays as it was."""
+import os
+import subprocess
+import tempfile
+import unittest
+
+SHADELAB = os.environ["SHADELAB_EXE"]
+SHIM = os.environ["SHADELAB_GLX_FAULT_SHIM"]
+SPOT = os.path.join(os.environ["SHADELAB_DATA_DIR"], "meshes", "spot.obj")
+OLD = b"old image, must survive\n"
+
+
+class GLXFaultTest(unittest.TestCase):
+    def render(self, failing):
+        """shadelab render with creation attempts FIRST .. FIRST+COUNT-1 failing
+        (@failing = "FIRST COUNT"; COUNT -1: all from FIRST on), over an existing output."""
+        self.work = tempfile.TemporaryDirectory(prefix="shadelab-glx-")
+        self.addCleanup(self.work.cleanup)
+        self.out = os.path.join(self.work.name, "out.png")
+        with open(self.out, "wb") as f:
+            f.write(OLD)
+        env = dict(os.environ, LD_PRELOAD=SHIM, SHADELAB_GLX_FAIL=failing)
+        return subprocess.run([SHADELAB, "render", SPOT, "--size", "64x64", "-o", self.out], env=env,
+                              capture_output=True, text=True, timeout=120)
+
+    def assertFailedInOneLine(self, r, message):
+        self.assertEqual(r.returncode, 1, r.stderr)  # abort() would be -6
+        self.assertEqual(r.stderr, "shadelab render: " + message + "\n")
+        with open(self.out, "rb") as f:
+            self.assertEqual(f.read(), OLD)
+        self.assertEqual(os.listdir(self.work.name), ["out.png"])
+
+    def test_passing_failures_are_retried(self):
+        r = self.render("0 3")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(self.out, "rb") as f:
+            self.assertEqual(f.read(8), b"\x89PNG\r\n\x1a\n")
+
+    def test_lasting_failure_is_one_line(self):
+        display = os.environ.get("DISPLAY", "")
+        self.assertFailedInOneLine(self.render("0 -1"), "cannot create an OpenGL context on X display " + display +
+                                   " (6 attempts): GLX context creation failed")
+
+    def test_failure_when_vtk_tries_is_one_line(self):
+        # The check before VTK succeeds (attempt 0); every attempt of VTK's fails.
+        self.assertFailedInOneLine(self.render("1 -1"), "VTK cannot create an OpenGL context on the X display")
+
+
+if __name__ == "__main__":
+    unittest.main()
