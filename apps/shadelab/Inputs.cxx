@@ -53,17 +53,30 @@ vtkSmartPointer<slScene> loadScene(const std::string& path)
   return scene;
 }
 
+namespace
+{
+std::string commaSeparated(const std::vector<std::string>& names)
+{
+  std::string out;
+  for (const std::string& name : names)
+  {
+    out += (out.empty() ? "" : ", ") + name;
+  }
+  return out;
+}
+} // namespace
+
+std::string modelOptionHelp()
+{
+  return "override the scene's lighting model: " + commaSeparated(modelNames());
+}
+
 ShadingModel parseModelOption(const std::string& option, const std::string& value)
 {
   ShadingModel model;
   if (!parseModelName(value, model))
   {
-    std::string names;
-    for (const std::string& name : modelNames())
-    {
-      names += (names.empty() ? "" : ", ") + name;
-    }
-    throw UsageError("--" + option + ": \"" + value + "\" is not a lighting model (" + names + ")");
+    throw UsageError("--" + option + ": \"" + value + "\" is not a lighting model (" + commaSeparated(modelNames()) + ")");
   }
   return model;
 }

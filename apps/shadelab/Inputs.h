@@ -23,7 +23,7 @@ namespace app
 class CommandLine;
 struct OptionSpec;
 
-/// "OBJ, PLY, STL, VTP, VTK or OFF".
+/// The mesh formats loadMesh() reads, as one phrase for help and messages.
 const char* meshFormatsText();
 
 /// Reads a mesh with slMeshReader. Throws JobError ("FILE: problem").
@@ -32,6 +32,9 @@ vtkSmartPointer<vtkPolyData> loadMesh(const std::string& path);
 /// Reads a scene file, or returns the built-in default scene for "".
 /// Throws JobError ("FILE: KEY.PATH: problem").
 vtkSmartPointer<slScene> loadScene(const std::string& path);
+
+/// The help of --model: what it does and every model's name (LightingTables.h).
+std::string modelOptionHelp();
 
 /// The lighting model named by option --@p option; UsageError listing the
 /// valid names otherwise.

@@ -23,7 +23,7 @@ std::vector<OptionSpec> litOptions()
 {
   return {
     { "scene", "s", "FILE", "JSON scene (default: ShadeLab's built-in two-light scene)" },
-    { "model", "", "NAME", "override the scene's lighting model" },
+    { "model", "", "NAME", modelOptionHelp() },
     { "output", "o", "FILE", outputHelp("mesh to write; .vtp and .vtk keep the arrays", OutputKind::Mesh) },
     meshCompressionOption(),
     { "allow-zero-normals", "", "", "light zero-length normals as 'no direction' instead of failing" },

@@ -52,7 +52,7 @@ int runRender(const std::vector<std::string>& args)
     { "scene", "s", "FILE", "JSON scene (default: ShadeLab's built-in two-light scene)" },
     { "output", "o", "FILE", outputHelp("image to write", OutputKind::Image) },
     { "size", "", "WxH", "image size in pixels (default: the scene's imageSize)" },
-    { "model", "", "NAME", "override the scene's lighting model" },
+    { "model", "", "NAME", modelOptionHelp() },
     { "frequency", "", "NAME", "override the scene's shading frequency: flat, gouraud, phong" },
     { "component", "", "NAME", "show only: ambient, diffuse, specular, emission or cos (N.L)" },
     { "light", "", "K", "with --component: only light K (0-based; cos uses light 0 by default)" },

@@ -119,7 +119,7 @@ void BrdfPanel::update()
     return;
   }
   const int light = this->Light->value();
-  if (light >= static_cast<int>(scene.lights.size()) || scene.lights[light].type == LightType::Ambient)
+  if (light >= static_cast<int>(scene.lights.size()) || !lightHasDirection(static_cast<int>(scene.lights[light].type)))
   {
     this->Info->setText(tr("Light %1 has no direction: choose a directional, point or spot light.").arg(light));
     this->View->setLobe(nullptr);

@@ -133,8 +133,9 @@ void LightPanel::addLight(const QString& typeName)
   SceneLight light;
   parseLightTypeName(typeName.toStdString(), light.type);
   light.name = typeName.toStdString() + " " + std::to_string(scene.lights.size());
-  if (light.type == LightType::Ambient)
+  if (!lightTakes(light.type, kLightDiffuse))
   {
+    // It lights k_a only.
     light.ambient = glm::vec3(0.1f);
     light.diffuse = light.specular = glm::vec3(0.0f);
   }
@@ -203,10 +204,10 @@ void LightPanel::showLight(int index)
   this->Cutoff->setValue(l.cutoffDegrees);
   this->Exponent->setValue(l.exponent);
   this->Edge->setValue(l.edgeDegrees);
-  const bool spot = l.type == LightType::Spot;
-  this->Cutoff->setEnabled(spot);
-  this->Exponent->setEnabled(spot);
-  this->Edge->setEnabled(spot);
+  // Each control is live for the light types that take its value (LightingTables.h).
+  this->Cutoff->setEnabled(lightTakes(l.type, kLightCutoff));
+  this->Exponent->setEnabled(lightTakes(l.type, kLightExponent));
+  this->Edge->setEnabled(lightTakes(l.type, kLightEdge));
   this->Showing = false;
 }
 

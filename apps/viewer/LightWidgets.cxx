@@ -114,7 +114,7 @@ void LightWidgets::build()
   const Scene& scene = this->Document->scene();
   for (size_t i = 0; i < scene.lights.size(); ++i)
   {
-    if (scene.lights[i].type == LightType::Ambient)
+    if (!lightHasDirection(static_cast<int>(scene.lights[i].type)))
     {
       continue;
     }
@@ -146,13 +146,13 @@ void LightWidgets::sync()
   int shown = 0;
   for (const SceneLight& light : scene.lights)
   {
-    shown += light.type != LightType::Ambient ? 1 : 0;
+    shown += lightHasDirection(static_cast<int>(light.type)) ? 1 : 0;
   }
   bool sameLights = shown == this->count();
   for (size_t w = 0; sameLights && w < this->Widgets.size(); ++w)
   {
     const int index = this->LightOfWidget[w];
-    sameLights = index < static_cast<int>(scene.lights.size()) && scene.lights[index].type != LightType::Ambient;
+    sameLights = index < static_cast<int>(scene.lights.size()) && lightHasDirection(static_cast<int>(scene.lights[index].type));
   }
   if (!sameLights)
   {
@@ -167,11 +167,11 @@ void LightWidgets::sync()
       lightInWorldSpace(scene.lights[static_cast<size_t>(this->LightOfWidget[w])], camera.eye, camera.focal, camera.up);
     const glm::vec3 d = unit(world.direction);
     glm::vec3 position = world.position, aim = centre;
-    if (world.type == LightType::Directional)
+    if (!lightTakes(world.type, kLightPosition))
     {
       position = centre - d * static_cast<float>(0.45 * this->Size);
     }
-    else if (world.type == LightType::Spot)
+    else if (lightTakes(world.type, kLightDirection))
     {
       aim = position + d * std::max(static_cast<float>(0.25 * this->Size), glm::length(centre - position));
     }
@@ -179,7 +179,7 @@ void LightWidgets::sync()
     double p[3] = { position.x, position.y, position.z }, f[3] = { aim.x, aim.y, aim.z };
     double colour[3] = { std::min(1.0f, std::max(0.2f, world.diffuse.x)), std::min(1.0f, std::max(0.2f, world.diffuse.y)),
       std::min(1.0f, std::max(0.2f, world.diffuse.z)) };
-    rep->SetPositional(world.type == LightType::Spot);
+    rep->SetPositional(lightTakes(world.type, kLightCutoff));
     rep->SetLightPosition(p);
     rep->SetFocalPoint(f);
     rep->SetConeAngle(world.cutoffDegrees);
@@ -210,11 +210,11 @@ void LightWidgets::onInteraction(vtkObject* caller, unsigned long event, void*)
   {
     world.direction = unit(aim - position);
   }
-  if (light.type != LightType::Directional)
+  if (lightTakes(light.type, kLightPosition))
   {
     world.position = position;
   }
-  if (light.type == LightType::Spot)
+  if (lightTakes(light.type, kLightCutoff))
   {
     world.cutoffDegrees = static_cast<float>(std::min(90.0, std::max(0.5, rep->GetConeAngle())));
     world.edgeDegrees = std::min(world.edgeDegrees, world.cutoffDegrees);

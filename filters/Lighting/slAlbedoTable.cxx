@@ -41,7 +41,8 @@ int slAlbedoTable::RequestData(vtkInformation*, vtkInformationVector**, vtkInfor
       const int model = static_cast<int>(k / angles), a = static_cast<int>(k % angles);
       glsl::slMaterial m;
       m.ambient = m.emission = glm::vec3(0.0f);
-      const bool lambert = model == glsl::SL_MODEL_LAMBERT || model == glsl::SL_MODEL_LAMBERT_NORMALIZED;
+      // The diffuse albedo of a model without a specular term, else its specular one.
+      const bool lambert = (modelInfo(static_cast<ShadingModel>(model)).reads & kReadsSpecular) == 0;
       m.diffuse = glm::vec3(lambert ? 1.0f : 0.0f);
       m.specular = glm::vec3(lambert ? 0.0f : 1.0f);
       m.shininess = static_cast<float>(this->Shininess);

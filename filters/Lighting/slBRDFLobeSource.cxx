@@ -1,6 +1,7 @@
 #include "slBRDFLobeSource.h"
 
 #include "slLobeGeometry.h"
+#include "slModelCheck.h"
 
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
@@ -58,6 +59,15 @@ int slBRDFLobeSource::RequestData(vtkInformation*, vtkInformationVector**, vtkIn
     output->GetPointData()->SetScalars(values);
   }
   return 1;
+}
+
+void slBRDFLobeSource::SetModel(int model)
+{
+  if (slCheckModel(this, model) && model != this->Model)
+  {
+    this->Model = model;
+    this->Modified();
+  }
 }
 
 void slBRDFLobeSource::PrintSelf(ostream& os, vtkIndent indent)

@@ -33,9 +33,10 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /// Lighting model, an SL_MODEL_* value 0..5 (lambert, phong, blinn-phong,
-  /// lambert-normalized, phong-normalized, blinn-phong-normalized). Default: phong.
-  vtkSetClampMacro(Model, int, 0, 5);
+  /// Lighting model, an SL_MODEL_* value (a row of shadelab/LightingTables.h:
+  /// lambert, phong, blinn-phong, lambert-normalized, ...). Default: phong.
+  /// Any other value is an error (vtkErrorMacro) and leaves the model as it was.
+  void SetModel(int model);
   vtkGetMacro(Model, int);
   ///@}
 

@@ -5,6 +5,7 @@
 #include "slFloat3View.h"
 #include "slGlobalBounds.h"
 #include "slLightingSetup.h"
+#include "slModelCheck.h"
 #include "shadelab/LightingGLSL.h"
 #include "shadelab/DefaultScene.h"
 #include "shadelab/Scene.h"
@@ -208,6 +209,15 @@ bool slLitFilter::PrepareLighting(
     return false;
   }
   return true;
+}
+
+void slLitFilter::SetModel(int model)
+{
+  if (slCheckModel(this, model, true) && model != this->Model)
+  {
+    this->Model = model;
+    this->Modified();
+  }
 }
 
 void slLitFilter::PrintSelf(ostream& os, vtkIndent indent)

@@ -97,9 +97,11 @@ public:
   ///@}
 
   ///@{
-  /// The lighting model (SL_MODEL_LAMBERT = 0 ... SL_MODEL_BLINN_PHONG_NORMALIZED
-  /// = 5, as in slBRDFLobeSource), or -1 (default) for the scene's own.
-  vtkSetClampMacro(Model, int, -1, 5);
+  /// The lighting model (an SL_MODEL_* value, a row of
+  /// shadelab/LightingTables.h, as in slBRDFLobeSource), or -1 (default) for
+  /// the scene's own. Any other value is an error (vtkErrorMacro) and leaves
+  /// the model as it was.
+  void SetModel(int model);
   vtkGetMacro(Model, int);
   ///@}
 

@@ -4,6 +4,8 @@
 #include "slLightingSetup.h"
 #include "slLobeGeometry.h"
 
+#include "shadelab/LightingTables.h"
+
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
 #include <vtkIdList.h>
@@ -44,7 +46,7 @@ int slLobesOnMesh::RequestData(vtkInformation*, vtkInformationVector** inputVect
   {
     for (size_t l = 0; l < setup.lights.size() && light < 0; ++l)
     {
-      light = setup.lights[l].type == glsl::SL_LIGHT_AMBIENT ? -1 : static_cast<int>(l);
+      light = lightHasDirection(setup.lights[l].type) ? static_cast<int>(l) : -1;
     }
     if (light < 0)
     {

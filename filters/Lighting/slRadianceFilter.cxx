@@ -116,7 +116,7 @@ int slRadianceFilter::RequestData(vtkInformation*, vtkInformationVector** inputV
   in.baseColour = base.empty() ? nullptr : &base[0].x;
   in.lights = setup.lights;
   in.material = setup.material;
-  in.model = setup.model;
+  in.model = static_cast<ShadingModel>(setup.model);
   in.eye = setup.eye;
   std::atomic<vtkIdType> firstWithoutNormal(n);
   vtkSMPTools::For(0, n, 1024, [&](vtkIdType begin, vtkIdType end) {

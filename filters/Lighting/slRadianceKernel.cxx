@@ -40,17 +40,9 @@ glsl8::slLight foldLight(const glsl::slLight& light, const glsl::slMaterial& m)
 {
   const glsl::slLight l = glsl::slFoldLight(light, m);
   glsl8::slLight v;
-  v.type = l.type;
-  v.position = l.position;
-  v.direction = l.direction;
-  v.ambient = l.ambient;
-  v.diffuse = l.diffuse;
-  v.specular = l.specular;
-  v.intensity = l.intensity;
-  v.attenuation = l.attenuation;
-  v.cosCutoff = l.cosCutoff;
-  v.cosInner = l.cosInner;
-  v.exponent = l.exponent;
+#define SHADELAB_COPY(type, field, what) v.field = l.field;
+  SHADELAB_LIGHT_FIELDS(SHADELAB_COPY)
+#undef SHADELAB_COPY
   return v;
 }
 
@@ -70,17 +62,17 @@ template <int MODEL>
 __attribute__((always_inline)) inline glsl8::slLightWeights weightsOfAnyLight(const glsl8::slLight& light,
   const vec3x8& P, const vec3x8& n, const vec3x8& v, const vfloat8& shininess)
 {
-  switch (light.type)
+  // One case per row of the light-type table (sceneValueProblem() has
+  // checked every light's type).
+  switch (static_cast<LightType>(light.type))
   {
-    case glsl::SL_LIGHT_DIRECTIONAL:
-      return weightsOf<MODEL, glsl::SL_LIGHT_DIRECTIONAL>(light, P, n, v, shininess);
-    case glsl::SL_LIGHT_POINT:
-      return weightsOf<MODEL, glsl::SL_LIGHT_POINT>(light, P, n, v, shininess);
-    case glsl::SL_LIGHT_SPOT:
-      return weightsOf<MODEL, glsl::SL_LIGHT_SPOT>(light, P, n, v, shininess);
-    default:
-      return weightsOf<MODEL, glsl::SL_LIGHT_AMBIENT>(light, P, n, v, shininess);
+#define SHADELAB_CASE(Enumerator, ...)                                                                                \
+  case LightType::Enumerator:                                                                                         \
+    return weightsOf<MODEL, static_cast<int>(LightType::Enumerator)>(light, P, n, v, shininess);
+    SHADELAB_LIGHT_TYPES(SHADELAB_CASE)
+#undef SHADELAB_CASE
   }
+  return glsl8::slLightWeights{ vfloat8(0.0f), vfloat8(0.0f), vfloat8(0.0f) };
 }
 
 /// slUnitMaterial() in the batch compilation: the lights carry k_a, k_d, k_s
@@ -90,11 +82,9 @@ glsl8::slMaterial unitMaterial(const glsl::slMaterial& material)
 {
   const glsl::slMaterial u = glsl::slUnitMaterial(material);
   glsl8::slMaterial m;
-  m.ambient = u.ambient;
-  m.diffuse = u.diffuse;
-  m.specular = u.specular;
-  m.emission = u.emission;
-  m.shininess = u.shininess;
+#define SHADELAB_COPY(type, field, bit, what) m.field = u.field;
+  SHADELAB_MATERIAL_PARAMETERS(SHADELAB_COPY)
+#undef SHADELAB_COPY
   return m;
 }
 
@@ -169,21 +159,17 @@ long long shadeRange(const RadianceKernelInput& in, const RadianceKernelOutput& 
   {
     lights.push_back(foldLight(l, in.material));
   }
+  // One case per row of the model table (sceneValueProblem() has checked
+  // the model).
   switch (in.model)
   {
-    case glsl::SL_MODEL_LAMBERT:
-      return shadeModel<glsl::SL_MODEL_LAMBERT>(in, out, lights, begin, end);
-    case glsl::SL_MODEL_PHONG:
-      return shadeModel<glsl::SL_MODEL_PHONG>(in, out, lights, begin, end);
-    case glsl::SL_MODEL_BLINN_PHONG:
-      return shadeModel<glsl::SL_MODEL_BLINN_PHONG>(in, out, lights, begin, end);
-    case glsl::SL_MODEL_LAMBERT_NORMALIZED:
-      return shadeModel<glsl::SL_MODEL_LAMBERT_NORMALIZED>(in, out, lights, begin, end);
-    case glsl::SL_MODEL_PHONG_NORMALIZED:
-      return shadeModel<glsl::SL_MODEL_PHONG_NORMALIZED>(in, out, lights, begin, end);
-    default:
-      return shadeModel<glsl::SL_MODEL_BLINN_PHONG_NORMALIZED>(in, out, lights, begin, end);
+#define SHADELAB_CASE(Enumerator, ...)                                                                                \
+  case ShadingModel::Enumerator:                                                                                      \
+    return shadeModel<static_cast<int>(ShadingModel::Enumerator)>(in, out, lights, begin, end);
+    SHADELAB_LIGHTING_MODELS(SHADELAB_CASE)
+#undef SHADELAB_CASE
   }
+  return begin;
 }
 
 } // namespace shadelab

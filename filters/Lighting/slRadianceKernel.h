@@ -15,6 +15,7 @@
  */
 
 #include "shadelab/LightingGLSL.h"
+#include "shadelab/LightingTables.h"
 
 #include <vector>
 
@@ -30,7 +31,7 @@ struct RadianceKernelInput
   const float* baseColour = nullptr;
   std::vector<glsl::slLight> lights;
   glsl::slMaterial material;
-  int model = 0;
+  ShadingModel model = ShadingModel::Lambert;
   glm::vec3 eye{ 0.0f };
 };
 
@@ -45,7 +46,9 @@ struct RadianceKernelOutput
   std::vector<float*> perLight;
 };
 
-/// Shades points [begin, end). Returns the first of them whose normal has no
+/// Shades points [begin, end). The model and every light's type must be rows
+/// of LightingTables.h (sceneValueProblem() checks a scene's); points are
+/// left unwritten otherwise. Returns the first of them whose normal has no
 /// direction (zero-length or not finite: slSafeNormalize gives the zero
 /// vector, and the point gets no diffuse or specular light), or @p end.
 long long shadeRange(const RadianceKernelInput& in, const RadianceKernelOutput& out, long long begin, long long end);

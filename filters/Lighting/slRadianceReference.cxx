@@ -1,5 +1,6 @@
 #include "slRadianceReference.h"
 
+#include "shadelab/LightingTables.h"
 #include "shadelab/RadianceEstimator.h"
 #include "slEnvironmentLoader.h"
 #include "slFloat3View.h"
@@ -89,7 +90,7 @@ int slRadianceReference::RequestData(
     return this->Fail(output, problem);
   }
   const bool anyLight = std::any_of(setup.lights.begin(), setup.lights.end(),
-    [](const glsl::slLight& l) { return l.type != glsl::SL_LIGHT_AMBIENT; });
+    [](const glsl::slLight& l) { return lightHasDirection(l.type); });
   if (environment.empty() && !(this->UseSceneLights && anyLight))
   {
     return this->Fail(output, "no light for the reference: give an environment map or a scene with (non-ambient) lights");
@@ -128,7 +129,7 @@ int slRadianceReference::RequestData(
   in.normals = normals.data();
   in.lights = setup.lights;
   in.material = setup.material;
-  in.model = setup.model;
+  in.model = static_cast<ShadingModel>(setup.model);
   in.eye = setup.eye;
   RadianceKernelOutput out;
   out.ambient = ambient->GetPointer(0);

@@ -42,7 +42,7 @@ void slScene::ApplyLights(vtkRenderer* renderer)
   for (size_t i = 0; i < lights.size(); ++i)
   {
     const shadelab::SceneLight& l = lights[i];
-    if (l.type == shadelab::LightType::Ambient)
+    if (!shadelab::lightHasDirection(static_cast<int>(l.type)))
     {
       continue; // folded into the property's ambient colour, see ApplyMaterial()
     }
@@ -68,7 +68,7 @@ void slScene::ApplyLights(vtkRenderer* renderer)
       this->Note(lightPath(i) + ".ambient: VTK's shaders ignore a light's ambient colour");
     }
 
-    if (l.type == shadelab::LightType::Directional)
+    if (!shadelab::lightTakes(l.type, shadelab::kLightPosition))
     {
       // VTK: light arrives from Position toward FocalPoint.
       light->SetPositional(false);
@@ -89,7 +89,7 @@ void slScene::ApplyLights(vtkRenderer* renderer)
         this->Note(lightPath(i) +
           ".attenuation: VTK has no min(1, .) clamp, so it brightens where c1 + c2 d + c3 d^2 < 1");
       }
-      if (l.type == shadelab::LightType::Spot)
+      if (shadelab::lightTakes(l.type, shadelab::kLightCutoff))
       {
         light->SetConeAngle(l.cutoffDegrees);
         light->SetExponent(l.exponent);
@@ -116,7 +116,7 @@ void slScene::ApplyMaterial(vtkProperty* property)
   glm::vec3 ambientLight(0.0f);
   for (const shadelab::SceneLight& l : this->Data->lights)
   {
-    if (l.type == shadelab::LightType::Ambient)
+    if (!shadelab::lightHasDirection(static_cast<int>(l.type)))
     {
       ambientLight += l.intensity * l.ambient;
     }

@@ -114,13 +114,13 @@ std::vector<vtkSmartPointer<vtkActor>> lightGlyphs(const shadelab::Scene& scene,
   std::vector<vtkSmartPointer<vtkActor>> actors;
   for (const shadelab::SceneLight& sceneLight : scene.lights)
   {
-    if (sceneLight.type == shadelab::LightType::Ambient)
+    if (!shadelab::lightHasDirection(static_cast<int>(sceneLight.type)))
     {
       continue;
     }
     const shadelab::SceneLight l = shadelab::lightInWorldSpace(sceneLight, eye, focal, up);
     const glm::vec3 colour = glm::min(glm::vec3(1.0f), glm::max(glm::vec3(0.15f), l.diffuse));
-    if (l.type == shadelab::LightType::Directional)
+    if (!shadelab::lightTakes(l.type, shadelab::kLightPosition))
     {
       // An arrow outside the mesh, pointing along the light toward its centre.
       const glm::vec3 d = glm::normalize(l.direction);

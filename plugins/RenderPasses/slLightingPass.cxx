@@ -1,6 +1,7 @@
 #include "slLightingPass.h"
 
 #include "slLightingPassShaders.h"
+#include "slModelCheck.h"
 #include "slScene.h"
 
 #include "shadelab/LightingGLSL.h"
@@ -48,25 +49,39 @@ glm::vec3 toVec3(const double v[3])
 }
 
 /// Uniform names of light i, built once.
+/// The uniform names of light i's fields, in the order of
+/// SHADELAB_LIGHT_FIELDS ("slLights[2].position", ...), made once.
 struct LightUniformNames
 {
-  std::string position, direction, ambient, diffuse, specular, intensity, attenuation, cosCutoff,
-    cosInner, exponent;
+  std::vector<std::string> fields;
   explicit LightUniformNames(int i)
   {
     const std::string base = "slLights[" + std::to_string(i) + "].";
-    position = base + "position";
-    direction = base + "direction";
-    ambient = base + "ambient";
-    diffuse = base + "diffuse";
-    specular = base + "specular";
-    intensity = base + "intensity";
-    attenuation = base + "attenuation";
-    cosCutoff = base + "cosCutoff";
-    cosInner = base + "cosInner";
-    exponent = base + "exponent";
+#define SHADELAB_NAME(type, field, what) fields.push_back(base + #field);
+    SHADELAB_LIGHT_FIELDS(SHADELAB_NAME)
+#undef SHADELAB_NAME
   }
 };
+
+void setUniform(vtkShaderProgram* program, const std::string& name, const glm::vec3& value)
+{
+  program->SetUniform3f(name.c_str(), &value[0]);
+}
+void setUniform(vtkShaderProgram* program, const std::string& name, float value)
+{
+  program->SetUniformf(name.c_str(), value);
+}
+/// The light's type is compiled into the shaders (slLightTypeOf), not uploaded.
+void setUniform(vtkShaderProgram*, const std::string&, int) {}
+
+/// Every field of @p light as the uniforms named @p names.
+void setLightUniforms(vtkShaderProgram* program, const LightUniformNames& names, const shadelab::glsl::slLight& light)
+{
+  size_t f = 0;
+#define SHADELAB_UPLOAD(type, field, what) setUniform(program, names.fields[f++], light.field);
+  SHADELAB_LIGHT_FIELDS(SHADELAB_UPLOAD)
+#undef SHADELAB_UPLOAD
+}
 
 /// The material of an actor's vtkProperty, as VTK's own lighting reads it.
 shadelab::glsl::slMaterial materialOf(vtkProperty* p)
@@ -174,8 +189,7 @@ slScene* slLightingPass::GetScene()
 
 void slLightingPass::SetModel(int model)
 {
-  model = model < 0 ? 0 : (model > 5 ? 5 : model);
-  if (model != this->Model)
+  if (slCheckModel(this, model) && model != this->Model)
   {
     this->Model = model;
     this->ShaderStageTime.Modified(); // compiled into the shaders: model tests fold away
@@ -200,7 +214,7 @@ void slLightingPass::SetFrequency(int frequency)
   if (frequency != this->Frequency)
   {
     this->Frequency = frequency;
-    this->ShaderStageTime.Modified(); // the only parameter that changes shader code
+    this->ShaderStageTime.Modified(); // compiled into the shaders, as the model and the lights' types are
     this->Modified();
   }
 }
@@ -458,24 +472,11 @@ bool slLightingPass::SetShaderParameters(
   const std::vector<shadelab::glsl::slLight>& lights = this->Internal->LightsVC;
   for (size_t i = 0; i < lights.size(); ++i)
   {
-    const shadelab::glsl::slLight l = shadelab::glsl::slFoldLight(lights[i], m);
-    const LightUniformNames& n = this->Internal->Names[i];
-    program->SetUniform3f(n.position.c_str(), &l.position[0]);
-    program->SetUniform3f(n.direction.c_str(), &l.direction[0]);
-    program->SetUniform3f(n.ambient.c_str(), &l.ambient[0]);
-    program->SetUniform3f(n.diffuse.c_str(), &l.diffuse[0]);
-    program->SetUniform3f(n.specular.c_str(), &l.specular[0]);
-    program->SetUniformf(n.intensity.c_str(), l.intensity);
-    program->SetUniform3f(n.attenuation.c_str(), &l.attenuation[0]);
-    program->SetUniformf(n.cosCutoff.c_str(), l.cosCutoff);
-    program->SetUniformf(n.cosInner.c_str(), l.cosInner);
-    program->SetUniformf(n.exponent.c_str(), l.exponent);
+    setLightUniforms(program, this->Internal->Names[i], shadelab::glsl::slFoldLight(lights[i], m));
   }
-  program->SetUniform3f("slMat.ambient", &m.ambient[0]);
-  program->SetUniform3f("slMat.diffuse", &m.diffuse[0]);
-  program->SetUniform3f("slMat.specular", &m.specular[0]);
-  program->SetUniform3f("slMat.emission", &m.emission[0]);
-  program->SetUniformf("slMat.shininess", m.shininess);
+#define SHADELAB_UPLOAD(type, field, bit, what) setUniform(program, "slMat." #field, m.field);
+  SHADELAB_MATERIAL_PARAMETERS(SHADELAB_UPLOAD)
+#undef SHADELAB_UPLOAD
   program->SetUniformi("slComponent", this->Component);
   program->SetUniformi("slComponentLight", this->ComponentLight);
   program->SetUniformi("slFalseColor", this->FalseColor ? 1 : 0);

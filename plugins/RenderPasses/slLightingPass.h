@@ -105,7 +105,8 @@ public:
   ///@}
 
   ///@{
-  /// Lighting model: an SL_MODEL_* value, 0 (lambert) .. 5 (blinn-phong-normalized).
+  /// Lighting model: an SL_MODEL_* value (a row of shadelab/LightingTables.h).
+  /// Any other value is an error (vtkErrorMacro) and leaves the model as it was.
   void SetModel(int model);
   vtkGetMacro(Model, int);
   /// By scene-file name; false for an unknown name.

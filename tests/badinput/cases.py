@@ -3,8 +3,9 @@
 Arguments and messages use paths relative to the case's folder, where the
 input files are written and every out.* argument already exists with other
 content. Each case expects exactly one line on stderr."""
-from inputs import (QUAD_OBJ, TETRA_OFF, THREE_LIGHTS, exr, glb, gltf, legacy_vtk, obj, ply_ascii, ply_binary,
-                    ply_header, png, stl_binary, vtp, vtp_appended_base64_header, vtp_compressed_header)
+from inputs import (QUAD_OBJ, TETRA_OFF, THREE_LIGHTS, exr, glb, gltf, legacy_vtk, light_types, lighting_models,
+                    obj, ply_ascii, ply_binary, ply_header, png, stl_binary, vtp, vtp_appended_base64_header,
+                    vtp_compressed_header)
 
 
 def mesh_case(name, file_name, data, message, status=1):
@@ -209,7 +210,7 @@ CASES = [
     scene_case("scene duplicate key", b'{"background": [0, 0, 0], "background": [1, 1, 1]}', 'background: duplicate key'),
     scene_case("scene shininess out of range", b'{"material": {"shininess": -1}}', 'material.shininess: -1 is out of range [0, 100000]'),
     scene_case("scene spot cutoff out of range", b'{"lights": [{"type": "spot", "cutoff": 95}]}', 'lights[0].cutoff: 95 is out of range (0, 90]'),
-    scene_case("scene unknown light type", b'{"lights": [{"type": "laser"}]}', 'lights[0].type: "laser" is not one of "directional", "point", "spot", "ambient"'),
+    scene_case("scene unknown light type", b'{"lights": [{"type": "laser"}]}', 'lights[0].type: "laser" is not one of ' + light_types()),
     scene_case("scene lights not an array", b'{"lights": {"type": "point"}}', 'lights: expected an array of lights, got an object'),
     scene_case("scene utf16", '{"imageSize": [64, 64]}'.encode("utf-16"), "line 1, column 1: malformed JSON: syntax error while parsing value - invalid literal; last read: '\\xFF'"),
     ("scene is a directory", ["cosine", "m.off", "--scene", "s.json", "-o", "out.vtp"], {"m.off": TETRA_OFF,
@@ -252,7 +253,7 @@ CASES = [
     cli_case("two meshes to one file", ["normals", "m.off", "m.off", "-o", "out.vtp"], 'shadelab normals: -o/--output: with 2 MESH arguments, "out.vtp" must be an existing folder\n'),
     cli_case("unknown compression", ["normals", "m.off", "-o", "out.vtp", "--compress", "gzip"], 'shadelab normals: option --compress: unknown value "gzip" (none, lz4, zlib)\n'),
     cli_case("option without value", ["normals", "m.off", "-o"], 'shadelab normals: option -o needs a value (OUT)\n'),
-    cli_case("unknown model", ["light", "m.off", "--model", "toon", "-o", "out.vtp"], 'shadelab light: --model: "toon" is not a lighting model (lambert, phong, blinn-phong, lambert-normalized, phong-normalized, blinn-phong-normalized)\n'),
+    cli_case("unknown model", ["light", "m.off", "--model", "toon", "-o", "out.vtp"], 'shadelab light: --model: "toon" is not a lighting model (' + lighting_models() + ')\n'),
     cli_case("unknown frequency", ["render", "m.off", "--frequency", "sometimes", "-o", "out.png"], 'shadelab render: --frequency: "sometimes" is not one of flat, gouraud, phong\n'),
     cli_case("unknown subcommand", ["paint", "m.off"], 'shadelab: unknown subcommand "paint" (see shadelab --help)\n'),
 ]

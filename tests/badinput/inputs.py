@@ -2,6 +2,8 @@
 from which each case breaks one thing."""
 import base64
 import json
+import os
+import re
 import struct
 import zlib
 
@@ -15,6 +17,29 @@ THREE_LIGHTS = json.dumps({"lights": [
     {"type": "point", "position": [0, 2, 2]},
     {"type": "ambient", "ambient": [0.2, 0.2, 0.2]},
 ]}).encode()
+
+
+TABLES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "filters", "LightingCore", "include",
+                      "shadelab", "LightingTables.h")
+
+
+def table_names(macro):
+    """The scene-file names of the rows of X-macro @p macro in LightingTables.h, in row order."""
+    with open(TABLES) as f:
+        text = f.read()
+    body = text[text.index("#define " + macro + "(X)"):]
+    body = body[:body.index("\n\n")]
+    return re.findall(r'X\(\w+, \w+, "([^"]+)"', body)
+
+
+def lighting_models():
+    """The lighting models as messages list them: "lambert, phong, ..."."""
+    return ", ".join(table_names("SHADELAB_LIGHTING_MODELS"))
+
+
+def light_types():
+    """The light types as the scene reader lists them: '"directional", "point", ...'."""
+    return ", ".join('"' + name + '"' for name in table_names("SHADELAB_LIGHT_TYPES"))
 
 
 def obj(faces, extra=b""):

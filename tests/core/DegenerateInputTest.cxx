@@ -1,11 +1,13 @@
 // Degenerate geometry must shade to finite numbers, never NaN or infinity.
 #include "LightingTestUtilities.h"
 
+#include "shadelab/LightingTables.h"
 #include "shadelab/ShadePoint.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 #include <limits>
 
 using namespace shadelab;
@@ -40,8 +42,7 @@ void expectFinite(const glsl::slTerms& t, const std::string& what)
   }
 }
 
-const int kAllModels[] = { glsl::SL_MODEL_LAMBERT, glsl::SL_MODEL_PHONG, glsl::SL_MODEL_BLINN_PHONG,
-  glsl::SL_MODEL_LAMBERT_NORMALIZED, glsl::SL_MODEL_PHONG_NORMALIZED, glsl::SL_MODEL_BLINN_PHONG_NORMALIZED };
+const std::vector<int> kAllModels = allModels();
 } // namespace
 
 TEST(Degenerate, ZeroNormalGivesOnlyAmbientAndEmission)
@@ -62,9 +63,7 @@ TEST(Degenerate, ZeroNormalGivesOnlyAmbientAndEmission)
 /// the energy-normalised models (docs/lighting-core.md).
 float unitDiffuse(int model)
 {
-  const bool normalised = model == glsl::SL_MODEL_LAMBERT_NORMALIZED || model == glsl::SL_MODEL_PHONG_NORMALIZED ||
-    model == glsl::SL_MODEL_BLINN_PHONG_NORMALIZED;
-  return normalised ? static_cast<float>(1.0 / M_PI) : 1.0f;
+  return modelInfo(static_cast<ShadingModel>(model)).normalized ? static_cast<float>(1.0 / M_PI) : 1.0f;
 }
 
 TEST(Degenerate, LightAtTheShadedPoint)

@@ -1,6 +1,7 @@
 // The lecture formulas, checked against values computed here from <cmath>.
 #include "LightingTestUtilities.h"
 
+#include "shadelab/LightingTables.h"
 #include "shadelab/ShadePoint.h"
 
 #include <gtest/gtest.h>
@@ -293,7 +294,7 @@ TEST(ColourProducts, FoldedLightShadesAsTheLightAndMaterial)
   const glm::vec3 base(0.5f, 0.8f, 1.0f);
   const glm::vec3 P(0.1f, 0.0f, 0.0f), n = glm::normalize(glm::vec3(0.1f, 0.2f, 1.0f));
   const glm::vec3 v = glm::normalize(glm::vec3(-0.3f, 0.1f, 1.0f));
-  for (int model = 0; model < 6; ++model)
+  for (int model = 0; model < kLightingModelCount; ++model)
   {
     const glsl::slTerms direct = glsl::slShadeLightUnit(light, m, model, P, n, v);
     const glsl::slTerms folded =

@@ -5,8 +5,10 @@
 // under test.
 
 #include "shadelab/LightingGLSL.h"
+#include "shadelab/LightingTables.h"
 
 #include <cmath>
+#include <vector>
 
 namespace shadelab
 {
@@ -20,6 +22,17 @@ constexpr double kPi = 3.14159265358979323846;
 inline double radians(double degrees)
 {
   return degrees * kPi / 180.0;
+}
+
+/// Every row of the model table, as the int the formulas take.
+inline std::vector<int> allModels()
+{
+  std::vector<int> models;
+  for (const LightingModelInfo& m : kLightingModels)
+  {
+    models.push_back(static_cast<int>(m.model));
+  }
+  return models;
 }
 
 /// A white light of the given type with unit colours and no ambient part.

@@ -2,9 +2,12 @@
 // key path and the problem; and a lossless round trip.
 #include "shadelab/DefaultScene.h"
 #include "shadelab/SceneFile.h"
+#include "shadelab/SceneKeys.h"
+#include "shadelab/SceneLimits.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -117,14 +120,28 @@ TEST(SceneFile, WrongTypes)
     "bad.json: imageSize[0]: expected a whole number of pixels, got a number");
 }
 
+namespace
+{
+/// "\"a\", \"b\"": the valid names as the reader lists them.
+std::string quoted(const std::vector<std::string>& names)
+{
+  std::string out;
+  for (const std::string& name : names)
+  {
+    out += (out.empty() ? "\"" : ", \"") + name + "\"";
+  }
+  return out;
+}
+} // namespace
+
 TEST(SceneFile, UnknownNames)
 {
+  ASSERT_EQ(quoted(modelNames()).rfind("\"lambert\", \"phong\", \"blinn-phong\", \"lambert-normalized\"", 0), 0u);
   EXPECT_EQ(errorFor(R"({"shading": {"model": "cook-torrance"}})"),
-    "bad.json: shading.model: \"cook-torrance\" is not one of \"lambert\", \"phong\", \"blinn-phong\", "
-    "\"lambert-normalized\", \"phong-normalized\", \"blinn-phong-normalized\"");
+    "bad.json: shading.model: \"cook-torrance\" is not one of " + quoted(modelNames()));
   EXPECT_EQ(errorFor(withLight(R"({"type": "area"})")).rfind("bad.json: lights[1].type: \"area\" is not one of", 0), 0u);
   EXPECT_EQ(errorFor(withLight(R"({"position": [0, 0, 0]})")),
-    "bad.json: lights[1]: missing key \"type\" (one of \"directional\", \"point\", \"spot\", \"ambient\")");
+    "bad.json: lights[1]: missing key \"type\" (one of " + quoted(lightTypeNames()) + ")");
 }
 
 TEST(SceneFile, OutOfRangeValues)
@@ -250,4 +267,157 @@ TEST(SceneFile, SchemaListsExactlyTheKeysTheReaderAccepts)
     const std::string light = std::string(R"({"lights": [{"type": ")") + type + R"(", "zzz": 1}]})";
     EXPECT_EQ(allowedIn(errorFor(light)), schemaKeys(schema["$defs"][std::string(type) + "Light"])) << type;
   }
+}
+
+namespace
+{
+/// @p property with its "$ref" chain resolved; its own keys win.
+nlohmann::json resolved(const nlohmann::json& schema, nlohmann::json property)
+{
+  while (property.contains("$ref"))
+  {
+    std::string ref = property["$ref"].get<std::string>();
+    property.erase("$ref");
+    nlohmann::json target = schema[nlohmann::json::json_pointer(ref.substr(1))];
+    target.update(property);
+    property = target;
+  }
+  return property;
+}
+
+nlohmann::json asJson(const glm::vec3& v)
+{
+  return nlohmann::json::array({ v.x, v.y, v.z });
+}
+
+/// The schema's default equals the field's default, as the reader stores it (float).
+bool sameDefault(const nlohmann::json& schemaDefault, const nlohmann::json& value)
+{
+  if (schemaDefault.is_array() && value.is_array() && schemaDefault.size() == value.size())
+  {
+    for (size_t i = 0; i < value.size(); ++i)
+    {
+      if (static_cast<float>(schemaDefault[i].get<double>()) != value[i].get<float>())
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+  if (schemaDefault.is_number() && value.is_number())
+  {
+    return static_cast<float>(schemaDefault.get<double>()) == value.get<float>();
+  }
+  return schemaDefault == value;
+}
+
+/// The schema's entry for @p key (of an object whose defaults are @p object)
+/// has the key's type, range and default.
+template <typename Struct>
+void expectSchemaMatches(
+  const nlohmann::json& schema, const nlohmann::json& properties, const SceneKey<Struct>& key, const Struct& object,
+  bool needsDefault, const std::string& where)
+{
+  SCOPED_TRACE(where + "." + key.name);
+  ASSERT_TRUE(properties.contains(key.name));
+  const nlohmann::json p = resolved(schema, properties[key.name]);
+  auto expectBound = [&](const nlohmann::json& j, const char* closed, const char* open, double value, bool isOpen) {
+    if (std::isinf(value))
+    {
+      EXPECT_FALSE(j.contains(closed) || j.contains(open)) << j.dump();
+      return;
+    }
+    ASSERT_TRUE(j.contains(isOpen ? open : closed)) << j.dump();
+    EXPECT_EQ(j[isOpen ? open : closed].get<double>(), value);
+    EXPECT_FALSE(j.contains(isOpen ? closed : open));
+  };
+  nlohmann::json value;
+  switch (key.kind)
+  {
+    case SceneKeyKind::Number:
+      EXPECT_EQ(p["type"], "number");
+      expectBound(p, "minimum", "exclusiveMinimum", key.lo, key.openLo);
+      // A bound by another key (edge <= cutoff) is not a JSON Schema range.
+      expectBound(p, "maximum", "exclusiveMaximum", key.upTo ? HUGE_VAL : key.hi, key.openHi);
+      value = object.*(key.number);
+      break;
+    case SceneKeyKind::Colour:
+    case SceneKeyKind::Point:
+    case SceneKeyKind::Direction:
+    case SceneKeyKind::Coefficients:
+      EXPECT_EQ(p["type"], "array");
+      EXPECT_EQ(p["minItems"], 3);
+      EXPECT_EQ(p["maxItems"], 3);
+      EXPECT_EQ(p["items"]["type"], "number");
+      expectBound(p["items"], "minimum", "exclusiveMinimum", key.lo, key.openLo);
+      expectBound(p["items"], "maximum", "exclusiveMaximum", key.hi, key.openHi);
+      value = asJson(object.*(key.vector));
+      break;
+    case SceneKeyKind::Text:
+      EXPECT_EQ(p["type"], "string");
+      EXPECT_EQ(p.contains("minLength"), key.whenEmpty != nullptr);
+      return; // texts have no default
+    case SceneKeyKind::Space:
+      EXPECT_EQ(p["enum"], nlohmann::json(lightSpaceNames()));
+      value = lightSpaceName(object.*(key.space));
+      break;
+  }
+  if (needsDefault)
+  {
+    ASSERT_TRUE(p.contains("default")) << p.dump();
+  }
+  if (p.contains("default"))
+  {
+    EXPECT_TRUE(sameDefault(p["default"], value)) << p["default"].dump() << " vs " << value.dump();
+  }
+}
+} // namespace
+
+TEST(SceneFile, SchemaTypesRangesAndDefaultsAreTheKeyTables)
+{
+  std::ifstream in(std::string(SHADELAB_DATA_DIR) + "/schema/scene.schema.json");
+  ASSERT_TRUE(in.good());
+  const nlohmann::json schema = nlohmann::json::parse(in);
+  const nlohmann::json& defs = schema["$defs"];
+  for (const LightTypeInfo& t : kLightTypes)
+  {
+    const nlohmann::json& properties = defs[std::string(t.name) + "Light"]["properties"];
+    EXPECT_EQ(properties["type"]["const"], t.name);
+    for (const SceneKey<SceneLight>& key : lightKeys())
+    {
+      if (lightTakesKey(t.type, key))
+      {
+        expectSchemaMatches(schema, properties, key, defaultLight(t.type), true, t.name);
+      }
+      else
+      {
+        EXPECT_FALSE(properties.contains(key.name)) << t.name << " takes no " << key.name;
+      }
+    }
+  }
+  const nlohmann::json lightTypes = schema["properties"]["lights"]["items"]["oneOf"];
+  ASSERT_EQ(lightTypes.size(), static_cast<size_t>(kLightTypeCount));
+  for (int i = 0; i < kLightTypeCount; ++i)
+  {
+    EXPECT_EQ(lightTypes[i]["$ref"], std::string("#/$defs/") + kLightTypes[i].name + "Light");
+  }
+  for (const SceneKey<SceneMaterial>& key : materialKeys())
+  {
+    expectSchemaMatches(schema, defs["material"]["properties"], key, SceneMaterial(), true, "material");
+  }
+  for (const SceneKey<SceneCamera>& key : cameraKeys())
+  {
+    // position and focalPoint have no default: without them the mesh is fitted.
+    expectSchemaMatches(schema, defs["camera"]["properties"], key, SceneCamera(), key.kind != SceneKeyKind::Point,
+      "camera");
+  }
+  const Scene defaults;
+  EXPECT_EQ(defs["shading"]["properties"]["model"]["enum"], nlohmann::json(modelNames()));
+  EXPECT_EQ(defs["shading"]["properties"]["model"]["default"], modelName(defaults.model));
+  EXPECT_EQ(defs["shading"]["properties"]["frequency"]["enum"], nlohmann::json(frequencyNames()));
+  EXPECT_EQ(defs["shading"]["properties"]["frequency"]["default"], frequencyName(defaults.frequency));
+  EXPECT_EQ(defs["pixels"]["minimum"], kMinImageSize);
+  EXPECT_EQ(defs["pixels"]["maximum"], kMaxImageSize);
+  EXPECT_EQ(schema["properties"]["imageSize"]["default"], nlohmann::json::array({ defaults.width, defaults.height }));
+  EXPECT_TRUE(sameDefault(schema["properties"]["background"]["default"], asJson(defaults.background)));
 }

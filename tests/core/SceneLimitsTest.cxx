@@ -95,3 +95,20 @@ TEST(SceneLimits, TheFirstProblemAndOnlyTheValuesALightTypeUses)
   s.lights[0].type = LightType::Point;
   EXPECT_EQ(sceneValueProblem(s), "lights[0] (\"key\").position[0]: nan is not a finite number");
 }
+
+TEST(SceneLimits, AModelOrLightTypeOutsideTheTablesIsAProblem)
+{
+  // Built in code (a cast, a VTK setter's int): not silently shaded as
+  // another model or type.
+  Scene s = defaultScene();
+  s.model = static_cast<ShadingModel>(kLightingModelCount);
+  EXPECT_EQ(sceneValueProblem(s).rfind("shading.model: " + std::to_string(kLightingModelCount) +
+                " is not a lighting model (0 lambert, 1 phong, 2 blinn-phong",
+              0),
+    0u)
+    << sceneValueProblem(s);
+  s = defaultScene();
+  s.lights[1].type = static_cast<LightType>(-1);
+  EXPECT_EQ(sceneValueProblem(s).rfind("lights[1] (\"fill\").type: -1 is not a light type (0 directional, 1 point", 0), 0u)
+    << sceneValueProblem(s);
+}

@@ -1,5 +1,6 @@
-// The GPU gets exactly the text of slLighting.glsl (and of slNormalMapping.glsl
-// and slFalseColor.glsl), and that text is valid
+// The GPU gets exactly the text of the generated slLightingTables.glsl and of
+// slLighting.glsl (and of slNormalMapping.glsl and slFalseColor.glsl), the
+// files the C++ compilations include, and that text is valid
 // GLSL 1.50 (checked with glslangValidator, which scripts/install-deps.sh
 // installs: its absence is a failure, not a skip).
 #include "shadelab/LightingShaderSource.h"
@@ -17,7 +18,12 @@ TEST(ShaderSource, EmbedsTheGLSLFileVerbatim)
   std::stringstream file;
   file << in.rdbuf();
   ASSERT_FALSE(file.str().empty());
-  EXPECT_EQ(shadelab::lightingShaderSource(), "#define SL_FUNC\n" + file.str());
+  std::ifstream tablesIn(SHADELAB_LIGHTING_TABLES_GLSL);
+  std::stringstream tables;
+  tables << tablesIn.rdbuf();
+  ASSERT_FALSE(tables.str().empty());
+  EXPECT_EQ(shadelab::lightingTablesShaderSource(), tables.str());
+  EXPECT_EQ(shadelab::lightingShaderSource(), "#define SL_FUNC\n" + tables.str() + file.str());
 }
 
 TEST(ShaderSource, EmbedsTheNormalMappingAndFalseColourFilesVerbatim)

@@ -149,7 +149,7 @@ TEST(LightingBadInput, DegenerateMeshGivesNoNaN)
   spot.direction = glm::vec3(0.0f);
   SceneLight ambient = whiteLight(LightType::Ambient);
   ambient.ambient = glm::vec3(1.0f);
-  for (int model = 0; model < 6; ++model)
+  for (int model = 0; model < kLightingModelCount; ++model)
   {
     vtkSmartPointer<slScene> scene =
       makeScene({ someLight(), spot, ambient }, static_cast<ShadingModel>(model), glm::vec3(0.0f, 0.0f, 10.0f));
@@ -201,7 +201,7 @@ TEST(LightingBadInput, EyeSeeingTheLightThroughTheSurfaceGivesNoInfinity)
   vtkSmartPointer<vtkPolyData> mesh = pointsWithNormals(points);
   for (float shininess : { 40.0f, 1024.0f, 40.5f })
   {
-    for (int model = 0; model < 6; ++model)
+    for (int model = 0; model < kLightingModelCount; ++model)
     {
       vtkSmartPointer<slScene> scene = makeScene({ light }, static_cast<ShadingModel>(model), eye);
       Scene s = scene->GetScene();
@@ -232,8 +232,9 @@ TEST(LightingBadInput, ValuesAtTheSceneLimitsGiveFiniteTerms)
   // produce must still be finite (SceneLimits.h's reason for its limits).
   const float big = static_cast<float>(kMaxColourValue);
   std::vector<SceneLight> lights;
-  for (LightType type : { LightType::Directional, LightType::Point, LightType::Spot, LightType::Ambient })
+  for (const LightTypeInfo& info : kLightTypes)
   {
+    const LightType type = info.type;
     for (int k = 0; k < 2; ++k)
     {
       SceneLight l = whiteLight(type);
@@ -245,7 +246,7 @@ TEST(LightingBadInput, ValuesAtTheSceneLimitsGiveFiniteTerms)
       lights.push_back(l);
     }
   }
-  for (int model = 0; model < 6; ++model)
+  for (int model = 0; model < kLightingModelCount; ++model)
   {
     vtkSmartPointer<slScene> scene = makeScene(lights, static_cast<ShadingModel>(model), glm::vec3(0.0f, 0.0f, 5.0f));
     Scene s = scene->GetScene();

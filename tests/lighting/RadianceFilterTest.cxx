@@ -125,10 +125,10 @@ TEST(RadianceFilter, VectorizedLoopAgreesWithShadePointForEveryModelAndLightType
   mesh->GetPointData()->AddArray(base);
   const glm::vec3 eye(1, 2, 5);
   const char* terms[] = { "Ambient", "Diffuse", "Specular", "Radiance" };
-  for (int variant = 0; variant < 12; ++variant)
+  for (int variant = 0; variant < 2 * kLightingModelCount; ++variant)
   {
-    const int model = variant % 6;
-    const float fraction = variant < 6 ? 0.0f : 0.5f;
+    const int model = variant % kLightingModelCount;
+    const float fraction = variant < kLightingModelCount ? 0.0f : 0.5f;
     spot.exponent = 3.0f + fraction;
     vtkSmartPointer<slScene> scene =
       makeScene({ directional, point, spot, ambient }, static_cast<ShadingModel>(model), eye);

@@ -275,7 +275,7 @@ TEST(RadianceReference, DegenerateMeshGivesNoNaN)
   point.position = glm::vec3(1.0f, 1.0f, 1.0f);
   for (int strategy = 0; strategy <= 4; ++strategy)
   {
-    for (int model = 0; model < 6; ++model)
+    for (int model = 0; model < kLightingModelCount; ++model)
     {
       vtkNew<slRadianceReference> filter;
       filter->SetScene(makeScene({ point }, static_cast<ShadingModel>(model), glm::vec3(0.0f, 0.0f, 10.0f)));

@@ -27,17 +27,11 @@
 // space in the shaders). N is the surface normal, L points from the surface
 // toward the light, V from the surface toward the eye. Colours are linear RGB.
 
-const int SL_LIGHT_DIRECTIONAL = 0;
-const int SL_LIGHT_POINT = 1;
-const int SL_LIGHT_SPOT = 2;
-const int SL_LIGHT_AMBIENT = 3;
-
-const int SL_MODEL_LAMBERT = 0;
-const int SL_MODEL_PHONG = 1;
-const int SL_MODEL_BLINN_PHONG = 2;
-const int SL_MODEL_LAMBERT_NORMALIZED = 3;
-const int SL_MODEL_PHONG_NORMALIZED = 4;
-const int SL_MODEL_BLINN_PHONG_NORMALIZED = 5;
+// The SL_LIGHT_* and SL_MODEL_* constants, slIsNormalizedModel() and the
+// structs slLight (one light, ready for evaluation: angles already turned
+// into cosines) and slMaterial (k_a, k_d, k_s, k_e and the shininess n) come
+// from slLightingTables.glsl, which the build generates from
+// shadelab/LightingTables.h and every compilation puts before this file.
 
 const float SL_PI = 3.14159265358979f;
 // Below this length a vector has no direction; see slSafeNormalize. The
@@ -45,32 +39,6 @@ const float SL_PI = 3.14159265358979f;
 // compilation -- libm, the SIMD estimate (which takes a subnormal for 0),
 // GPUs that flush subnormals -- agrees on which vectors have one.
 const float SL_TINY_LENGTH = 1e-18f;
-
-// One light, ready for evaluation (angles already turned into cosines).
-struct slLight
-{
-  int type;          // SL_LIGHT_*
-  vec3 position;     // point and spot lights
-  vec3 direction;    // unit vector the light travels along (directional, spot)
-  vec3 ambient;      // per-light ambient colour (OpenGL style)
-  vec3 diffuse;      // per-light diffuse colour
-  vec3 specular;     // per-light specular colour
-  float intensity;   // scales all three colours
-  vec3 attenuation;  // c1, c2, c3 of min(1, 1 / (c1 + c2 d + c3 d^2))
-  float cosCutoff;   // spot: cosine of the cutoff half-angle
-  float cosInner;    // spot: cosine where the smooth edge ends (== cosCutoff: hard edge)
-  float exponent;    // spot: cos^exponent falloff inside the cone
-};
-
-// Material coefficients k_a, k_d, k_s, k_e and the shininess n.
-struct slMaterial
-{
-  vec3 ambient;
-  vec3 diffuse;
-  vec3 specular;
-  vec3 emission;
-  float shininess;
-};
 
 // The four terms of the lighting equation; the total is their sum.
 struct slTerms
@@ -106,11 +74,6 @@ SL_FUNC vec3 slSafeNormalize(vec3 v)
 SL_FUNC float slPow(float x, float e)
 {
   return mix(mix(1.0f, 0.0f, e > 0.0f), pow(x, e), x > 0.0f);
-}
-
-SL_FUNC bool slIsNormalizedModel(int model)
-{
-  return model >= SL_MODEL_LAMBERT_NORMALIZED;
 }
 
 // Distance attenuation f_att = min(1, 1 / (c1 + c2 d + c3 d^2)). A sum that is
@@ -210,12 +173,10 @@ SL_FUNC float slDiffuseFactor(int model, vec3 N, vec3 L)
 //                 or slBlinnPhongNormalization(n) max(0,N.H)^n (Blinn-Phong).
 SL_FUNC float slSpecularFactor(int model, vec3 N, vec3 L, vec3 V, float n)
 {
-  if (model == SL_MODEL_LAMBERT || model == SL_MODEL_LAMBERT_NORMALIZED)
-  {
-    return 0.0f;
-  }
   float cosTheta = dot(N, L);
-  float factor;
+  // Each model with a specular lobe sets its factor below; the Lambert
+  // models have none.
+  float factor = 0.0f;
   if (model == SL_MODEL_PHONG || model == SL_MODEL_PHONG_NORMALIZED)
   {
     vec3 R = 2.0f * cosTheta * N - L;
@@ -225,7 +186,7 @@ SL_FUNC float slSpecularFactor(int model, vec3 N, vec3 L, vec3 V, float n)
       factor = factor * (n + 2.0f) / (2.0f * SL_PI) * cosTheta;
     }
   }
-  else
+  if (model == SL_MODEL_BLINN_PHONG || model == SL_MODEL_BLINN_PHONG_NORMALIZED)
   {
     // N.H with H = (L + V) / |L + V|, as (N.L + N.V) / |L + V| (N.V is the
     // same for every light), and 0 where L + V has no direction.

@@ -1,6 +1,7 @@
 #include "shadelab/Albedo.h"
 
 #include "shadelab/LightingGLSLDouble.h"
+#include "shadelab/LightingTables.h"
 
 #include <algorithm>
 #include <cmath>
@@ -72,14 +73,12 @@ double piecewise(const F& f, const std::vector<double>& breaks, double end, doub
 double directionalAlbedo(int model, const glsl::slMaterial& material, double thetaI)
 {
   glsld::slMaterial m;
-  m.ambient = glm::dvec3(material.ambient);
-  m.diffuse = glm::dvec3(material.diffuse);
-  m.specular = glm::dvec3(material.specular);
-  m.emission = glm::dvec3(material.emission);
-  m.shininess = material.shininess;
+#define SHADELAB_COPY(type, field, bit, what) m.field = material.field;
+  SHADELAB_MATERIAL_PARAMETERS(SHADELAB_COPY)
+#undef SHADELAB_COPY
   const double sinI = std::sin(thetaI), cosI = std::cos(thetaI);
   const glm::dvec3 N(0.0, 0.0, 1.0), L(sinI, 0.0, cosI);
-  const bool blinn = model == glsl::SL_MODEL_BLINN_PHONG || model == glsl::SL_MODEL_BLINN_PHONG_NORMALIZED;
+  const bool blinn = modelInfo(static_cast<ShadingModel>(model)).lobe == SpecularLobe::Halfway;
 
   // f_r cos(theta_o) for V toward the eye, mean of R, G, B.
   auto integrand = [&](const glm::dvec3& V) {

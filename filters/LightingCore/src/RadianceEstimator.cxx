@@ -1,5 +1,6 @@
 #include "shadelab/RadianceEstimator.h"
 
+#include "shadelab/LightingTables.h"
 #include "shadelab/Sampling.h"
 
 #include <algorithm>
@@ -28,13 +29,13 @@ std::vector<Cone> conesAt(const ReferenceSetup& s, const glm::vec3& P)
   }
   for (const glsl::slLight& light : s.lights)
   {
-    if (light.type == glsl::SL_LIGHT_AMBIENT)
+    if (!lightHasDirection(light.type))
     {
       continue;
     }
     const glm::vec3 axis = glsl::slDirectionToLight(light, P);
     float sinAlpha = std::sin(s.directionalAngularRadius);
-    if (light.type != glsl::SL_LIGHT_DIRECTIONAL)
+    if (lightTakes(static_cast<LightType>(light.type), kLightPosition))
     {
       const float d = glm::length(light.position - P);
       if (!(d > s.lightRadius))
@@ -242,7 +243,8 @@ RadianceEstimate estimateRadiance(
   }
   PointContext c{ s, N, glsl::slSafeNormalize(eye - P), Frame(N), conesAt(s, P), 1.0f, 1.0f, false, N, 0.0f };
   c.mirror = glsl::slSafeNormalize(2.0f * glm::dot(N, c.V) * N - c.V);
-  const bool specularModel = s.model != glsl::SL_MODEL_LAMBERT && s.model != glsl::SL_MODEL_LAMBERT_NORMALIZED;
+  const LightingModelInfo& model = modelInfo(static_cast<ShadingModel>(s.model));
+  const bool specularModel = (model.reads & kReadsSpecular) != 0;
   const float kd = mean3(s.material.diffuse), ks = specularModel ? mean3(s.material.specular) : 0.0f;
   c.diffuseWeight = kd + ks > 0.0f ? kd / (kd + ks) : 1.0f;
   if (glm::length(c.mirror) == 0.0f)
@@ -250,7 +252,7 @@ RadianceEstimate estimateRadiance(
     c.diffuseWeight = 1.0f; // eye in the tangent plane or at P: no mirror direction
   }
   c.specularPower = std::max(s.material.shininess, 0.0f);
-  c.blinn = s.model == glsl::SL_MODEL_BLINN_PHONG || s.model == glsl::SL_MODEL_BLINN_PHONG_NORMALIZED;
+  c.blinn = model.lobe == SpecularLobe::Halfway;
   const bool haveEnvironment = s.environment && !s.environment->empty() && s.environmentScale > 0.0f;
   c.environmentChoice = haveEnvironment ? (c.cones.empty() ? 1.0f : 0.5f) : 0.0f;
   const bool haveLights = haveEnvironment || !c.cones.empty();

@@ -19,13 +19,36 @@ bool parseName(const std::vector<std::string>& names, const std::string& name, E
   }
   return false;
 }
+
+/// The names of a table's rows, in row (= enum) order.
+template <typename Row, size_t N>
+std::vector<std::string> rowNames(const Row (&rows)[N])
+{
+  std::vector<std::string> names;
+  for (const Row& row : rows)
+  {
+    names.emplace_back(row.name);
+  }
+  return names;
+}
+
+/// names[value], or "(unknown WHAT VALUE)" for a value outside the list,
+/// kept so that the pointer stays valid.
+const char* nameOf(const std::vector<std::string>& names, int value, const char* what)
+{
+  if (value >= 0 && static_cast<size_t>(value) < names.size())
+  {
+    return names[static_cast<size_t>(value)].c_str();
+  }
+  static thread_local std::string unknown;
+  unknown = std::string("(unknown ") + what + " " + std::to_string(value) + ")";
+  return unknown.c_str();
+}
 } // namespace
 
-// The order of each list is the order of its enum (static_assert'ed below).
 const std::vector<std::string>& modelNames()
 {
-  static const std::vector<std::string> names{ "lambert", "phong", "blinn-phong",
-    "lambert-normalized", "phong-normalized", "blinn-phong-normalized" };
+  static const std::vector<std::string> names = rowNames(kLightingModels);
   return names;
 }
 
@@ -37,7 +60,7 @@ const std::vector<std::string>& frequencyNames()
 
 const std::vector<std::string>& lightTypeNames()
 {
-  static const std::vector<std::string> names{ "directional", "point", "spot", "ambient" };
+  static const std::vector<std::string> names = rowNames(kLightTypes);
   return names;
 }
 
@@ -47,27 +70,47 @@ const std::vector<std::string>& lightSpaceNames()
   return names;
 }
 
-static_assert(static_cast<int>(ShadingModel::Lambert) == 0 &&
-    static_cast<int>(ShadingModel::BlinnPhongNormalized) == 5,
-  "modelNames() is indexed by ShadingModel");
-static_assert(static_cast<int>(LightType::Directional) == 0 && static_cast<int>(LightType::Ambient) == 3,
-  "lightTypeNames() is indexed by LightType");
-
 const char* modelName(ShadingModel model)
 {
-  return modelNames()[static_cast<size_t>(model)].c_str();
+  return nameOf(modelNames(), static_cast<int>(model), "lighting model");
 }
 const char* frequencyName(ShadingFrequency frequency)
 {
-  return frequencyNames()[static_cast<size_t>(frequency)].c_str();
+  return nameOf(frequencyNames(), static_cast<int>(frequency), "shading frequency");
 }
 const char* lightTypeName(LightType type)
 {
-  return lightTypeNames()[static_cast<size_t>(type)].c_str();
+  return nameOf(lightTypeNames(), static_cast<int>(type), "light type");
 }
 const char* lightSpaceName(LightSpace space)
 {
-  return lightSpaceNames()[static_cast<size_t>(space)].c_str();
+  return nameOf(lightSpaceNames(), static_cast<int>(space), "light space");
+}
+
+namespace
+{
+std::string valueProblem(int value, const std::vector<std::string>& names, const char* what)
+{
+  if (value >= 0 && static_cast<size_t>(value) < names.size())
+  {
+    return "";
+  }
+  std::string list;
+  for (size_t i = 0; i < names.size(); ++i)
+  {
+    list += (i ? ", " : "") + std::to_string(i) + " " + names[i];
+  }
+  return std::to_string(value) + " is not " + what + " (" + list + ")";
+}
+} // namespace
+
+std::string modelValueProblem(int value)
+{
+  return valueProblem(value, modelNames(), "a lighting model");
+}
+std::string lightTypeValueProblem(int value)
+{
+  return valueProblem(value, lightTypeNames(), "a light type");
 }
 
 bool parseModelName(const std::string& name, ShadingModel& out)
@@ -109,11 +152,9 @@ glsl::slLight toEvaluationLight(const SceneLight& light)
 glsl::slMaterial toEvaluationMaterial(const SceneMaterial& material)
 {
   glsl::slMaterial out;
-  out.ambient = material.ambient;
-  out.diffuse = material.diffuse;
-  out.specular = material.specular;
-  out.emission = material.emission;
-  out.shininess = material.shininess;
+#define SHADELAB_COPY(type, field, bit, what) out.field = material.field;
+  SHADELAB_MATERIAL_PARAMETERS(SHADELAB_COPY)
+#undef SHADELAB_COPY
   return out;
 }
 

@@ -2,6 +2,7 @@
 
 #include "shadelab/AtomicFile.h"
 #include "shadelab/PrintableText.h"
+#include "shadelab/SceneKeys.h"
 #include "shadelab/SceneLimits.h"
 
 #include <nlohmann/json.hpp>
@@ -226,7 +227,7 @@ private:
       {
         this->fail(itemPath, "expected a whole number of pixels, got " + typeName(value[i]));
       }
-      (i ? scene.height : scene.width) = static_cast<int>(this->number(value[i], itemPath, 16, 8192));
+      (i ? scene.height : scene.width) = static_cast<int>(this->number(value[i], itemPath, kMinImageSize, kMaxImageSize));
     }
   }
 
@@ -244,71 +245,98 @@ private:
     }
   }
 
+  /// Reads the keys of @p keys that @p takes selects from @p value into
+  /// @p out, in table order (so that a bound is read before what it bounds).
+  template <typename Struct, typename Select>
+  void keys(const json& value, const std::string& path, const std::vector<SceneKey<Struct>>& keys, Struct& out,
+    Select takes) const
+  {
+    for (const SceneKey<Struct>& key : keys)
+    {
+      if (!takes(key) || !value.contains(key.name))
+      {
+        continue;
+      }
+      const std::string p = childPath(path, key.name);
+      const json& v = value[key.name];
+      switch (key.kind)
+      {
+        case SceneKeyKind::Number:
+          out.*(key.number) =
+            static_cast<float>(this->number(v, p, key.lo, keyUpperLimit(key, out), key.openLo, key.openHi));
+          break;
+        case SceneKeyKind::Colour:
+          out.*(key.vector) = this->color(v, p);
+          break;
+        case SceneKeyKind::Point:
+          out.*(key.vector) = this->point(v, p);
+          break;
+        case SceneKeyKind::Direction:
+          out.*(key.vector) = this->direction(v, p);
+          break;
+        case SceneKeyKind::Coefficients:
+          if (!v.is_array() || v.size() != 3)
+          {
+            this->fail(p, "expected [c1, c2, c3] for min(1, 1/(c1 + c2 d + c3 d^2))");
+          }
+          out.*(key.vector) = this->triple(v, p, "[c1, c2, c3]", key.lo, key.hi);
+          break;
+        case SceneKeyKind::Text:
+          out.*(key.text) = this->string(v, p);
+          if (key.whenEmpty && (out.*(key.text)).empty())
+          {
+            this->fail(p, key.whenEmpty);
+          }
+          break;
+        case SceneKeyKind::Space:
+          out.*(key.space) = this->choice(v, p, lightSpaceNames(), &parseLightSpaceName);
+          break;
+      }
+    }
+  }
+
+  /// The names of @p keys that @p takes selects, with @p extra.
+  template <typename Struct, typename Select>
+  static std::set<std::string> keyNames(
+    const std::vector<SceneKey<Struct>>& keys, Select takes, std::set<std::string> extra = {})
+  {
+    for (const SceneKey<Struct>& key : keys)
+    {
+      if (takes(key))
+      {
+        extra.insert(key.name);
+      }
+    }
+    return extra;
+  }
+
+  template <typename Struct>
+  static bool every(const SceneKey<Struct>&)
+  {
+    return true;
+  }
+
   SceneMaterial material(const json& value, const std::string& path) const
   {
-    this->expectObject(
-      value, path, { "ambient", "diffuse", "specular", "emission", "shininess", "diffuseTexture" });
+    this->expectObject(value, path, keyNames(materialKeys(), every<SceneMaterial>));
     SceneMaterial m;
-    const std::pair<const char*, glm::vec3*> colors[] = { { "ambient", &m.ambient },
-      { "diffuse", &m.diffuse }, { "specular", &m.specular }, { "emission", &m.emission } };
-    for (const auto& c : colors)
-    {
-      if (value.contains(c.first))
-      {
-        *c.second = this->color(value[c.first], childPath(path, c.first));
-      }
-    }
-    if (value.contains("shininess"))
-    {
-      m.shininess = static_cast<float>(this->number(value["shininess"], childPath(path, "shininess"), 0, kMaxShininess));
-    }
-    if (value.contains("diffuseTexture"))
-    {
-      m.diffuseTexture = this->string(value["diffuseTexture"], childPath(path, "diffuseTexture"));
-      if (m.diffuseTexture.empty())
-      {
-        this->fail(childPath(path, "diffuseTexture"), "must name an image file");
-      }
-    }
+    this->keys(value, path, materialKeys(), m, every<SceneMaterial>);
     return m;
   }
 
   SceneCamera camera(const json& value, const std::string& path) const
   {
-    this->expectObject(
-      value, path, { "position", "focalPoint", "viewUp", "viewAngle", "azimuth", "elevation" });
-    SceneCamera c;
+    this->expectObject(value, path, keyNames(cameraKeys(), every<SceneCamera>));
     if (value.contains("position") != value.contains("focalPoint"))
     {
       this->fail(path, "give both position and focalPoint, or neither (then the mesh is fitted in view)");
     }
-    if (value.contains("position"))
+    SceneCamera c;
+    this->keys(value, path, cameraKeys(), c, every<SceneCamera>);
+    c.hasPosition = value.contains("position");
+    if (c.hasPosition && !(glm::length(c.position - c.focalPoint) > 0.0f))
     {
-      c.hasPosition = true;
-      c.position = this->point(value["position"], childPath(path, "position"));
-      c.focalPoint = this->point(value["focalPoint"], childPath(path, "focalPoint"));
-      if (!(glm::length(c.position - c.focalPoint) > 0.0f))
-      {
-        this->fail(childPath(path, "focalPoint"), "must differ from position");
-      }
-    }
-    if (value.contains("viewUp"))
-    {
-      c.viewUp = this->direction(value["viewUp"], childPath(path, "viewUp"));
-    }
-    if (value.contains("viewAngle"))
-    {
-      c.viewAngle =
-        static_cast<float>(this->number(value["viewAngle"], childPath(path, "viewAngle"), 0, 180, true, true));
-    }
-    if (value.contains("azimuth"))
-    {
-      c.azimuth = static_cast<float>(this->number(value["azimuth"], childPath(path, "azimuth"), -360, 360));
-    }
-    if (value.contains("elevation"))
-    {
-      c.elevation =
-        static_cast<float>(this->number(value["elevation"], childPath(path, "elevation"), -90, 90, true, true));
+      this->fail(childPath(path, "focalPoint"), "must differ from position");
     }
     return c;
   }
@@ -323,86 +351,11 @@ private:
     {
       this->fail(path, "missing key \"type\" (one of " + join(lightTypeNames()) + ")");
     }
-    SceneLight l;
-    l.type = this->choice(value["type"], childPath(path, "type"), lightTypeNames(), &parseLightTypeName);
-    std::set<std::string> allowed{ "name", "type", "intensity", "ambient" };
-    if (l.type != LightType::Ambient)
-    {
-      allowed.insert({ "space", "diffuse", "specular" });
-    }
-    if (l.type == LightType::Directional || l.type == LightType::Spot)
-    {
-      allowed.insert("direction");
-    }
-    if (l.type == LightType::Point || l.type == LightType::Spot)
-    {
-      allowed.insert({ "position", "attenuation" });
-    }
-    if (l.type == LightType::Spot)
-    {
-      allowed.insert({ "cutoff", "exponent", "edge" });
-    }
-    this->expectObject(value, path, allowed);
-
-    if (l.type == LightType::Ambient)
-    {
-      // An ambient light is only its colour: default white, no diffuse/specular.
-      l.ambient = glm::vec3(1.0f);
-      l.diffuse = l.specular = glm::vec3(0.0f);
-    }
-    if (value.contains("name"))
-    {
-      l.name = this->string(value["name"], childPath(path, "name"));
-    }
-    if (value.contains("space"))
-    {
-      l.space = this->choice(value["space"], childPath(path, "space"), lightSpaceNames(), &parseLightSpaceName);
-    }
-    if (value.contains("intensity"))
-    {
-      l.intensity = static_cast<float>(this->number(value["intensity"], childPath(path, "intensity"), 0, kMaxColourValue));
-    }
-    const std::pair<const char*, glm::vec3*> colors[] = { { "ambient", &l.ambient }, { "diffuse", &l.diffuse },
-      { "specular", &l.specular } };
-    for (const auto& c : colors)
-    {
-      if (value.contains(c.first))
-      {
-        *c.second = this->color(value[c.first], childPath(path, c.first));
-      }
-    }
-    if (value.contains("position"))
-    {
-      l.position = this->point(value["position"], childPath(path, "position"));
-    }
-    if (value.contains("direction"))
-    {
-      l.direction = this->direction(value["direction"], childPath(path, "direction"));
-    }
-    if (value.contains("attenuation"))
-    {
-      const std::string p = childPath(path, "attenuation");
-      const json& a = value["attenuation"];
-      if (!a.is_array() || a.size() != 3)
-      {
-        this->fail(p, "expected [c1, c2, c3] for min(1, 1/(c1 + c2 d + c3 d^2))");
-      }
-      l.attenuation = this->triple(a, p, "[c1, c2, c3]", 0.0);
-    }
-    if (value.contains("cutoff"))
-    {
-      l.cutoffDegrees =
-        static_cast<float>(this->number(value["cutoff"], childPath(path, "cutoff"), 0, 90, true, false));
-    }
-    if (value.contains("exponent"))
-    {
-      l.exponent = static_cast<float>(this->number(value["exponent"], childPath(path, "exponent"), 0, kMaxSpotExponent));
-    }
-    if (value.contains("edge"))
-    {
-      l.edgeDegrees =
-        static_cast<float>(this->number(value["edge"], childPath(path, "edge"), 0, l.cutoffDegrees));
-    }
+    const LightType type = this->choice(value["type"], childPath(path, "type"), lightTypeNames(), &parseLightTypeName);
+    auto takes = [type](const SceneKey<SceneLight>& key) { return lightTakesKey(type, key); };
+    this->expectObject(value, path, keyNames(lightKeys(), takes, { "type" }));
+    SceneLight l = defaultLight(type);
+    this->keys(value, path, lightKeys(), l, takes);
     return l;
   }
 };
@@ -504,6 +457,43 @@ json vec(const glm::vec3& v)
   return json::array({ tidy(v.x), tidy(v.y), tidy(v.z) });
 }
 
+/// The keys of @p keys that @p writes selects, with @p object's values
+/// (empty texts left out).
+template <typename Struct, typename Select>
+json keysToJson(const std::vector<SceneKey<Struct>>& keys, const Struct& object, Select writes)
+{
+  json out = json::object();
+  for (const SceneKey<Struct>& key : keys)
+  {
+    if (!writes(key))
+    {
+      continue;
+    }
+    switch (key.kind)
+    {
+      case SceneKeyKind::Number:
+        out[key.name] = tidy(object.*(key.number));
+        break;
+      case SceneKeyKind::Colour:
+      case SceneKeyKind::Point:
+      case SceneKeyKind::Direction:
+      case SceneKeyKind::Coefficients:
+        out[key.name] = vec(object.*(key.vector));
+        break;
+      case SceneKeyKind::Text:
+        if (!(object.*(key.text)).empty())
+        {
+          out[key.name] = object.*(key.text);
+        }
+        break;
+      case SceneKeyKind::Space:
+        out[key.name] = lightSpaceName(object.*(key.space));
+        break;
+    }
+  }
+  return out;
+}
+
 } // namespace
 
 Scene parseScene(const std::string& jsonText, const std::string& fileName)
@@ -572,57 +562,21 @@ std::string sceneToJson(const Scene& scene)
   root["background"] = vec(scene.background);
   root["shading"] = { { "model", modelName(scene.model) }, { "frequency", frequencyName(scene.frequency) } };
 
-  const SceneMaterial& m = scene.material;
-  root["material"] = { { "ambient", vec(m.ambient) }, { "diffuse", vec(m.diffuse) },
-    { "specular", vec(m.specular) }, { "emission", vec(m.emission) }, { "shininess", tidy(m.shininess) } };
-  if (!m.diffuseTexture.empty())
-  {
-    root["material"]["diffuseTexture"] = m.diffuseTexture;
-  }
-
+  root["material"] = keysToJson(materialKeys(), scene.material, [](const SceneKey<SceneMaterial>&) { return true; });
+  // A placed camera is written with its position, a fitted one with its turns.
   const SceneCamera& c = scene.camera;
-  json camera = { { "viewUp", vec(c.viewUp) }, { "viewAngle", tidy(c.viewAngle) } };
-  if (c.hasPosition)
-  {
-    camera["position"] = vec(c.position);
-    camera["focalPoint"] = vec(c.focalPoint);
-  }
-  else
-  {
-    camera["azimuth"] = tidy(c.azimuth);
-    camera["elevation"] = tidy(c.elevation);
-  }
-  root["camera"] = camera;
+  root["camera"] = keysToJson(cameraKeys(), c, [&c](const SceneKey<SceneCamera>& key) {
+    const std::string name = key.name;
+    const bool placement = name == "position" || name == "focalPoint";
+    const bool turn = name == "azimuth" || name == "elevation";
+    return (!placement || c.hasPosition) && (!turn || !c.hasPosition);
+  });
 
   json lights = json::array();
   for (const SceneLight& l : scene.lights)
   {
-    json j = { { "type", lightTypeName(l.type) }, { "intensity", tidy(l.intensity) }, { "ambient", vec(l.ambient) } };
-    if (!l.name.empty())
-    {
-      j["name"] = l.name;
-    }
-    if (l.type != LightType::Ambient)
-    {
-      j["space"] = lightSpaceName(l.space);
-      j["diffuse"] = vec(l.diffuse);
-      j["specular"] = vec(l.specular);
-    }
-    if (l.type == LightType::Directional || l.type == LightType::Spot)
-    {
-      j["direction"] = vec(l.direction);
-    }
-    if (l.type == LightType::Point || l.type == LightType::Spot)
-    {
-      j["position"] = vec(l.position);
-      j["attenuation"] = vec(l.attenuation);
-    }
-    if (l.type == LightType::Spot)
-    {
-      j["cutoff"] = tidy(l.cutoffDegrees);
-      j["exponent"] = tidy(l.exponent);
-      j["edge"] = tidy(l.edgeDegrees);
-    }
+    json j = keysToJson(lightKeys(), l, [&l](const SceneKey<SceneLight>& key) { return lightTakesKey(l.type, key); });
+    j["type"] = lightTypeName(l.type);
     lights.push_back(j);
   }
   root["lights"] = lights;

@@ -1,7 +1,8 @@
 #include "shadelab/SceneLimits.h"
 
+#include "shadelab/SceneKeys.h"
+
 #include <cmath>
-#include <initializer_list>
 #include <limits>
 #include <sstream>
 
@@ -17,31 +18,15 @@ std::string formatted(double x)
   return s.str();
 }
 
-/// numberProblem() for the value at @p path, "" or "path: problem".
-std::string problemAt(const std::string& path, double x, double lo, double hi, bool openLo = false)
+/// The first problem of @p object's values for @p keys that @p checked
+/// selects, or "".
+template <typename Struct, typename Select>
+std::string firstProblem(
+  const std::vector<SceneKey<Struct>>& keys, const Struct& object, const std::string& path, Select checked)
 {
-  const std::string p = numberProblem(x, lo, hi, openLo);
-  return p.empty() ? p : path + ": " + p;
-}
-
-std::string vectorProblem(const std::string& path, const glm::vec3& v, double lo, double hi)
-{
-  for (int i = 0; i < 3; ++i)
+  for (const SceneKey<Struct>& key : keys)
   {
-    const std::string p = problemAt(path + "[" + std::to_string(i) + "]", v[i], lo, hi);
-    if (!p.empty())
-    {
-      return p;
-    }
-  }
-  return "";
-}
-
-/// The first non-empty problem of @p problems, or "".
-std::string firstProblem(std::initializer_list<std::string> problems)
-{
-  for (const std::string& p : problems)
-  {
+    const std::string p = checked(key) ? keyValueProblem(key, object, path) : std::string();
     if (!p.empty())
     {
       return p;
@@ -54,19 +39,12 @@ std::string firstProblem(std::initializer_list<std::string> problems)
 /// never used for it).
 std::string lightProblem(const SceneLight& l, const std::string& path)
 {
-  const bool positional = l.type == LightType::Point || l.type == LightType::Spot;
-  const bool aimed = l.type == LightType::Directional || l.type == LightType::Spot;
-  const bool spot = l.type == LightType::Spot;
-  return firstProblem({ vectorProblem(path + ".ambient", l.ambient, 0.0, kMaxColourValue),
-    vectorProblem(path + ".diffuse", l.diffuse, 0.0, kMaxColourValue),
-    vectorProblem(path + ".specular", l.specular, 0.0, kMaxColourValue),
-    problemAt(path + ".intensity", l.intensity, 0.0, kMaxColourValue),
-    positional ? vectorProblem(path + ".position", l.position, -HUGE_VAL, HUGE_VAL) : "",
-    positional ? vectorProblem(path + ".attenuation", l.attenuation, 0.0, HUGE_VAL) : "",
-    aimed ? vectorProblem(path + ".direction", l.direction, -HUGE_VAL, HUGE_VAL) : "",
-    spot ? problemAt(path + ".cutoff", l.cutoffDegrees, 0.0, 90.0, true) : "",
-    spot ? problemAt(path + ".exponent", l.exponent, 0.0, kMaxSpotExponent) : "",
-    spot ? problemAt(path + ".edge", l.edgeDegrees, 0.0, l.cutoffDegrees) : "" });
+  const std::string typeProblem = lightTypeValueProblem(static_cast<int>(l.type));
+  if (!typeProblem.empty())
+  {
+    return path + ".type: " + typeProblem;
+  }
+  return firstProblem(lightKeys(), l, path, [&](const SceneKey<SceneLight>& key) { return lightTakesKey(l.type, key); });
 }
 } // namespace
 
@@ -90,6 +68,11 @@ std::string numberProblem(double x, double lo, double hi, bool openLo, bool open
 
 std::string sceneValueProblem(const Scene& scene)
 {
+  const std::string modelProblem = modelValueProblem(static_cast<int>(scene.model));
+  if (!modelProblem.empty())
+  {
+    return "shading.model: " + modelProblem;
+  }
   for (size_t i = 0; i < scene.lights.size(); ++i)
   {
     const SceneLight& l = scene.lights[i];
@@ -100,14 +83,16 @@ std::string sceneValueProblem(const Scene& scene)
       return p;
     }
   }
-  const SceneMaterial& m = scene.material;
-  return firstProblem({ vectorProblem("material.ambient", m.ambient, 0.0, kMaxColourValue),
-    vectorProblem("material.diffuse", m.diffuse, 0.0, kMaxColourValue),
-    vectorProblem("material.specular", m.specular, 0.0, kMaxColourValue),
-    vectorProblem("material.emission", m.emission, 0.0, kMaxColourValue),
-    problemAt("material.shininess", m.shininess, 0.0, kMaxShininess),
-    vectorProblem("camera.position", scene.camera.position, -HUGE_VAL, HUGE_VAL),
-    vectorProblem("camera.focalPoint", scene.camera.focalPoint, -HUGE_VAL, HUGE_VAL) });
+  const std::string material =
+    firstProblem(materialKeys(), scene.material, "material", [](const SceneKey<SceneMaterial>&) { return true; });
+  if (!material.empty())
+  {
+    return material;
+  }
+  // A camera from VTK or code has no azimuth or elevation to check; its
+  // position and focal point must be finite.
+  return firstProblem(cameraKeys(), scene.camera, "camera",
+    [](const SceneKey<SceneCamera>& key) { return key.kind == SceneKeyKind::Point; });
 }
 
 } // namespace shadelab

@@ -27,7 +27,8 @@ namespace shadelab
 {
 
 /// a(theta_i) for incidence @p thetaI (radians from the normal, 0 to just
-/// below pi/2) under @p model with @p material.
+/// below pi/2) under @p model (an SL_MODEL_* value, isLightingModel()) with
+/// @p material.
 double directionalAlbedo(int model, const glsl::slMaterial& material, double thetaI);
 
 } // namespace shadelab

@@ -24,6 +24,7 @@ namespace glsl
 {
 using namespace glm;
 #define SL_FUNC inline
+#include "slLightingTables.glsl"
 #include "slLighting.glsl"
 #include "slNormalMapping.glsl"
 #include "slFalseColor.glsl"

@@ -34,6 +34,7 @@ using bvec3 = simd::bvec3x8;
 // standard and GLM header is already included above, so nothing else sees it.
 #define float vfloat8
 #define SL_FUNC inline
+#include "slLightingTables.glsl"
 #include "slLighting.glsl"
 #undef SL_FUNC
 #undef float

@@ -48,6 +48,7 @@ inline double mix(double a, double b, bool select)
 // and GLM header is already included above, so nothing else sees it.
 #define float double
 #define SL_FUNC inline
+#include "slLightingTables.glsl"
 #include "slLighting.glsl"
 #include "slNormalMapping.glsl"
 #undef SL_FUNC

@@ -15,8 +15,13 @@
 namespace shadelab
 {
 /// The lighting functions as GLSL, prefixed with `#define SL_FUNC` so that the
-/// file's function markers vanish. Insert after the `#version` line.
+/// file's function markers vanish, then the generated constants
+/// (lightingTablesShaderSource()), then slLighting.glsl. Insert after the
+/// `#version` line.
 const std::string& lightingShaderSource();
+/// slLightingTables.glsl: the SL_MODEL_* and SL_LIGHT_* constants and
+/// slIsNormalizedModel(), generated at build time from LightingTables.h.
+const std::string& lightingTablesShaderSource();
 /// glsl/slNormalMapping.glsl; insert after lightingShaderSource().
 const std::string& normalMappingShaderSource();
 /// glsl/slFalseColor.glsl; insert after lightingShaderSource().

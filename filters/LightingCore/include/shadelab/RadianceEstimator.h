@@ -52,7 +52,7 @@ struct ReferenceSetup
   const EnvironmentMap* environment = nullptr; ///< null or empty: none
   float environmentScale = 1.0f;
   glsl::slMaterial material;
-  int model = glsl::SL_MODEL_LAMBERT_NORMALIZED;
+  int model = glsl::SL_MODEL_LAMBERT_NORMALIZED; ///< an SL_MODEL_* value (isLightingModel())
   SamplingStrategy strategy = SamplingStrategy::MIS;
   int samples = 64;
   std::uint64_t seed = 1;

@@ -12,6 +12,7 @@
  */
 
 #include "shadelab/LightingGLSL.h"
+#include "shadelab/LightingTables.h"
 
 #include <glm/glm.hpp>
 
@@ -21,15 +22,6 @@
 namespace shadelab
 {
 
-/// Values equal the SL_LIGHT_* constants of slLighting.glsl.
-enum class LightType
-{
-  Directional = glsl::SL_LIGHT_DIRECTIONAL,
-  Point = glsl::SL_LIGHT_POINT,
-  Spot = glsl::SL_LIGHT_SPOT,
-  Ambient = glsl::SL_LIGHT_AMBIENT
-};
-
 /// World lights are fixed in the scene. Camera lights use VTK's camera-light
 /// convention: coordinates relative to a camera at (0,0,1) looking at the
 /// origin with view up (0,1,0), in units of the camera's distance.
@@ -37,17 +29,6 @@ enum class LightSpace
 {
   World,
   Camera
-};
-
-/// Values equal the SL_MODEL_* constants of slLighting.glsl.
-enum class ShadingModel
-{
-  Lambert = glsl::SL_MODEL_LAMBERT,
-  Phong = glsl::SL_MODEL_PHONG,
-  BlinnPhong = glsl::SL_MODEL_BLINN_PHONG,
-  LambertNormalized = glsl::SL_MODEL_LAMBERT_NORMALIZED,
-  PhongNormalized = glsl::SL_MODEL_PHONG_NORMALIZED,
-  BlinnPhongNormalized = glsl::SL_MODEL_BLINN_PHONG_NORMALIZED
 };
 
 /// Where lighting is evaluated: per face, per vertex, or per pixel.
@@ -110,7 +91,9 @@ struct Scene
   std::string sourceFile; ///< where it was read from; empty when built in code
 };
 
-/// The spelling used in scene files ("blinn-phong-normalized", "gouraud", ...).
+/// The spelling used in scene files ("blinn-phong-normalized", "gouraud", ...);
+/// for a value that is not one of the enum's, "(unknown lighting model 7)"
+/// and the like (names of models and light types come from LightingTables.h).
 const char* modelName(ShadingModel model);
 const char* frequencyName(ShadingFrequency frequency);
 const char* lightTypeName(LightType type);
@@ -121,6 +104,12 @@ const std::vector<std::string>& modelNames();
 const std::vector<std::string>& frequencyNames();
 const std::vector<std::string>& lightTypeNames();
 const std::vector<std::string>& lightSpaceNames();
+
+/// "" if @p value is a row of the model (light-type) table of
+/// LightingTables.h; else the problem, for any way in that takes a number:
+/// "7 is not a lighting model (0 lambert, 1 phong, ...)".
+std::string modelValueProblem(int value);
+std::string lightTypeValueProblem(int value);
 
 /// Parse a spelling; returns false (leaving @p out alone) if it is not one.
 bool parseModelName(const std::string& name, ShadingModel& out);

@@ -29,6 +29,9 @@ constexpr double kMaxColourValue = 1e6;
 constexpr double kMaxShininess = 1e5;
 /// Largest spot-light exponent.
 constexpr double kMaxSpotExponent = 1e4;
+/// Smallest and largest image width or height, in pixels.
+constexpr int kMinImageSize = 16;
+constexpr int kMaxImageSize = 8192;
 
 /// "" if @p x can be a scene value in [@p lo, @p hi] (an end excluded when
 /// its flag is set; an infinite end is open): a finite number within
@@ -42,6 +45,8 @@ std::string numberProblem(double x, double lo, double hi, bool openLo = false, b
 /// would, with the light's name if it has one
 /// ("lights[1] (\"VTK light 0\").intensity: nan is not a finite number").
 /// Light cutoffs in (0, 90] and edges in [0, cutoff], as in scene files.
+/// A model or light type that is not a row of LightingTables.h is a problem
+/// too ("shading.model: 7 is not a lighting model (one of ...)").
 std::string sceneValueProblem(const Scene& scene);
 
 } // namespace shadelab

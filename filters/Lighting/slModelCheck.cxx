@@ -1,0 +1,16 @@
+#include "slModelCheck.h"
+
+#include "shadelab/Scene.h"
+
+#include <vtkObject.h>
+
+bool slCheckModel(vtkObject* self, int model, bool sceneOwnAllowed)
+{
+  const std::string problem = sceneOwnAllowed && model == -1 ? std::string() : shadelab::modelValueProblem(model);
+  if (problem.empty())
+  {
+    return true;
+  }
+  vtkErrorWithObjectMacro(self, "SetModel: " << problem << (sceneOwnAllowed ? ", or -1 for the scene's own" : ""));
+  return false;
+}

@@ -1,0 +1,89 @@
+#ifndef shadelab_SceneKeys_h
+#define shadelab_SceneKeys_h
+/**
+ * @file SceneKeys.h
+ * @brief The one declaration of the scene-file keys of lights, materials and
+ * cameras: each key's name, kind, range, default, which light types take it
+ * and which field it fills. The scene reader and writer (SceneFile.cxx), the
+ * range check of scenes built in code (SceneLimits.cxx) and the JSON schema
+ * test all go through these tables.
+ *
+ * Defaults are those of a default-constructed SceneMaterial and SceneCamera,
+ * and defaultLight() for lights.
+ */
+
+#include "shadelab/LightingTables.h"
+#include "shadelab/Scene.h"
+
+#include <string>
+#include <vector>
+
+namespace shadelab
+{
+
+/// What a key holds and how it is checked.
+enum class SceneKeyKind
+{
+  Number,       ///< one number in [lo, hi]
+  Colour,       ///< 3 numbers, each in [0, kMaxColourValue]
+  Point,        ///< 3 finite numbers
+  Direction,    ///< 3 finite numbers, not all zero
+  Coefficients, ///< 3 numbers, each >= 0 (a light's attenuation)
+  Text,         ///< a string (not empty when whenEmpty is set)
+  Space         ///< a LightSpace name
+};
+
+/// One key of the object @p Struct (SceneLight, SceneMaterial, SceneCamera).
+/// Exactly one of the field pointers is set, the one of its kind.
+template <typename Struct>
+struct SceneKey
+{
+  const char* name;
+  SceneKeyKind kind;
+  /// Lights: the parameter a light type must take to take this key
+  /// (LightingTables.h); 0: every light takes it.
+  unsigned lightParameter = 0;
+  double lo = 0.0, hi = 0.0; ///< range of a number (and of each component of a colour)
+  bool openLo = false, openHi = false;
+  /// When set, hi is this field's value (a spot's edge is at most its cutoff).
+  float Struct::*upTo = nullptr;
+  /// Text: the problem of an empty string, or null if it may be empty.
+  const char* whenEmpty = nullptr;
+  float Struct::*number = nullptr;
+  glm::vec3 Struct::*vector = nullptr;
+  std::string Struct::*text = nullptr;
+  LightSpace Struct::*space = nullptr;
+};
+
+/// The keys of a light besides "type" (read first, it decides the others).
+const std::vector<SceneKey<SceneLight>>& lightKeys();
+/// The keys of "material".
+const std::vector<SceneKey<SceneMaterial>>& materialKeys();
+/// The keys of "camera". Only position and focalPoint are checked in scenes
+/// built in code (sceneValueProblem); the others are the file format's.
+const std::vector<SceneKey<SceneCamera>>& cameraKeys();
+
+/// Whether a light of @p type takes @p key.
+bool lightTakesKey(LightType type, const SceneKey<SceneLight>& key);
+
+/// A light of @p type with every value at its default. A type that takes no
+/// diffuse colour lights k_a only: its ambient colour is white and its
+/// diffuse and specular colours are zero.
+SceneLight defaultLight(LightType type);
+
+/// "" if @p object's value for @p key is finite and in range; else
+/// "PATH.KEY[i]: problem" (numberProblem()'s wording). Text and space keys
+/// have no problem here; directions are checked for finiteness only.
+template <typename Struct>
+std::string keyValueProblem(const SceneKey<Struct>& key, const Struct& object, const std::string& path);
+
+/// The upper end of @p key's range for @p object (upTo's value if set).
+template <typename Struct>
+double keyUpperLimit(const SceneKey<Struct>& key, const Struct& object)
+{
+  return key.upTo ? static_cast<double>(object.*(key.upTo)) : key.hi;
+}
+
+} // namespace shadelab
+
+#endif

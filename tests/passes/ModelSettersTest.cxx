@@ -1,0 +1,76 @@
+// Every VTK setter that takes a lighting model as a number rejects one that
+// is not a row of LightingTables.h: one error naming the valid models, and
+// the model stays as it was (never clamped to another model).
+#include "shadelab/LightingTables.h"
+#include "slBRDFLobeSource.h"
+#include "slLightingPass.h"
+#include "slRadianceFilter.h"
+
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
+#include <vtkNew.h>
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace
+{
+/// The error messages @p object reports while @p model is set.
+template <typename T>
+std::vector<std::string> errorsSettingModel(T* object, int model)
+{
+  std::vector<std::string> errors;
+  vtkNew<vtkCallbackCommand> observer;
+  observer->SetClientData(&errors);
+  observer->SetCallback([](vtkObject*, unsigned long, void* list, void* message) {
+    static_cast<std::vector<std::string>*>(list)->push_back(static_cast<const char*>(message));
+  });
+  const unsigned long tag = object->AddObserver(vtkCommand::ErrorEvent, observer);
+  object->SetModel(model);
+  object->RemoveObserver(tag);
+  return errors;
+}
+
+template <typename T>
+void expectRejected(T* object, int model, int kept)
+{
+  const std::vector<std::string> errors = errorsSettingModel(object, model);
+  ASSERT_EQ(errors.size(), 1u) << object->GetClassName() << " accepted model " << model;
+  EXPECT_NE(errors[0].find("SetModel: " + std::to_string(model) + " is not a lighting model (0 lambert, 1 phong"),
+    std::string::npos)
+    << errors[0];
+  EXPECT_EQ(object->GetModel(), kept) << object->GetClassName();
+}
+
+template <typename T>
+void expectAccepted(T* object, int model)
+{
+  EXPECT_TRUE(errorsSettingModel(object, model).empty()) << object->GetClassName() << " model " << model;
+  EXPECT_EQ(object->GetModel(), model) << object->GetClassName();
+}
+} // namespace
+
+TEST(ModelSetters, AcceptEveryRowAndRejectEverythingElse)
+{
+  vtkNew<slLightingPass> pass;
+  vtkNew<slBRDFLobeSource> lobe;
+  vtkNew<slRadianceFilter> radiance;
+  for (const shadelab::LightingModelInfo& m : shadelab::kLightingModels)
+  {
+    expectAccepted(pass.Get(), static_cast<int>(m.model));
+    expectAccepted(lobe.Get(), static_cast<int>(m.model));
+    expectAccepted(radiance.Get(), static_cast<int>(m.model));
+  }
+  const int last = shadelab::kLightingModelCount - 1;
+  for (int bad : { shadelab::kLightingModelCount, 99, -2 })
+  {
+    expectRejected(pass.Get(), bad, last);
+    expectRejected(lobe.Get(), bad, last);
+    expectRejected(radiance.Get(), bad, last);
+  }
+  expectRejected(pass.Get(), -1, last);
+  expectRejected(lobe.Get(), -1, last);
+  expectAccepted(radiance.Get(), -1); // the lighting filters' "the scene's own"
+}
