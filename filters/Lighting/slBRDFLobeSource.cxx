@@ -1,5 +1,7 @@
 #include "slBRDFLobeSource.h"
 
+#include "shadelab/SceneLimits.h"
+
 #include "slLobeGeometry.h"
 #include "slModelCheck.h"
 
@@ -11,6 +13,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 
+#include <algorithm>
 #include <cmath>
 
 vtkStandardNewMacro(slBRDFLobeSource);
@@ -66,6 +69,16 @@ void slBRDFLobeSource::SetModel(int model)
   if (slCheckModel(this, model) && model != this->Model)
   {
     this->Model = model;
+    this->Modified();
+  }
+}
+
+void slBRDFLobeSource::SetShininess(double shininess)
+{
+  const double clamped = std::clamp(shininess, 0.0, shadelab::kMaxShininess);
+  if (this->Shininess != clamped)
+  {
+    this->Shininess = clamped;
     this->Modified();
   }
 }

@@ -41,8 +41,9 @@ public:
   ///@}
 
   ///@{
-  /// Shininess n (default 20).
-  vtkSetClampMacro(Shininess, double, 0.0, 1.0e4);
+  /// Shininess n (default 20), clamped to the scene format's range
+  /// [0, kMaxShininess] (shadelab/SceneLimits.h).
+  void SetShininess(double shininess);
   vtkGetMacro(Shininess, double);
   ///@}
 

@@ -106,6 +106,19 @@ TEST(BRDFLobeSource, PhongSlicePeaksAtTheMirrorDirection)
   EXPECT_NEAR(std::atan2(p[0], p[2]) * 180.0 / kPi, 60.0, 1.5) << "mirror side: +x";
 }
 
+TEST(BRDFLobeSource, ShininessTakesTheSceneFormatsRange)
+{
+  // A scene may hold shininess up to 1e5 (scene.schema.json); the lobe
+  // source must draw every such material, and nothing beyond.
+  vtkNew<slBRDFLobeSource> lobe;
+  lobe->SetShininess(5.0e4);
+  EXPECT_EQ(lobe->GetShininess(), 5.0e4);
+  lobe->SetShininess(2.0e5);
+  EXPECT_EQ(lobe->GetShininess(), 1.0e5);
+  lobe->SetShininess(-1.0);
+  EXPECT_EQ(lobe->GetShininess(), 0.0);
+}
+
 TEST(LobesOnMesh, EachLobeSitsInItsPointsNormalFrame)
 {
   SceneLight light = whiteLight(LightType::Point);
