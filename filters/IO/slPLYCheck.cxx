@@ -494,6 +494,37 @@ std::string slPLYProblem(const std::string& fileName)
   {
     return "the header needs an element \"vertex\" with properties x, y, z and an element \"face\"";
   }
+  // vtkPLYReader reads "vertex" and "face" in file order and skips nothing
+  // else: another element before the last of them would be read as its rows.
+  // With texture coordinates per face it looks up the face's points while it
+  // reads the faces, so the vertices must come first.
+  size_t lastRead = 0, vertexAt = 0, faceAt = 0;
+  bool faceTexcoords = false;
+  for (size_t i = 0; i < elements.size(); ++i)
+  {
+    if (elements[i].name == "vertex" || elements[i].name == "face")
+    {
+      lastRead = i;
+      (elements[i].name == "vertex" ? vertexAt : faceAt) = i;
+    }
+    for (const Property& p : elements[i].properties)
+    {
+      faceTexcoords = faceTexcoords || (elements[i].name == "face" && p.name == "texcoord");
+    }
+  }
+  for (size_t i = 0; i < lastRead; ++i)
+  {
+    if (elements[i].name != "vertex" && elements[i].name != "face")
+    {
+      return "element \"" + shadelab::printableText(elements[i].name) + "\" comes before \"" +
+        elements[lastRead].name + "\": VTK's PLY reader would read its rows as \"" + elements[lastRead].name + "\"";
+    }
+  }
+  if (faceTexcoords && faceAt < vertexAt)
+  {
+    return "element \"face\" has texture coordinates and comes before \"vertex\": VTK's PLY reader needs the "
+           "vertices first";
+  }
   unsigned long long vertices = 0;
   for (const Element& e : elements)
   {

@@ -60,6 +60,18 @@ CASES = [
     # PLY
     mesh_case("ply truncated ascii", "a.ply", ply_ascii(b"")[:-6], 'line 12: the file ends before element "vertex" row 3 of 3'),
     mesh_case("ply face list beyond its values", "a.ply", ply_ascii(b"5 0 1 2\n"), 'line 13 (element "face" row 1 of 1): fewer values than "vertex_indices" needs'),
+    # VTK reads only "vertex" and "face", in file order: an element it skips must not come first.
+    mesh_case("ply element read as faces", "a.ply",
+              b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+              b"element edge 1\nproperty list uchar int vertex_pair\nelement face 1\n"
+              b"property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n2 0 900\n3 0 1 2\n",
+              'element "edge" comes before "face": VTK\'s PLY reader would read its rows as "face"'),
+    mesh_case("ply face texcoords before vertex", "a.ply",
+              b"ply\nformat ascii 1.0\nelement face 1\nproperty list uchar int vertex_indices\n"
+              b"property list uchar float texcoord\nelement vertex 3\nproperty float x\nproperty float y\n"
+              b"property float z\nend_header\n3 0 1 2 6 0 0 1 0 0 1\n0 0 0\n1 0 0\n0 1 0\n",
+              'element "face" has texture coordinates and comes before "vertex": VTK\'s PLY reader needs the '
+              'vertices first'),
     mesh_case("ply face index beyond", "a.ply", ply_ascii(b"3 0 1 7\n"), 'line 13 (element "face" row 1 of 1): vertex index 7 is out of range [0, 3)'),
     mesh_case("ply negative face index", "a.ply", ply_ascii(b"3 0 -1 2\n"), 'line 13 (element "face" row 1 of 1): vertex index -1 is out of range [0, 3)'),
     mesh_case("ply missing face row", "a.ply", ply_ascii(b"3 0 1 2\n", faces=2), 'line 14: the file ends before element "face" row 2 of 2'),
