@@ -10,11 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cctype>
-#include <fstream>
-#include <regex>
-#include <sstream>
 
 using namespace shadelab;
 using namespace shadelab::test;
@@ -231,44 +227,5 @@ TEST(LightingTables, LightsWithoutDiffuseLightOnlyTheAmbientTerm)
       glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, 1.0f), glm::vec3(0.0f, 0.0f, 5.0f));
     const bool lit = terms.diffuse.x > 0.0f || terms.specular.x > 0.0f;
     EXPECT_EQ(lit, (t.parameters & kLightDiffuse) != 0) << t.name;
-  }
-}
-
-TEST(LightingTables, ParaViewMenusListTheModels)
-{
-  // "Blinn-Phong (normalized)" is "blinn-phong-normalized"; value -1 is the
-  // optional "From Scene".
-  for (const char* file : { "ShadeLabLighting.xml", "ShadeLabViews.xml" })
-  {
-    std::ifstream in(std::string(SHADELAB_PARAVIEW_XML_DIR) + "/" + file);
-    std::stringstream read;
-    read << in.rdbuf();
-    const std::string text = read.str();
-    ASSERT_FALSE(text.empty()) << file;
-    const std::regex property(R"(label="Lighting Model"[\s\S]*?</EnumerationDomain>)");
-    const std::regex entry(R"re(<Entry value="(-?\d+)" text="([^"]*)" />)re");
-    int menus = 0;
-    for (std::sregex_iterator p(text.begin(), text.end(), property), end; p != end; ++p, ++menus)
-    {
-      const std::string menu = p->str();
-      int next = 0;
-      for (std::sregex_iterator e(menu.begin(), menu.end(), entry); e != end; ++e)
-      {
-        const int value = std::stoi((*e)[1]);
-        if (value == -1)
-        {
-          continue;
-        }
-        std::string name = (*e)[2];
-        std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::tolower(c); });
-        name = std::regex_replace(name, std::regex(" \\(normalized\\)"), "-normalized");
-        EXPECT_EQ(value, next) << file;
-        ASSERT_TRUE(isLightingModel(value)) << file << ": entry " << value;
-        EXPECT_EQ(name, kLightingModels[value].name) << file;
-        ++next;
-      }
-      EXPECT_EQ(next, kLightingModelCount) << file << ": the menu does not list every model";
-    }
-    EXPECT_GT(menus, 0) << file;
   }
 }
