@@ -24,7 +24,9 @@ class GLXFaultTest(unittest.TestCase):
         self.out = os.path.join(self.work.name, "out.png")
         with open(self.out, "wb") as f:
             f.write(OLD)
-        env = dict(os.environ, LD_PRELOAD=SHIM, SHADELAB_GLX_FAIL=failing)
+        # After what is preloaded already: a sanitizer's runtime must come first.
+        preload = " ".join(p for p in (os.environ.get("LD_PRELOAD", ""), SHIM) if p)
+        env = dict(os.environ, LD_PRELOAD=preload, SHADELAB_GLX_FAIL=failing)
         return subprocess.run([SHADELAB, "render", SPOT, "--size", "64x64", "-o", self.out], env=env,
                               capture_output=True, text=True, timeout=120)
 
