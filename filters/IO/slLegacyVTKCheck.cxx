@@ -6,6 +6,14 @@
 
 #include "shadelab/PrintableText.h"
 
+#include <vtkInformationDoubleKey.h>
+#include <vtkInformationDoubleVectorKey.h>
+#include <vtkInformationIdTypeKey.h>
+#include <vtkInformationIntegerKey.h>
+#include <vtkInformationIntegerVectorKey.h>
+#include <vtkInformationKeyLookup.h>
+#include <vtkInformationUnsignedLongKey.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -26,6 +34,74 @@ struct Problem
 [[noreturn]] void fail(const std::string& text)
 {
   throw Problem{ text };
+}
+
+/// Whether every token of @p tokens is a number (an integer if @p integers).
+bool allNumbers(const std::vector<std::string>& tokens, size_t from, bool integers)
+{
+  for (size_t i = from; i < tokens.size(); ++i)
+  {
+    char* end = nullptr;
+    errno = 0;
+    if (integers)
+    {
+      std::strtoll(tokens[i].c_str(), &end, 10);
+    }
+    else
+    {
+      std::strtod(tokens[i].c_str(), &end);
+    }
+    if (end == tokens[i].c_str() || *end != '\0' || errno == ERANGE)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// The problem with the "DATA ..." line @p line of the information key
+/// NAME @p name LOCATION @p location, or "". vtkDataReader reads a numeric
+/// key's values with operator>>, and a failed read leaves its stream failing
+/// while it waits for the next non-empty line: it then loops for ever. So a
+/// numeric key known to this process (vtkInformationKeyLookup, as VTK looks
+/// it up) must have its DATA complete on its line: one number, or for a
+/// vector key its length and that many numbers.
+std::string metadataDataProblem(const std::string& name, const std::string& location, const std::string& line)
+{
+  vtkInformationKey* key = vtkInformationKeyLookup::Find(name, location);
+  const bool vector = vtkInformationDoubleVectorKey::SafeDownCast(key) ||
+    vtkInformationIntegerVectorKey::SafeDownCast(key);
+  const bool scalar = vtkInformationDoubleKey::SafeDownCast(key) || vtkInformationIntegerKey::SafeDownCast(key) ||
+    vtkInformationIdTypeKey::SafeDownCast(key) || vtkInformationUnsignedLongKey::SafeDownCast(key);
+  if (!vector && !scalar)
+  {
+    return "";
+  }
+  std::vector<std::string> tokens;
+  for (size_t at = 0; (at = line.find_first_not_of(" \t\r", at)) != std::string::npos;)
+  {
+    const size_t end = line.find_first_of(" \t\r", at);
+    tokens.push_back(line.substr(at, end == std::string::npos ? std::string::npos : end - at));
+    at = end;
+  }
+  const std::string what = "METADATA key " + shadelab::printableText(location) + "::" + shadelab::printableText(name);
+  const bool integers = vtkInformationIntegerVectorKey::SafeDownCast(key) || vtkInformationIntegerKey::SafeDownCast(key) ||
+    vtkInformationIdTypeKey::SafeDownCast(key) || vtkInformationUnsignedLongKey::SafeDownCast(key);
+  if (scalar)
+  {
+    return tokens.size() == 2 && allNumbers(tokens, 1, integers) ? "" : what + ": DATA must be one number";
+  }
+  if (tokens.size() < 2 || !allNumbers({ tokens[1] }, 0, true))
+  {
+    return what + ": DATA must give its length and its values";
+  }
+  const long long length = std::strtoll(tokens[1].c_str(), nullptr, 10);
+  if (length < 0 || static_cast<unsigned long long>(length) != tokens.size() - 2 || !allNumbers(tokens, 2, integers))
+  {
+    return what + ": DATA declares " + tokens[1] + " values and its line holds " + std::to_string(tokens.size() - 2) +
+      (allNumbers(tokens, 2, integers) ? "" : ", not all numbers");
+  }
+  return "";
 }
 
 /// Bytes per value of a legacy type name; 0 for "bit" (packed), -1 unknown.
@@ -159,10 +235,12 @@ public:
 
   /// Skips a METADATA block: lines up to and including the next blank one.
   /// An "INFORMATION n" line must be followed by n "NAME" and n "DATA" lines
-  /// (VTK reads that many, past the block's end).
+  /// (VTK reads that many, past the block's end), and the DATA of a numeric
+  /// key must hold what the key's type reads (metadataDataProblem()).
   void skipMetadata()
   {
     long long information = -1, names = 0, data = 0;
+    std::string keyName, keyLocation;
     for (;;)
     {
       const size_t newline = this->Bytes.find('\n', this->Position);
@@ -186,8 +264,25 @@ public:
       {
         information = std::strtoll(lineText.c_str() + 12, nullptr, 10);
       }
-      names += lineText.rfind("NAME ", 0) == 0;
-      data += lineText.rfind("DATA ", 0) == 0;
+      if (lineText.rfind("NAME ", 0) == 0)
+      {
+        ++names;
+        char name[256] = "", location[256] = "";
+        if (std::sscanf(lineText.c_str(), "NAME %255s LOCATION %255s", name, location) == 2)
+        {
+          keyName = name;
+          keyLocation = location;
+        }
+      }
+      if (lineText.rfind("DATA ", 0) == 0)
+      {
+        ++data;
+        const std::string problem = metadataDataProblem(keyName, keyLocation, lineText);
+        if (!problem.empty())
+        {
+          fail("line " + std::to_string(this->line()) + ": " + problem);
+        }
+      }
     }
   }
 
@@ -354,9 +449,16 @@ void walk(const std::string& bytes)
     const std::string keyword = upper(w.word("a keyword"));
     if (keyword == "DATASET")
     {
-      if (upper(w.word("the dataset type")) != "POLYDATA")
+      // vtkPolyDataReader compares the first 8 characters only.
+      const std::string type = upper(w.word("the dataset type"));
+      if (type.compare(0, 8, "POLYDATA") != 0)
       {
         return; // not polydata: vtkPolyDataReader reads nothing and says so
+      }
+      if (type != "POLYDATA")
+      {
+        fail("line " + std::to_string(w.line()) + ": dataset type \"" + shadelab::printableText(type) +
+          "\" is not POLYDATA, though VTK would read it as POLYDATA");
       }
     }
     else if (keyword == "FIELD")

@@ -141,6 +141,13 @@ CASES = [
     # legacy VTK
     mesh_case("vtk index beyond points", "a.vtk", legacy_vtk(b"POLYGONS 1 4\n3 0 1 7\n"), 'polygon 0 names point 7, but the mesh has 3 points (0 to 2)'),
     mesh_case("vtk negative index", "a.vtk", legacy_vtk(b"POLYGONS 1 4\n3 0 -2 1\n"), 'polygon 0 names point -2, but the mesh has 3 points (0 to 2)'),
+    # vtkDataReader loops for ever when a numeric METADATA key's values end early.
+    mesh_case("vtk metadata values end early", "a.vtk",
+              legacy_vtk(b"METADATA\nINFORMATION 1\nNAME L2_NORM_RANGE LOCATION vtkDataArray\nDATA 4 0.5 0.5\n\n"
+                         b"POLYGONS 1 4\n3 0 1 2\n"),
+              'line 10: METADATA key vtkDataArray::L2_NORM_RANGE: DATA declares 4 values and its line holds 2'),
+    mesh_case("vtk dataset type with a tail", "a.vtk", legacy_vtk(b"POLYGONS 1 4\n3 0 1 2\n", dataset=b"POLYDATAx"),
+              'line 4: dataset type "POLYDATAX" is not POLYDATA, though VTK would read it as POLYDATA'),
     mesh_case("vtk not polydata", "a.vtk", legacy_vtk(b"", dataset=b"UNSTRUCTURED_GRID"), 'Cannot read dataset type: unstructured_grid'),
     mesh_case("vtk truncated polygons", "a.vtk", legacy_vtk(b"POLYGONS 2 8\n3 0 1 2\n"), 'line 9: the file ends where value 5 of 8 of POLYGONS should be'),
     mesh_case("vtk garbage", "a.vtk", b"\x00\x01binary junk\xff", 'the file ends within its three header lines'),
