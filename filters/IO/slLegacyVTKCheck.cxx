@@ -251,6 +251,11 @@ public:
       const size_t next = this->Bytes.find('\n', newline + 1);
       const std::string lineText = this->Bytes.substr(newline + 1, (next == std::string::npos ? this->Bytes.size() : next) - newline - 1);
       this->Position = newline + 1;
+      // VTK reads this block as text lines; a NUL ends its C strings early.
+      if (lineText.find('\0') != std::string::npos)
+      {
+        fail("line " + std::to_string(this->line()) + ": a NUL byte within a METADATA block");
+      }
       if (lineText.find_first_not_of(" \t\r") == std::string::npos)
       {
         if (information >= 0 && (names != information || data != information))

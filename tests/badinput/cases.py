@@ -3,6 +3,8 @@
 Arguments and messages use paths relative to the case's folder, where the
 input files are written and every out.* argument already exists with other
 content. Each case expects exactly one line on stderr."""
+import struct
+
 from inputs import (QUAD_OBJ, TETRA_OFF, THREE_LIGHTS, exr, glb, gltf, legacy_vtk, light_types, lighting_models,
                     obj, ply_ascii, ply_binary, ply_header, png, stl_binary, vtp, vtp_appended_base64_header,
                     vtp_compressed_header)
@@ -146,6 +148,11 @@ CASES = [
               legacy_vtk(b"METADATA\nINFORMATION 1\nNAME L2_NORM_RANGE LOCATION vtkDataArray\nDATA 4 0.5 0.5\n\n"
                          b"POLYGONS 1 4\n3 0 1 2\n"),
               'line 10: METADATA key vtkDataArray::L2_NORM_RANGE: DATA declares 4 values and its line holds 2'),
+    mesh_case("vtk metadata with a nul byte", "a.vtk",
+              b"# vtk DataFile Version 3.0\nbad input\nBINARY\nDATASET POLYDATA\nPOINTS 3 float\n" + bytes(36) +
+              b"\nMETADATA\nINFORMATION 1\nNAME X LOCATION Y\nDATA 1\n\0\0\0\nPOLYGONS 1 4\n" +
+              struct.pack(">4i", 3, 0, 1, 2) + b"\n",
+              'line 11: a NUL byte within a METADATA block'),
     mesh_case("vtk dataset type with a tail", "a.vtk", legacy_vtk(b"POLYGONS 1 4\n3 0 1 2\n", dataset=b"POLYDATAx"),
               'line 4: dataset type "POLYDATAX" is not POLYDATA, though VTK would read it as POLYDATA'),
     mesh_case("vtk not polydata", "a.vtk", legacy_vtk(b"", dataset=b"UNSTRUCTURED_GRID"), 'Cannot read dataset type: unstructured_grid'),
