@@ -176,6 +176,7 @@ std::string slXMLCountsProblem(const std::string& fileName)
     const std::string tag = text.substr(at, close - at);
     const std::string format = attribute(tag, "format");
     std::string header;
+    bool located = false; // the array's data starts within the file
     if (format == "binary")
     {
       header = base64(text, close + 1, static_cast<size_t>(3 * wordSize));
@@ -183,15 +184,24 @@ std::string slXMLCountsProblem(const std::string& fileName)
     else if (format == "appended")
     {
       const unsigned long long offset = std::strtoull(attribute(tag, "offset").c_str(), nullptr, 10);
-      if (appendedStart != std::string::npos && offset <= bytes.size() - appendedStart)
+      if (appendedStart != std::string::npos && offset < bytes.size() - appendedStart)
       {
+        located = true;
         const size_t at = appendedStart + static_cast<size_t>(offset);
         header = appendedBase64 ? base64(bytes, at, static_cast<size_t>(3 * wordSize))
                                 : bytes.substr(at, static_cast<size_t>(3 * wordSize));
       }
     }
+    const bool base64Encoded = format == "binary" || (format == "appended" && appendedBase64);
     if (header.size() < static_cast<size_t>(3 * wordSize))
     {
+      if (base64Encoded && (located || !header.empty()))
+      {
+        // vtkBase64InputStream decodes what it is given, padding and bytes
+        // outside the alphabet included, and would take a header from them.
+        return "DataArray \"" + shadelab::printableText(attribute(tag, "Name")) +
+          "\": its compression header is not " + std::to_string(3 * wordSize) + " bytes of base64";
+      }
       continue; // VTK finds the data missing and says so
     }
     const unsigned long long blocks = word(header, 0, wordSize, little);

@@ -159,9 +159,10 @@ def vtp_compressed_header(blocks):
             b'</DataArray></Points>\n</Piece>\n</PolyData>\n</VTKFile>\n')
 
 
-def vtp_appended_base64_header(blocks):
-    """A compressed VTP with base64 appended data whose points header declares @blocks blocks."""
-    header = base64.b64encode(struct.pack("<III", blocks, 32768, 0))
+def vtp_appended_base64_header(blocks, header=None):
+    """A compressed VTP with base64 appended data whose points header declares
+    @blocks blocks, or is the base64 text @header."""
+    header = header if header is not None else base64.b64encode(struct.pack("<III", blocks, 32768, 0))
     return (b'<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1" byte_order="LittleEndian" '
             b'header_type="UInt32" compressor="vtkZLibDataCompressor">\n<PolyData>\n'
             b'<Piece NumberOfPoints="3" NumberOfVerts="0" NumberOfLines="0" NumberOfStrips="0" NumberOfPolys="0">\n'
