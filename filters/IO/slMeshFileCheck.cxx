@@ -79,6 +79,17 @@ std::string base64(const std::string& text, size_t begin, size_t bytes)
     const char* p = c ? std::strchr(alphabet, c) : nullptr;
     if (!p)
     {
+      if (c == '=' && count >= 2)
+      {
+        // Padding ends the unit: its last group holds one or two bytes.
+        bits <<= 6 * (4 - count);
+        out += static_cast<char>(bits >> 16 & 0xff);
+        if (count == 3)
+        {
+          out += static_cast<char>(bits >> 8 & 0xff);
+        }
+        break;
+      }
       if (c == '=' || c == '<')
       {
         break;
@@ -175,11 +186,14 @@ std::string slXMLCountsProblem(const std::string& fileName)
     }
     const std::string tag = text.substr(at, close - at);
     const std::string format = attribute(tag, "format");
-    std::string header;
+    // The first @p n bytes of the array's compression header ("" if its data
+    // does not start within the file).
     bool located = false; // the array's data starts within the file
+    size_t dataAt = 0;
     if (format == "binary")
     {
-      header = base64(text, close + 1, static_cast<size_t>(3 * wordSize));
+      located = true;
+      dataAt = close + 1;
     }
     else if (format == "appended")
     {
@@ -187,30 +201,65 @@ std::string slXMLCountsProblem(const std::string& fileName)
       if (appendedStart != std::string::npos && offset < bytes.size() - appendedStart)
       {
         located = true;
-        const size_t at = appendedStart + static_cast<size_t>(offset);
-        header = appendedBase64 ? base64(bytes, at, static_cast<size_t>(3 * wordSize))
-                                : bytes.substr(at, static_cast<size_t>(3 * wordSize));
+        dataAt = appendedStart + static_cast<size_t>(offset);
       }
     }
     const bool base64Encoded = format == "binary" || (format == "appended" && appendedBase64);
+    auto headerBytes = [&](size_t n) -> std::string {
+      if (!located)
+      {
+        return std::string();
+      }
+      return base64Encoded ? base64(format == "binary" ? text : bytes, dataAt, n) : bytes.substr(dataAt, n);
+    };
+    const std::string name = shadelab::printableText(attribute(tag, "Name"));
+    const std::string header = headerBytes(static_cast<size_t>(3 * wordSize));
     if (header.size() < static_cast<size_t>(3 * wordSize))
     {
       if (base64Encoded && (located || !header.empty()))
       {
         // vtkBase64InputStream decodes what it is given, padding and bytes
         // outside the alphabet included, and would take a header from them.
-        return "DataArray \"" + shadelab::printableText(attribute(tag, "Name")) +
-          "\": its compression header is not " + std::to_string(3 * wordSize) + " bytes of base64";
+        return "DataArray \"" + name + "\": its compression header is not " + std::to_string(3 * wordSize) +
+          " bytes of base64";
       }
       continue; // VTK finds the data missing and says so
     }
     const unsigned long long blocks = word(header, 0, wordSize, little);
     const unsigned long long blockSize = word(header, static_cast<size_t>(wordSize), wordSize, little);
+    const unsigned long long lastBlockSize = word(header, static_cast<size_t>(2 * wordSize), wordSize, little);
+    if (lastBlockSize > blockSize && blockSize <= limit)
+    {
+      // VTK allocates the last block's size as it is; no block is larger than the block size.
+      return "DataArray \"" + name + "\": its compression header's last block of " + std::to_string(lastBlockSize) +
+        " bytes is larger than its block size of " + std::to_string(blockSize);
+    }
     if (blocks > size / static_cast<unsigned long long>(wordSize) || blockSize > limit)
     {
-      return "DataArray \"" + shadelab::printableText(attribute(tag, "Name")) + "\": its compression header declares " + std::to_string(blocks) +
+      return "DataArray \"" + name + "\": its compression header declares " + std::to_string(blocks) +
         " blocks of " + std::to_string(blockSize) + " bytes, more than a file of " + std::to_string(size) +
         " bytes can hold";
+    }
+    // Then each block's compressed size, which VTK allocates to read it.
+    const size_t fullSize = static_cast<size_t>((3 + blocks) * static_cast<unsigned long long>(wordSize));
+    const std::string full = headerBytes(fullSize);
+    if (full.size() < fullSize)
+    {
+      if (base64Encoded)
+      {
+        return "DataArray \"" + name + "\": its compression header's " + std::to_string(blocks) +
+          " block sizes are not " + std::to_string(fullSize) + " bytes of base64";
+      }
+      continue; // VTK finds the header cut short and says so
+    }
+    for (unsigned long long b = 0; b < blocks; ++b)
+    {
+      const unsigned long long compressed = word(full, static_cast<size_t>((3 + b) * wordSize), wordSize, little);
+      if (compressed > size)
+      {
+        return "DataArray \"" + name + "\": its compression header gives block " + std::to_string(b) + " " +
+          std::to_string(compressed) + " compressed bytes, more than the file's " + std::to_string(size);
+      }
     }
   }
   return std::string();

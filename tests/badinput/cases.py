@@ -137,6 +137,12 @@ CASES = [
     mesh_case("vtp compressed header block count", "a.vtp", vtp_compressed_header(2000000000),
               'DataArray "Points": its compression header declares 2000000000 blocks of 32768 bytes, more than a file '
               'of 412 bytes can hold'),
+    mesh_case("vtp last block beyond the block size", "a.vtp", vtp_compressed_header(1, last=2147483744),
+              'DataArray "Points": its compression header\'s last block of 2147483744 bytes is larger than its '
+              'block size of 32768'),
+    mesh_case("vtp compressed block beyond the file", "a.vtp", vtp_compressed_header(1, sizes=(2000000000,)),
+              'DataArray "Points": its compression header gives block 0 2000000000 compressed bytes, more than the '
+              'file\'s %d' % len(vtp_compressed_header(1, sizes=(2000000000,)))),
     # vtkBase64InputStream decodes padding and bytes outside the alphabet into a header.
     mesh_case("vtp base64 header with padding inside", "a.vtp", vtp_appended_base64_header(0, b"AQAA=AAAAAAAAAAA"),
               'DataArray "Points": its compression header is not 12 bytes of base64'),

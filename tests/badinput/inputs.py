@@ -149,9 +149,10 @@ def exr(attribute_size=None, name=b"comments"):
     return head + name + b"\0string\0" + struct.pack("<i", attribute_size) + b"abc"
 
 
-def vtp_compressed_header(blocks):
-    """A zlib-compressed VTP whose points array's header declares @blocks blocks."""
-    header = base64.b64encode(struct.pack("<III", blocks, 32768, 0)).decode().encode()
+def vtp_compressed_header(blocks, last=0, sizes=()):
+    """A zlib-compressed VTP whose points array's header declares @blocks
+    blocks, the last one of @last bytes, and the compressed @sizes."""
+    header = base64.b64encode(struct.pack("<%dI" % (3 + len(sizes)), blocks, 32768, last, *sizes))
     return (b'<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1" byte_order="LittleEndian" '
             b'header_type="UInt32" compressor="vtkZLibDataCompressor">\n<PolyData>\n'
             b'<Piece NumberOfPoints="3" NumberOfVerts="0" NumberOfLines="0" NumberOfStrips="0" NumberOfPolys="0">\n'
