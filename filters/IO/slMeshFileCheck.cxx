@@ -2,6 +2,8 @@
 
 #include "shadelab/PrintableText.h"
 
+#include <vtkBase64InputStream.h>
+#include <vtkNew.h>
 #include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
@@ -9,6 +11,7 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 
 #include <sys/stat.h>
 
@@ -66,46 +69,24 @@ std::string attribute(const std::string& tag, const std::string& name)
   return end == std::string::npos ? std::string() : tag.substr(begin, end - begin);
 }
 
-/// Decodes base64 @p text from @p begin until @p bytes bytes are out (or it ends).
+/// @p bytes bytes decoded from the base64 text of @p text at @p begin, as
+/// vtkXMLDataParser decodes them (vtkBase64InputStream: four characters at a
+/// time, as they are, padding and bytes outside the alphabet included);
+/// fewer if the text ends first.
 std::string base64(const std::string& text, size_t begin, size_t bytes)
 {
-  std::string out;
-  unsigned int bits = 0;
-  int count = 0;
-  for (size_t i = begin; i < text.size() && out.size() < bytes; ++i)
+  if (begin >= text.size())
   {
-    const char c = text[i];
-    const char* const alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    const char* p = c ? std::strchr(alphabet, c) : nullptr;
-    if (!p)
-    {
-      if (c == '=' && count >= 2)
-      {
-        // Padding ends the unit: its last group holds one or two bytes.
-        bits <<= 6 * (4 - count);
-        out += static_cast<char>(bits >> 16 & 0xff);
-        if (count == 3)
-        {
-          out += static_cast<char>(bits >> 8 & 0xff);
-        }
-        break;
-      }
-      if (c == '=' || c == '<')
-      {
-        break;
-      }
-      continue; // whitespace
-    }
-    bits = bits << 6 | static_cast<unsigned int>(p - alphabet);
-    if (++count == 4)
-    {
-      out += static_cast<char>(bits >> 16 & 0xff);
-      out += static_cast<char>(bits >> 8 & 0xff);
-      out += static_cast<char>(bits & 0xff);
-      bits = 0;
-      count = 0;
-    }
+    return std::string();
   }
+  std::istringstream in(text.substr(begin, (bytes + 2) / 3 * 4));
+  vtkNew<vtkBase64InputStream> stream;
+  stream->SetStream(&in);
+  stream->StartReading();
+  std::string out(bytes, '\0');
+  const size_t read = stream->Read(&out[0], bytes);
+  stream->EndReading();
+  out.resize(read);
   return out;
 }
 
@@ -174,7 +155,13 @@ std::string slXMLCountsProblem(const std::string& fileName)
     const size_t close = bytes.find('>', appended);
     const size_t underscore = bytes.find('_', close == std::string::npos ? bytes.size() : close);
     const std::string tag = bytes.substr(appended, close == std::string::npos ? 0 : close - appended);
-    appendedStart = underscore == std::string::npos ? std::string::npos : underscore + 1;
+    if (close == std::string::npos || underscore == std::string::npos)
+    {
+      // VTK's writers put "_" before the data; without it, vtkXMLDataParser
+      // takes its data from wherever its search ends.
+      return "the AppendedData element has no \"_\" before its data";
+    }
+    appendedStart = underscore + 1;
     appendedBase64 = attribute(tag, "encoding") == "base64";
   }
   for (size_t at = text.find("<DataArray"); at != std::string::npos; at = text.find("<DataArray", at + 1))
@@ -192,8 +179,10 @@ std::string slXMLCountsProblem(const std::string& fileName)
     size_t dataAt = 0;
     if (format == "binary")
     {
+      // vtkXMLDataParser starts inline data at its first non-space character.
       located = true;
-      dataAt = close + 1;
+      dataAt = text.find_first_not_of(" \t\r\n", close + 1);
+      dataAt = dataAt == std::string::npos ? text.size() : dataAt;
     }
     else if (format == "appended")
     {

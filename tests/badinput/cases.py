@@ -144,8 +144,11 @@ CASES = [
               'DataArray "Points": its compression header gives block 0 2000000000 compressed bytes, more than the '
               'file\'s %d' % len(vtp_compressed_header(1, sizes=(2000000000,)))),
     # vtkBase64InputStream decodes padding and bytes outside the alphabet into a header.
+    mesh_case("vtp appended data without its marker", "a.vtp",
+              vtp_appended_base64_header(1).replace(b"\n_", b"\n"),
+              'the AppendedData element has no "_" before its data'),
     mesh_case("vtp base64 header with padding inside", "a.vtp", vtp_appended_base64_header(0, b"AQAA=AAAAAAAAAAA"),
-              'DataArray "Points": its compression header is not 12 bytes of base64'),
+              'DataArray "Points": its compression header\'s 1 block sizes are not 16 bytes of base64'),
     mesh_case("vtp appended base64 header block count", "a.vtp", vtp_appended_base64_header(1429727086),
               'DataArray "Points": its compression header declares 1429727086 blocks of 32768 bytes, more than a '
               'file of 465 bytes can hold'),
