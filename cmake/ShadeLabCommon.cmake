@@ -2,6 +2,19 @@
 # against: the main build (top-level CMakeLists.txt, Debian's VTK 9.1) and the
 # ParaView plugin (plugins/ParaView, ParaView 5.11's VTK 9.2).
 
+set(CMAKE_CXX_STANDARD 17)
+set(CMAKE_CXX_STANDARD_REQUIRED ON)
+set(CMAKE_CXX_EXTENSIONS OFF)
+if(NOT CMAKE_BUILD_TYPE AND NOT CMAKE_CONFIGURATION_TYPES)
+  set(CMAKE_BUILD_TYPE Release CACHE STRING "Build type" FORCE)
+endif()
+
+# Programs in bin/, libraries in lib/ of the build tree, as when installed.
+include(GNUInstallDirs)
+set(CMAKE_RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_BINDIR}")
+set(CMAKE_LIBRARY_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_LIBDIR}")
+set(CMAKE_ARCHIVE_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_LIBDIR}")
+
 # Warnings for ShadeLab's own code (generated wrapper code is left alone).
 set(SHADELAB_WARNING_FLAGS -Wall -Wextra)
 option(SHADELAB_WERROR "Treat warnings in ShadeLab's own code as errors" OFF)

@@ -9,13 +9,15 @@ the runs must have as many cells as the serial output, no ghost cells, and
 more than one non-empty piece (else nothing was partitioned). Prints one line
 per run; exits non-zero on the first failure.
 """
-import math
 import os
 import sys
 from xml.etree import ElementTree
 
 from paraview import servermanager  # noqa: F401  (ParaView's VTK)
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from vector_angles import angle_degrees  # noqa: E402
 
 NORMAL_DEGREES = 0.05
 TANGENT_DEGREES = 1e-3      # float rounding of a sum taken in another order
@@ -46,13 +48,6 @@ def table(meshes, name):
     return values
 
 
-def degrees(a, b):
-    dot = sum(x * y for x, y in zip(a[:3], b[:3]))
-    la = math.sqrt(sum(x * x for x in a[:3]))
-    lb = math.sqrt(sum(x * x for x in b[:3]))
-    return math.degrees(math.acos(max(-1.0, min(1.0, dot / (la * lb)))))
-
-
 def relative(a, b):
     return max(abs(x - y) / max(1.0, abs(y)) for x, y in zip(a, b))
 
@@ -68,7 +63,7 @@ def used_points(mesh):
 
 
 def compare(serial, run):
-    checks = (("Normals", degrees, NORMAL_DEGREES, False), ("Tangents", degrees, TANGENT_DEGREES, True),
+    checks = (("Normals", angle_degrees, NORMAL_DEGREES, False), ("Tangents", angle_degrees, TANGENT_DEGREES, True),
               ("Radiance", relative, RADIANCE_RELATIVE, False))
     tables = {name: table(serial, name) for name, _, _, _ in checks}
     serial_cells = sum(m.GetNumberOfPolys() for m in serial)

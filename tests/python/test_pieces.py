@@ -4,13 +4,16 @@ computes with the ghost cells as neighbours and removes them, so the values
 at every point, piece boundaries included, are the whole mesh's. The pieces
 come from vtkExtractPolyDataPiece, which makes ghost cells only on request:
 nothing downstream of the filter asks for any."""
-import math
 import os
+import sys
 import unittest
 
 import shadelab
 from vtkmodules.vtkCommonDataModel import vtkDataSetAttributes
 from vtkmodules.vtkFiltersParallel import vtkExtractPolyDataPiece
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from vector_angles import angle_degrees  # noqa: E402
 
 DATA = os.environ["SHADELAB_DATA_DIR"]
 
@@ -30,13 +33,6 @@ def by_position(mesh, name):
         key = tuple(round(c, 6) for c in mesh.GetPoint(i))
         table.setdefault(key, []).append(array.GetTuple(i))
     return table
-
-
-def angle_degrees(a, b):
-    dot = sum(x * y for x, y in zip(a[:3], b[:3]))
-    la = math.sqrt(sum(x * x for x in a[:3]))
-    lb = math.sqrt(sum(x * x for x in b[:3]))
-    return math.degrees(math.acos(max(-1.0, min(1.0, dot / (la * lb)))))
 
 
 def used_points(mesh):
