@@ -3,7 +3,8 @@
 // same 1024 x 1024 window, drawn side by side (frames interleaved) in one
 // run, a run being --frames frames of each. Prints every run's medians and
 // ratio, then the median and range over the runs; then what a shader variant
-// switch costs with Mesa's shader disk cache off (every new variant compiled).
+// switch costs on a small mesh with Mesa's shader disk cache off (every new
+// variant compiled).
 //
 //   bash scripts/with-display.sh build/bin/shadelab_bench_pass [--help] [--runs N] [--frames N] [--threads N]
 #include "BenchArguments.h"
@@ -215,20 +216,45 @@ int main(int argc, char** argv)
   std::printf("pass / VTK: median %.3f (runs %s); runs above 1.05: %lld, above 1.10: %lld of %d\n\n",
     medianOf(ratios), range(ratios, "%.3f-%.3f").c_str(), above105, above110, args.runs());
 
-  Setup& lit = setups[1];
-  std::printf("variant switch, first frame minus a frame of the new variant (Mesa shader cache off):\n");
-  std::printf("  model phong -> blinn-phong:  %6.1f ms\n",
-    switchCost(lit, [&] { pass->SetModel(shadelab::glsl::SL_MODEL_BLINN_PHONG); }));
-  std::printf("  frequency phong -> gouraud:  %6.1f ms\n",
-    switchCost(lit, [&] { pass->SetFrequency(slLightingPass::GOURAUD); }));
-  std::printf("  total -> diffuse component:  %6.1f ms\n",
-    switchCost(lit, [&] { pass->SetComponent(slLightingPass::DIFFUSE); }));
-  std::printf("  diffuse -> specular (uniform): %4.1f ms\n",
-    switchCost(lit, [&] { pass->SetComponent(slLightingPass::SPECULAR); }));
-  std::printf("  back to the first variant:   %6.1f ms (VTK's shader cache)\n", switchCost(lit, [&] {
-    pass->SetComponent(slLightingPass::TOTAL);
-    pass->SetFrequency(slLightingPass::PHONG);
-    pass->SetModel(shadelab::glsl::SL_MODEL_PHONG);
+  // Switches on a small mesh, so that a frame is a few milliseconds and the
+  // first frame of a new variant is mostly its compilation.
+  vtkNew<vtkSphereSource> small;
+  small->SetThetaResolution(100);
+  small->SetPhiResolution(102);
+  vtkNew<vtkPolyDataNormals> smallNormals;
+  smallNormals->SetInputConnection(small->GetOutputPort());
+  smallNormals->SplittingOff();
+  smallNormals->Update();
+  Setup lit;
+  vtkNew<slLightingPass> switching;
+  switching->SetScene(scene);
+  lit.build(smallNormals->GetOutput(), scene, 256);
+  lit.renderer->SetPass(switching);
+  lit.frame();
+  std::vector<double> models;
+  for (int model : { shadelab::glsl::SL_MODEL_BLINN_PHONG, shadelab::glsl::SL_MODEL_LAMBERT,
+         shadelab::glsl::SL_MODEL_PHONG_NORMALIZED, shadelab::glsl::SL_MODEL_BLINN_PHONG_NORMALIZED,
+         shadelab::glsl::SL_MODEL_LAMBERT_NORMALIZED })
+  {
+    models.push_back(switchCost(lit, [&] { switching->SetModel(model); }));
+  }
+  std::printf("variant switch: the first frame minus a frame of the new variant, %lld triangles at 256 x 256,\n"
+              "Mesa's shader cache off (every new variant compiled)\n",
+    static_cast<long long>(smallNormals->GetOutput()->GetNumberOfPolys()));
+  std::printf("  model, 5 new ones:             median %6.1f ms (%s)\n", medianOf(models),
+    range(models, "%.1f-%.1f").c_str());
+  std::printf("  frequency -> gouraud:                 %6.1f ms\n",
+    switchCost(lit, [&] { switching->SetFrequency(slLightingPass::GOURAUD); }));
+  std::printf("  frequency -> flat:                    %6.1f ms\n",
+    switchCost(lit, [&] { switching->SetFrequency(slLightingPass::FLAT); }));
+  std::printf("  total -> diffuse component view:      %6.1f ms\n",
+    switchCost(lit, [&] { switching->SetComponent(slLightingPass::DIFFUSE); }));
+  std::printf("  diffuse -> specular (a uniform):      %6.1f ms\n",
+    switchCost(lit, [&] { switching->SetComponent(slLightingPass::SPECULAR); }));
+  std::printf("  back to a variant built before:       %6.1f ms (VTK's shader cache)\n", switchCost(lit, [&] {
+    switching->SetComponent(slLightingPass::TOTAL);
+    switching->SetFrequency(slLightingPass::PHONG);
+    switching->SetModel(shadelab::glsl::SL_MODEL_BLINN_PHONG);
   }));
   return 0;
 }
