@@ -219,6 +219,20 @@ void slLightingPass::SetFrequency(int frequency)
   }
 }
 
+void slLightingPass::SetComponent(int component)
+{
+  component = component < TOTAL ? TOTAL : (component > COS_THETA ? COS_THETA : component);
+  if (component != this->Component)
+  {
+    if ((component == TOTAL) != (this->Component == TOTAL))
+    {
+      this->ShaderStageTime.Modified(); // a component view is compiled in or out
+    }
+    this->Component = component;
+    this->Modified();
+  }
+}
+
 bool slLightingPass::SetFrequencyName(const char* name)
 {
   shadelab::ShadingFrequency frequency;
@@ -426,6 +440,7 @@ bool slLightingPass::PostReplaceShaderValues(std::string& vertexShader, std::str
   variant.frequency = frequency;
   variant.lightTypes = this->Internal->LightTypes();
   variant.model = this->Model;
+  variant.componentView = this->Component != TOTAL;
   shaders::FragmentInputs inputs;
   inputs.scalarColors = contains(fragmentShader, "vertexColorVSOutput") || contains(fragmentShader, "textureC");
   inputs.texture = contains(fragmentShader, "actortexture") && contains(fragmentShader, "tcoordVCVSOutput");

@@ -34,12 +34,14 @@
  * - Component views show only the ambient, diffuse, specular or emission term
  *   (of all lights or of light k), or N.L of light k, in grey or false colour.
  *
- * The frequency, the model and the number and types of the lights are
- * compiled into the shaders (loops unroll, model and type tests fold away);
- * changing one of them builds a shader variant once, and VTK's shader cache
- * keeps earlier variants, so switching back is cheap. Everything else (light
- * positions, directions, colours, attenuation, spot angles, the material, the
- * component view) is a uniform: changing it costs no shader rebuild.
+ * The frequency, the model, the number and types of the lights and whether a
+ * component view is shown are compiled into the shaders (loops unroll, model
+ * and type tests fold away, the total carries no component-view code: Mesa's
+ * llvmpipe runs both sides of every branch); changing one of them builds a
+ * shader variant once, and VTK's shader cache keeps earlier variants, so
+ * switching back is cheap. Everything else (light positions, directions,
+ * colours, attenuation, spot angles, the material, which component and light
+ * a view shows, false colour) is a uniform: changing it costs no shader rebuild.
  *
  * @warning The mapper supplies normals only when the renderer has at least
  * one light switched on; the pass adds a zero-intensity headlight for the
@@ -129,8 +131,12 @@ public:
   ///@}
 
   ///@{
-  /// Component view: TOTAL (default), AMBIENT, DIFFUSE, SPECULAR, EMISSION or COS_THETA.
-  vtkSetClampMacro(Component, int, TOTAL, COS_THETA);
+  /// Component view: TOTAL (default), AMBIENT, DIFFUSE, SPECULAR, EMISSION or
+  /// COS_THETA (clamped to that range). Whether a component view is shown at
+  /// all is compiled into the shaders (TOTAL carries no code for one): going
+  /// from TOTAL to a component or back builds a variant once; switching
+  /// between components is a uniform change.
+  void SetComponent(int component);
   vtkGetMacro(Component, int);
   ///@}
 

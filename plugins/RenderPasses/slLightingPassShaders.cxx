@@ -35,6 +35,11 @@ std::string declarations(const Variant& variant)
     std::to_string(lightTypes.size()) + ";\n" + lightTypeFunction(lightTypes) +
     "uniform slMaterial slMat;\n"
     "const int slModel = " + std::to_string(variant.model) + "; // compiled in: model tests fold\n"
+    "// Compiled in: without a component view the shaders hold no code for one\n"
+    "// (llvmpipe runs both sides of every branch, taken or not).\n"
+    "const bool slComponentView = " +
+    std::string(variant.componentView ? "true" : "false") +
+    ";\n"
     "uniform int slComponent;       // 0 total, 1 ambient, 2 diffuse, 3 specular, 4 emission, 5 cos theta\n"
     "uniform int slComponentLight;  // -1: all lights, else only this one\n"
     "uniform int slFalseColor;\n"
@@ -57,7 +62,7 @@ std::string declarations(const Variant& variant)
     "  slTerms t = slZeroTerms();\n"
     "  for (int i = 0; i < slLightCount; ++i)\n"
     "  {\n"
-    "    if (slComponentLight < 0 || i == slComponentLight)\n"
+    "    if (!slComponentView || slComponentLight < 0 || i == slComponentLight)\n"
     "    {\n"
     "      slLight light = slLights[i];\n"
     "      light.type = slLightTypeOf(i);\n"
@@ -114,7 +119,7 @@ std::string vertexImplementation(Frequency frequency)
              "    slAmbientBackVS = slBack.ambient;\n"
              "    slDiffuseBackVS = slBack.diffuse;\n"
              "    slSpecularBackVS = slBack.specular;\n"
-             "    slCosThetaVS = slComponent == 5 ? slChosenCosTheta(slP, slN) : 0.0f;\n"
+             "    slCosThetaVS = slComponentView && slComponent == 5 ? slChosenCosTheta(slP, slN) : 0.0f;\n"
              "  }\n";
     case Phong:
       break;
@@ -165,6 +170,7 @@ std::string fragmentDeclarations(const Variant& variant, bool tangentNormalMap)
          "  vec3 diffuse = coloured.diffuse;\n"
          "  vec3 specular = coloured.specular;\n"
          "  vec3 emission = slMat.emission;\n"
+         "  if (!slComponentView) { return ambient + diffuse + specular + emission; }\n"
          "  if (slComponent == 1) { return slFalseColor == 1 ? slRamp(slLuminance(ambient)) : ambient; }\n"
          "  if (slComponent == 2) { return slFalseColor == 1 ? slRamp(slLuminance(diffuse)) : diffuse; }\n"
          "  if (slComponent == 3) { return slFalseColor == 1 ? slRamp(slLuminance(specular)) : specular; }\n"
@@ -200,7 +206,7 @@ std::string fragmentImplementation(Frequency frequency, const FragmentInputs& in
                "    if (dot(slN, slEye(vertexVC.xyz) - vertexVC.xyz) < 0.0f) { slN = -slN; }\n";
       }
       out += "    slT = slLightAll(slFlatVertexVC.xyz, slN);\n"
-             "    slCos = slComponent == 5 ? slChosenCosTheta(slFlatVertexVC.xyz, slN) : 0.0f;\n";
+             "    slCos = slComponentView && slComponent == 5 ? slChosenCosTheta(slFlatVertexVC.xyz, slN) : 0.0f;\n";
       break;
     case Gouraud:
       out += "    slT = slZeroTerms();\n"
@@ -218,7 +224,7 @@ std::string fragmentImplementation(Frequency frequency, const FragmentInputs& in
                " slNormalScale), normalVCVSOutput, slTangentVC.xyz, slTangentVC.w);\n";
       }
       out += "    slT = slLightAll(vertexVC.xyz, normalVCVSOutput);\n"
-             "    slCos = slComponent == 5 ? slChosenCosTheta(vertexVC.xyz, normalVCVSOutput) : 0.0f;\n";
+             "    slCos = slComponentView && slComponent == 5 ? slChosenCosTheta(vertexVC.xyz, normalVCVSOutput) : 0.0f;\n";
       break;
   }
   out += "    gl_FragData[0] = vec4(slCompose(slT, slCos, slBase), opacity);\n  }\n";

@@ -34,6 +34,7 @@ struct Variant
   Frequency frequency = Phong;
   std::vector<int> lightTypes; ///< SL_LIGHT_* of each light
   int model = 0;               ///< SL_MODEL_*
+  bool componentView = false;  ///< a component view, not the total
 };
 
 /// What the fragment shader has to work with, as found in VTK's shaders.

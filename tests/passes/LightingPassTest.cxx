@@ -492,6 +492,21 @@ TEST(Parameters, ChangesUpdateTheImageAndVariantsComeBack)
   stage.pass->SetFrequency(slLightingPass::PHONG);
   stage.pass->SetModel(shadelab::glsl::SL_MODEL_PHONG);
   EXPECT_EQ(stage.render().rgb, first.rgb);
+
+  // Whether a component view is shown is compiled in (the total carries no
+  // code for one); which component, a uniform.
+  const vtkMTimeType totalTime = stage.pass->GetShaderStageMTime();
+  stage.pass->SetComponent(slLightingPass::DIFFUSE);
+  const vtkMTimeType viewTime = stage.pass->GetShaderStageMTime();
+  EXPECT_GT(viewTime, totalTime) << "a component view is a shader variant";
+  const Image diffuse = stage.render();
+  EXPECT_NE(diffuse.rgb, first.rgb);
+  stage.pass->SetComponent(slLightingPass::SPECULAR);
+  EXPECT_EQ(stage.pass->GetShaderStageMTime(), viewTime) << "which component is a uniform";
+  EXPECT_NE(stage.render().rgb, diffuse.rgb);
+  stage.pass->SetComponent(slLightingPass::TOTAL);
+  EXPECT_GT(stage.pass->GetShaderStageMTime(), viewTime);
+  EXPECT_EQ(stage.render().rgb, first.rgb);
 }
 
 namespace
