@@ -34,17 +34,59 @@ vtkIdType slFirstNonFinitePoint(vtkPoints* points, double* largestSide)
     std::array<double, 6>{ { HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL } });
   vtkSMPTools::For(0, n, 65536, [&](vtkIdType b, vtkIdType e) {
     std::array<double, 6>& box = boxes.Local();
+    if (f)
+    {
+      // Float points: one branch-free pass over the range as a flat array,
+      // four points (12 values) at a time so that it vectorises; lane k
+      // holds component k % 3. Float min and max are exact, so the box is
+      // the same as in double.
+      float lo[12], hi[12];
+      std::fill(lo, lo + 12, HUGE_VALF);
+      std::fill(hi, hi + 12, -HUGE_VALF);
+      unsigned bad = 0;
+      const float* p = f + 3 * b;
+      const vtkIdType values = 3 * (e - b);
+      vtkIdType i = 0;
+      for (; i + 12 <= values; i += 12)
+      {
+        for (int k = 0; k < 12; ++k)
+        {
+          const float x = p[i + k];
+          bad |= !(x - x == 0.0f); // NaN and infinities only
+          lo[k] = x < lo[k] ? x : lo[k];
+          hi[k] = x > hi[k] ? x : hi[k];
+        }
+      }
+      for (; i < values; ++i)
+      {
+        const float x = p[i];
+        const int k = static_cast<int>(i % 3);
+        bad |= !(x - x == 0.0f);
+        lo[k] = x < lo[k] ? x : lo[k];
+        hi[k] = x > hi[k] ? x : hi[k];
+      }
+      if (bad)
+      {
+        for (vtkIdType v = b; v < e; ++v)
+        {
+          if (!std::isfinite(f[3 * v]) || !std::isfinite(f[3 * v + 1]) || !std::isfinite(f[3 * v + 2]))
+          {
+            slAtomicMinimum(first, v);
+            return;
+          }
+        }
+      }
+      for (int k = 0; k < 12; ++k)
+      {
+        box[2 * (k % 3)] = std::min(box[2 * (k % 3)], static_cast<double>(lo[k]));
+        box[2 * (k % 3) + 1] = std::max(box[2 * (k % 3) + 1], static_cast<double>(hi[k]));
+      }
+      return;
+    }
     for (vtkIdType i = b; i < e; ++i)
     {
       double p[3];
-      if (f)
-      {
-        p[0] = f[3 * i], p[1] = f[3 * i + 1], p[2] = f[3 * i + 2];
-      }
-      else
-      {
-        data->GetTuple(i, p);
-      }
+      data->GetTuple(i, p);
       if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
       {
         slAtomicMinimum(first, i);
