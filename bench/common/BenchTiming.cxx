@@ -46,16 +46,37 @@ double BenchTimes::medianCpu() const
   return medianOf(this->cpu);
 }
 
+namespace
+{
+void timeOnce(const std::function<void()>& job, BenchTimes& t)
+{
+  const double cpuStart = cpuSeconds();
+  const auto start = std::chrono::steady_clock::now();
+  job();
+  t.wall.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  t.cpu.push_back(cpuSeconds() - cpuStart);
+}
+} // namespace
+
 BenchTimes timeRuns(int runs, const std::function<void()>& job)
 {
   BenchTimes t;
   for (int r = 0; r < runs; ++r)
   {
-    const double cpuStart = cpuSeconds();
-    const auto start = std::chrono::steady_clock::now();
-    job();
-    t.wall.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-    t.cpu.push_back(cpuSeconds() - cpuStart);
+    timeOnce(job, t);
+  }
+  return t;
+}
+
+std::vector<BenchTimes> timeInterleaved(int runs, const std::vector<std::function<void()>>& jobs)
+{
+  std::vector<BenchTimes> t(jobs.size());
+  for (int r = 0; r < runs; ++r)
+  {
+    for (size_t j = 0; j < jobs.size(); ++j)
+    {
+      timeOnce(jobs[j], t[j]);
+    }
   }
   return t;
 }
