@@ -44,6 +44,24 @@ namespace slnormals
 
 namespace detail
 {
+/// A hint that @p address will be read (or written) soon; nothing else.
+inline void prefetch(const void* address, bool forWriting = false)
+{
+#if defined(__GNUC__)
+  if (forWriting)
+  {
+    __builtin_prefetch(address, 1);
+  }
+  else
+  {
+    __builtin_prefetch(address, 0);
+  }
+#else
+  (void)address;
+  (void)forWriting;
+#endif
+}
+
 /// A contribution a chunk keeps for the owner of its entry: the entry as an
 /// offset from the start of the owner's range (ranges hold fewer than 2^31
 /// entries).
@@ -65,6 +83,15 @@ struct ChunkSink
   int64_t chunks;
   std::vector<Kept<T>>* kept; ///< one list per owner
 
+  /// Asks for the cache line of @p id's sum ahead of add().
+  void prefetch(int64_t id) const
+  {
+    if (id >= this->lo && id < this->hi)
+    {
+      detail::prefetch(this->acc + 3 * id, true);
+    }
+  }
+
   void add(int64_t id, T x, T y, T z)
   {
     if (id >= this->lo && id < this->hi)
@@ -83,7 +110,7 @@ struct ChunkSink
 /// Hands the corner contributions of polygons [b, e) to @p sink at the
 /// corners' entries of @p accIds (same layout as the connectivity). Runs of
 /// consecutive triangles go through TriangleBlock; other polygons one by one.
-template <Weighting W, typename T, typename Id, typename AccId, typename Sink>
+template <Weighting W, bool Prefetch, typename T, typename Id, typename AccId, typename Sink>
 void scatter(const Polygons<Id>& polys, const AccId* accIds, const T* xyz, int64_t b, int64_t e, Sink& sink)
 {
   using V = glm::vec<3, T>;
@@ -93,12 +120,30 @@ void scatter(const Polygons<Id>& polys, const AccId* accIds, const T* xyz, int64
     block.scatter(accIds, sink);
     block.count = 0;
   };
+  // With Prefetch (a mesh without locality, where every point and sum is a
+  // cache miss), ask for the points of the triangle `ahead` positions on,
+  // and for this triangle's sums, which are written when the block is full.
+  // In an ordered mesh they are in cache already and asking costs time.
+  constexpr int64_t ahead = 16;
+  const int64_t lastCorner = e > b ? polys.end(e - 1) : 0;
   for (int64_t f = b; f < e; ++f)
   {
     const int64_t o = polys.begin(f);
     const int64_t n = polys.size(f);
     if (n == 3)
     {
+      const int64_t later = o + 3 * ahead;
+      if (Prefetch && later + 2 < lastCorner)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          prefetch(xyz + 3 * static_cast<int64_t>(polys.connectivity[later + k]));
+        }
+      }
+      for (int k = 0; Prefetch && k < 3; ++k)
+      {
+        sink.prefetch(static_cast<int64_t>(accIds[o + k]));
+      }
       if (!block.continues(o))
       {
         flush();
@@ -139,6 +184,7 @@ struct Partition
   int64_t chunks = 1;
   std::vector<int64_t> bounds; ///< chunks + 1: range k is [bounds[k], bounds[k + 1])
   double keptShare = 0;        ///< estimated share of corners outside their chunk's range
+  bool randomOrder = false;    ///< the sample found no locality: prefetch
 
   template <typename Id>
   int64_t firstPolygon(const Polygons<Id>& polys, int64_t k) const
@@ -153,18 +199,24 @@ Partition partition(const Polygons<Id>& polys, const AccId* accIds, int64_t numE
 {
   Partition p;
   const int64_t maxRange = int64_t(1) << 31;
-  if (threads <= 1 || polys.numPolygons < 65536)
-  {
-    p.chunks = 1 + numEntries / maxRange;
+  // Ranges of equal size, for @p chunks chunks.
+  const auto evenly = [&](int64_t chunks) {
+    p.chunks = std::max<int64_t>(chunks, 1 + numEntries / maxRange);
     p.bounds.resize(static_cast<size_t>(p.chunks + 1));
     for (int64_t k = 0; k <= p.chunks; ++k)
     {
       p.bounds[static_cast<size_t>(k)] = numEntries * k / p.chunks;
     }
+    p.keptShare = static_cast<double>(p.chunks - 1) / static_cast<double>(p.chunks);
+  };
+  if (polys.numPolygons < 65536)
+  {
+    evenly(1);
     return p;
   }
-  // In mesh order: range k starts at the smallest entry of chunk k's first polygon.
-  p.chunks = std::min<int64_t>(8 * static_cast<int64_t>(threads), 64);
+  // In mesh order: range k starts at the smallest entry of chunk k's first
+  // polygon (with at least 16 chunks, also on one thread, for the sample).
+  p.chunks = std::min<int64_t>(8 * std::max(threads, 2), 64);
   p.bounds.assign(static_cast<size_t>(p.chunks + 1), 0);
   p.bounds[static_cast<size_t>(p.chunks)] = numEntries;
   for (int64_t k = 1; k < p.chunks; ++k)
@@ -197,16 +249,12 @@ Partition partition(const Polygons<Id>& polys, const AccId* accIds, int64_t numE
     }
   }
   p.keptShare = sampled ? static_cast<double>(outside) / static_cast<double>(sampled) : 0.0;
-  if (p.keptShare > 0.25 || tooLarge)
+  p.randomOrder = p.keptShare > 0.25;
+  if (threads <= 1 || p.randomOrder || tooLarge)
   {
-    // Random order: one chunk per thread, the entries split evenly.
-    p.chunks = std::max<int64_t>(threads, 1 + numEntries / maxRange);
-    p.bounds.resize(static_cast<size_t>(p.chunks + 1));
-    for (int64_t k = 0; k <= p.chunks; ++k)
-    {
-      p.bounds[static_cast<size_t>(k)] = numEntries * k / p.chunks;
-    }
-    p.keptShare = static_cast<double>(p.chunks - 1) / static_cast<double>(p.chunks);
+    // One thread: one chunk. Random order: one chunk per thread, the
+    // entries split evenly.
+    evenly(std::max(threads, 1));
   }
   return p;
 }
@@ -270,16 +318,20 @@ void accumulateNormals(const Polygons<Id>& polys, const AccId* accIds, const T* 
       switch (weighting)
       {
         case Weighting::Uniform:
-          detail::scatter<Weighting::Uniform>(polys, accIds, xyz, b, e, sink);
+          part.randomOrder ? detail::scatter<Weighting::Uniform, true>(polys, accIds, xyz, b, e, sink)
+                           : detail::scatter<Weighting::Uniform, false>(polys, accIds, xyz, b, e, sink);
           break;
         case Weighting::Area:
-          detail::scatter<Weighting::Area>(polys, accIds, xyz, b, e, sink);
+          part.randomOrder ? detail::scatter<Weighting::Area, true>(polys, accIds, xyz, b, e, sink)
+                           : detail::scatter<Weighting::Area, false>(polys, accIds, xyz, b, e, sink);
           break;
         case Weighting::Angle:
-          detail::scatter<Weighting::Angle>(polys, accIds, xyz, b, e, sink);
+          part.randomOrder ? detail::scatter<Weighting::Angle, true>(polys, accIds, xyz, b, e, sink)
+                           : detail::scatter<Weighting::Angle, false>(polys, accIds, xyz, b, e, sink);
           break;
         case Weighting::Max:
-          detail::scatter<Weighting::Max>(polys, accIds, xyz, b, e, sink);
+          part.randomOrder ? detail::scatter<Weighting::Max, true>(polys, accIds, xyz, b, e, sink)
+                           : detail::scatter<Weighting::Max, false>(polys, accIds, xyz, b, e, sink);
           break;
       }
     }
@@ -291,8 +343,14 @@ void accumulateNormals(const Polygons<Id>& polys, const AccId* accIds, const T* 
       T* base = acc + 3 * lo;
       for (int64_t k = 0; k < chunks; ++k)
       {
-        for (const detail::Kept<T>& c : kept[static_cast<size_t>(k * chunks + j)])
+        const std::vector<detail::Kept<T>>& list = kept[static_cast<size_t>(k * chunks + j)];
+        for (size_t i = 0; i < list.size(); ++i)
         {
+          if (i + 16 < list.size())
+          {
+            detail::prefetch(base + 3 * static_cast<int64_t>(list[i + 16].offset), true);
+          }
+          const detail::Kept<T>& c = list[i];
           T* a = base + 3 * static_cast<int64_t>(c.offset);
           a[0] += c.x;
           a[1] += c.y;
