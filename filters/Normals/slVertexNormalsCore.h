@@ -22,8 +22,12 @@
  * write) a chunk then reaches outside its range only along its borders, and
  * there are several chunks per thread so that threads that start late still
  * get a share. When a sample of polygons says the order is random (more
- * than a quarter of the corners outside their chunk's range), there is one
- * chunk per thread and the ranges split the entries evenly.
+ * than a quarter of the corners outside their chunk's range), almost every
+ * corner would be kept for another range; then there is one chunk per
+ * thread, each summing into its own copy of all entries (chunk 0 into the
+ * accumulator), and a pass over the points adds the copies in chunk order
+ * and normalises. In random order every point and sum is a cache miss, so
+ * the scatter then also prefetches them ahead of use.
  */
 
 #include "slCornerWeights.h"
@@ -293,16 +297,32 @@ void accumulateNormals(const Polygons<Id>& polys, const AccId* accIds, const T* 
     scratch = uninitialisedArray<T>(static_cast<size_t>(3 * numPoints));
     acc = scratch.get();
   }
+  // Random order: half or more of a chunk's corners would be kept for other
+  // ranges, which cost more than they save; each chunk sums into its own
+  // copy of all entries instead (chunk 0 into acc), added in chunk order.
+  const bool copies = part.randomOrder && chunks > 1;
+  std::vector<std::unique_ptr<T[]>> copy(static_cast<size_t>(copies ? chunks : 0));
   // kept[k * chunks + j]: what chunk k keeps for range j.
   std::vector<std::vector<detail::Kept<T>>> kept(static_cast<size_t>(chunks * chunks));
   parallel.forRange(0, chunks, 1, [&](int64_t kb, int64_t ke) {
     for (int64_t k = kb; k < ke; ++k)
     {
-      const int64_t lo = bounds[k], hi = bounds[k + 1];
-      std::fill(acc + 3 * lo, acc + 3 * hi, T(0));
+      int64_t lo = bounds[k], hi = bounds[k + 1];
+      T* sums = acc;
+      if (copies)
+      {
+        lo = 0;
+        hi = numPoints;
+        if (k > 0)
+        {
+          copy[static_cast<size_t>(k)] = uninitialisedArray<T>(static_cast<size_t>(3 * numPoints));
+          sums = copy[static_cast<size_t>(k)].get();
+        }
+      }
+      std::fill(sums + 3 * lo, sums + 3 * hi, T(0));
       const int64_t b = part.firstPolygon(polys, k), e = part.firstPolygon(polys, k + 1);
       std::vector<detail::Kept<T>>* mine = kept.data() + k * chunks;
-      if (part.keptShare > 0 && chunks > 1)
+      if (!copies && part.keptShare > 0 && chunks > 1)
       {
         const double corners = static_cast<double>(e > b ? polys.begin(e) - polys.begin(b) : 0);
         const auto expected = static_cast<size_t>(corners * part.keptShare / static_cast<double>(chunks - 1) * 1.05);
@@ -314,7 +334,7 @@ void accumulateNormals(const Polygons<Id>& polys, const AccId* accIds, const T* 
           }
         }
       }
-      detail::ChunkSink<T> sink{ acc, lo, hi, bounds, chunks, mine };
+      detail::ChunkSink<T> sink{ sums, lo, hi, bounds, chunks, mine };
       switch (weighting)
       {
         case Weighting::Uniform:
@@ -336,6 +356,32 @@ void accumulateNormals(const Polygons<Id>& polys, const AccId* accIds, const T* 
       }
     }
   });
+  const auto normalise = [&](int64_t v) {
+    glm::vec<3, T> s(acc[3 * v], acc[3 * v + 1], acc[3 * v + 2]);
+    for (int64_t k = 1; copies && k < chunks; ++k)
+    {
+      const T* c = copy[static_cast<size_t>(k)].get() + 3 * v;
+      s += glm::vec<3, T>(c[0], c[1], c[2]);
+    }
+    const T len = glm::length(s);
+    if (len > T(0))
+    {
+      s /= len;
+    }
+    out[3 * v] = static_cast<float>(s.x);
+    out[3 * v + 1] = static_cast<float>(s.y);
+    out[3 * v + 2] = static_cast<float>(s.z);
+  };
+  if (copies)
+  {
+    parallel.forRange(0, numPoints, 16384, [&](int64_t b, int64_t e) {
+      for (int64_t v = b; v < e; ++v)
+      {
+        normalise(v);
+      }
+    });
+    return;
+  }
   parallel.forRange(0, chunks, 1, [&](int64_t jb, int64_t je) {
     for (int64_t j = jb; j < je; ++j)
     {
@@ -360,15 +406,7 @@ void accumulateNormals(const Polygons<Id>& polys, const AccId* accIds, const T* 
       }
       for (int64_t v = lo; v < hi; ++v)
       {
-        glm::vec<3, T> s(acc[3 * v], acc[3 * v + 1], acc[3 * v + 2]);
-        const T len = glm::length(s);
-        if (len > T(0))
-        {
-          s /= len;
-        }
-        out[3 * v] = static_cast<float>(s.x);
-        out[3 * v + 1] = static_cast<float>(s.y);
-        out[3 * v + 2] = static_cast<float>(s.z);
+        normalise(v);
       }
     }
   });
