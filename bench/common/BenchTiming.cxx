@@ -73,8 +73,12 @@ std::vector<BenchTimes> timeInterleaved(int runs, const std::vector<std::functio
   std::vector<BenchTimes> t(jobs.size());
   for (int r = 0; r < runs; ++r)
   {
-    for (size_t j = 0; j < jobs.size(); ++j)
+    // Round r starts with job r: each job follows each other job as often
+    // (a job right after one that churned memory or left the thread pool
+    // idle for long runs slower).
+    for (size_t i = 0; i < jobs.size(); ++i)
     {
+      const size_t j = (i + static_cast<size_t>(r)) % jobs.size();
       timeOnce(jobs[j], t[j]);
     }
   }
