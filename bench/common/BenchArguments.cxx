@@ -38,7 +38,13 @@ void BenchArguments::integer(
       *value = v;
       return "";
     },
-    true });
+    true, "N" });
+}
+
+void BenchArguments::text(const std::string& name, const std::string& metavar, const std::string& help,
+  std::function<std::string(const std::string&)> set)
+{
+  this->Options.push_back({ name, help, [set](const char* value) { return set(value); }, true, metavar });
 }
 
 void BenchArguments::flag(const std::string& name, const std::string& help, bool* value)
@@ -48,7 +54,7 @@ void BenchArguments::flag(const std::string& name, const std::string& help, bool
       *value = true;
       return "";
     },
-    false });
+    false, "" });
 }
 
 void BenchArguments::usage() const
@@ -57,7 +63,7 @@ void BenchArguments::usage() const
     this->Description.c_str(), "--help", "this text");
   for (const Option& o : this->Options)
   {
-    const std::string spelled = "--" + o.name + (o.takesValue ? " N" : "");
+    const std::string spelled = "--" + o.name + (o.takesValue ? " " + o.metavar : "");
     std::printf("  %-22s %s\n", spelled.c_str(), o.help.c_str());
   }
 }

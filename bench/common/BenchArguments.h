@@ -24,6 +24,10 @@ public:
   /// An option taking a whole number in [minimum, maximum].
   void integer(const std::string& name, const std::string& help, long long* value, long long minimum,
     long long maximum);
+  /// An option taking a value spelled @p metavar in the help, read by
+  /// @p set, which returns "" or the problem with it.
+  void text(const std::string& name, const std::string& metavar, const std::string& help,
+    std::function<std::string(const std::string&)> set);
   /// An option without a value that sets @p value to true.
   void flag(const std::string& name, const std::string& help, bool* value);
 
@@ -41,6 +45,7 @@ private:
     std::string name, help;
     std::function<std::string(const char*)> set; ///< returns a problem, or "" (nullptr: a flag)
     bool takesValue;
+    std::string metavar; ///< the value's name in the help
   };
   void usage() const;
 

@@ -24,6 +24,13 @@ struct BenchTimes
 /// Runs @p job @p runs times and times each run.
 BenchTimes timeRuns(int runs, const std::function<void()>& job);
 
+/// Runs every job of @p jobs once per round, @p runs rounds, and times each
+/// run: jobs compared within a round see the same machine (a shared or
+/// drifting machine changes speed between rounds), so ratios can be taken
+/// round by round. Round r starts with job r (mod the number of jobs), so
+/// that no job always follows the same one. Returns one BenchTimes per job.
+std::vector<BenchTimes> timeInterleaved(int runs, const std::vector<std::function<void()>>& jobs);
+
 /// Median of @p values (the upper one of the middle two for an even count).
 double medianOf(std::vector<double> values);
 

@@ -9,6 +9,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
+#include <utility>
+#include <random>
 
 vtkSmartPointer<vtkPolyData> slBenchTorus(long long triangles)
 {
@@ -53,4 +56,50 @@ vtkSmartPointer<vtkPolyData> slBenchTorus(long long triangles)
   mesh->SetPoints(points);
   mesh->SetPolys(polys);
   return mesh;
+}
+
+vtkSmartPointer<vtkPolyData> slBenchShuffled(vtkPolyData* mesh, unsigned seed, std::vector<long long>* newId)
+{
+  std::mt19937_64 rng(seed);
+  const long long n = mesh->GetNumberOfPoints(), numTris = mesh->GetNumberOfPolys();
+  std::vector<long long> id(static_cast<size_t>(n));
+  std::iota(id.begin(), id.end(), 0LL);
+  std::shuffle(id.begin(), id.end(), rng);
+  auto* in = vtkFloatArray::SafeDownCast(mesh->GetPoints()->GetData());
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToFloat();
+  points->SetNumberOfPoints(n);
+  float* to = vtkFloatArray::SafeDownCast(points->GetData())->GetPointer(0);
+  for (long long v = 0; v < n; ++v)
+  {
+    std::copy_n(in->GetPointer(3 * v), 3, to + 3 * id[static_cast<size_t>(v)]);
+  }
+  std::vector<long long> order(static_cast<size_t>(numTris));
+  std::iota(order.begin(), order.end(), 0LL);
+  std::shuffle(order.begin(), order.end(), rng);
+  const vtkTypeInt64* from = mesh->GetPolys()->GetConnectivityArray64()->GetPointer(0);
+  vtkNew<vtkTypeInt64Array> offsets, conn;
+  offsets->SetNumberOfValues(numTris + 1);
+  conn->SetNumberOfValues(3 * numTris);
+  for (long long f = 0; f < numTris; ++f)
+  {
+    const long long t = order[static_cast<size_t>(f)];
+    const long long r = static_cast<long long>(rng() % 3);
+    for (long long k = 0; k < 3; ++k)
+    {
+      conn->SetValue(3 * f + k, id[static_cast<size_t>(from[3 * t + (k + r) % 3])]);
+    }
+    offsets->SetValue(f, 3 * f);
+  }
+  offsets->SetValue(numTris, 3 * numTris);
+  vtkNew<vtkCellArray> polys;
+  polys->SetData(offsets, conn);
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->SetPoints(points);
+  out->SetPolys(polys);
+  if (newId)
+  {
+    *newId = std::move(id);
+  }
+  return out;
 }

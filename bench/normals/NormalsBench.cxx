@@ -1,6 +1,8 @@
-// shadelab_bench_normals [--help] [--runs N] [--threads N] [--triangles N]
-// Medians of slPolyDataNormals and its peers on one generated mesh, side by
-// side in one run, with their ranges, ratios and peak memory above the input.
+// shadelab_bench_normals [--help] [--runs N] [--threads N] [--sizes LIST] [--order ordered|shuffled|both]
+// slPolyDataNormals and its peers side by side in one run, on generated tori
+// of several sizes, each in mesh order and shuffled: medians and ranges,
+// ns per triangle, ratios taken round by round, the memory-bandwidth floor,
+// the speed-up from one thread to all, and peak memory above the input.
 #include "BenchArguments.h"
 #include "BenchMachine.h"
 #include "BenchMemory.h"
@@ -10,8 +12,8 @@
 
 #include "slPolyDataNormals.h"
 
+#include <vtkCellArray.h>
 #include <vtkNew.h>
-#include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataNormals.h>
@@ -20,49 +22,127 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
+#include <sstream>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace
 {
-struct Row
+/// Median, smallest and largest of per-round values, and how many reach a goal.
+struct Spread
 {
-  std::string name;
-  BenchTimes times;
+  double median = 0, low = 0, high = 0;
+  int reaching = 0, of = 0;
 };
-} // namespace
 
-int main(int argc, char** argv)
+/// a[r] / b[r] for every round r, summarised; @p goal counts the rounds at or above it.
+Spread ratios(const BenchTimes& a, const BenchTimes& b, double goal)
 {
-  BenchArguments args("shadelab_bench_normals",
-    "slPolyDataNormals against vtkTriangleMeshPointNormals, vtkPolyDataNormals and OpenMesh on one torus", 7);
-  long long triangles = 2000000;
-  args.integer("triangles", "about N triangles in the generated torus (default 2000000)", &triangles, 100,
-    1000000000);
-  if (!args.parse(argc, argv))
+  std::vector<double> r;
+  for (size_t i = 0; i < a.wall.size() && i < b.wall.size(); ++i)
   {
-    return args.exitCode();
+    r.push_back(a.wall[i] / b.wall[i]);
   }
-  const int runs = args.runs();
-  BenchMachine::measure().print();
-  vtkSmartPointer<vtkPolyData> mesh = slBenchTorus(triangles);
+  Spread s;
+  if (r.empty())
+  {
+    return s;
+  }
+  s.median = medianOf(r);
+  s.low = *std::min_element(r.begin(), r.end());
+  s.high = *std::max_element(r.begin(), r.end());
+  s.of = static_cast<int>(r.size());
+  s.reaching = static_cast<int>(std::count_if(r.begin(), r.end(), [&](double x) { return x >= goal; }));
+  return s;
+}
+
+std::string format(const Spread& s)
+{
+  char text[64];
+  std::snprintf(text, sizeof(text), "%.2f (%.2f-%.2f)", s.median, s.low, s.high);
+  return text;
+}
+
+/// One mesh's results, kept for the summary at the end.
+struct Result
+{
+  std::string label;
+  double triangles = 0;
+  double nsPerTriangle = 0; ///< slPolyDataNormals angle, no split, all threads
+  Spread overTMPN, overPDN, splitOverPDN, speedUp;
+  double floorRatio = 0, splitFloorRatio = 0;
+};
+
+/// Runs @p job with vtkSMPTools limited to one thread, then gives it
+/// @p threads again. (VTK 9.1's vtkSMPTools::LocalScope leaves
+/// GetEstimatedNumberOfThreads() at the scope's value afterwards, and filters
+/// that size their work by it would then run on one thread.)
+std::function<void()> onOneThread(int threads, std::function<void()> job)
+{
+  return [threads, job]() {
+    vtkSMPTools::Initialize(1);
+    job();
+    vtkSMPTools::Initialize(threads);
+  };
+}
+
+/// Parses "0.1,0.5,2,8" (millions of triangles).
+std::string parseSizes(const std::string& text, std::vector<double>& sizes)
+{
+  sizes.clear();
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ',');)
+  {
+    char* end = nullptr;
+    const double v = std::strtod(item.c_str(), &end);
+    if (item.empty() || *end || !(v >= 0.0001 && v <= 500))
+    {
+      return "'" + item + "' is not a number of millions of triangles from 0.0001 to 500";
+    }
+    sizes.push_back(v);
+  }
+  return sizes.empty() ? "no size given" : "";
+}
+
+Result benchOne(vtkPolyData* mesh, const std::string& label, int runs, int threads, const BenchMachine& machine)
+{
   const double tris = static_cast<double>(mesh->GetNumberOfPolys());
-  std::printf("mesh: %lld points, %lld triangles, %.1f MiB; medians (and ranges) of %d runs\n\n",
-    static_cast<long long>(mesh->GetNumberOfPoints()), static_cast<long long>(mesh->GetNumberOfPolys()),
-    mesh->GetActualMemorySize() / 1024.0, runs);
+  const double points = static_cast<double>(mesh->GetNumberOfPoints());
+  vtkCellArray* cells = mesh->GetPolys();
+  const double idBytes = cells->IsStorage64Bit() ? 8 : 4;
+  const double inputBytes = idBytes * (cells->GetNumberOfConnectivityIds() + cells->GetNumberOfOffsets()) +
+    12.0 * points;
+  // The least a pass must move: read the polygons and points, write the
+  // normals (no split); with splitting also write the split points and
+  // 32-bit polygons (measured output size).
+  const double gbs = machine.bandwidthAllThreads;
+  const double floorPlain = (inputBytes + 12.0 * points) / (gbs * 1e9);
+
+  vtkNew<slPolyDataNormals> check;
+  check->SetInputData(mesh);
+  check->Update();
+  const double splitPoints = static_cast<double>(check->GetOutput()->GetNumberOfPoints());
+  const double floorSplit = (inputBytes + 24.0 * splitPoints +
+                              4.0 * (cells->GetNumberOfConnectivityIds() + cells->GetNumberOfOffsets())) /
+    (gbs * 1e9);
+
+  std::printf("== %s: %.0f points, %.0f triangles, %.1f MiB; medians (ranges) of %d rounds\n", label.c_str(),
+    points, tris, mesh->GetActualMemorySize() / 1024.0, runs);
+  std::printf("   floor (bytes a pass must move / %.1f GB/s): %.2f ms no split, %.2f ms split\n", gbs,
+    floorPlain * 1e3, floorSplit * 1e3);
 
   auto ours = [&](int weighting, bool split) {
-    vtkNew<slPolyDataNormals> f;
+    vtkSmartPointer<slPolyDataNormals> f = vtkSmartPointer<slPolyDataNormals>::New();
     f->SetInputData(mesh);
     f->SetWeighting(weighting);
     f->SetSplitting(split);
     f->SetConsistency(split);
-    return [f = vtkSmartPointer<slPolyDataNormals>(f.GetPointer())]() {
+    return std::function<void()>([f]() {
       f->Modified();
       f->Update();
-    };
+    });
   };
   vtkNew<vtkTriangleMeshPointNormals> tmpn;
   tmpn->SetInputData(mesh);
@@ -72,79 +152,149 @@ int main(int argc, char** argv)
   pdnPlain->ConsistencyOff();
   pdnDefault->SetInputData(mesh);
   slBenchOpenMesh om(mesh);
-
-  // 1. Vertex normals without splitting.
-  std::vector<Row> plain;
-  for (int w = 0; w < 4; ++w)
-  {
-    plain.push_back({ std::string("slPolyDataNormals ") + slPolyDataNormals::GetWeightingName(w),
-      timeRuns(runs, ours(w, false)) });
-  }
-  const Row tmpnRow{ "vtkTriangleMeshPointNormals", timeRuns(runs, [&] {
-                      tmpn->Modified();
-                      tmpn->Update();
-                    }) };
-  const Row pdnRow{ "vtkPolyDataNormals (split/cons off)", timeRuns(std::min(runs, 3), [&] {
-                     pdnPlain->Modified();
-                     pdnPlain->Update();
-                   }) };
-  const Row omRow{ "OpenMesh update_face+vertex_normals", timeRuns(runs, [&] { om.UpdateNormals(); }) };
-  const double tTMPN = tmpnRow.times.median(), tPDN = pdnRow.times.median(), tOM = omRow.times.median();
-  std::printf("vertex normals, no splitting, no consistency\n");
-  std::printf("%-36s %9s %15s %8s %10s %12s %12s %11s\n", "", "median ms", "range ms", "cpu ms", "M tris/s",
-    "x TriMeshPN", "x PolyDataN", "x OpenMesh");
-  auto print = [&](const Row& r) {
-    const double s = r.times.median();
-    char range[32];
-    std::snprintf(range, sizeof(range), "%.1f-%.1f", r.times.minimum() * 1e3, r.times.maximum() * 1e3);
-    std::printf("%-36s %9.1f %15s %8.1f %10.1f %12.2f %12.2f %11.2f\n", r.name.c_str(), s * 1e3, range,
-      r.times.medianCpu() * 1e3, tris / s / 1e6, tTMPN / s, tPDN / s, tOM / s);
+  auto update = [](vtkAlgorithm* a) {
+    return std::function<void()>([a]() {
+      a->Modified();
+      a->Update();
+    });
   };
-  for (const Row& r : plain)
+
+  // 1. Vertex normals without splitting, all jobs once per round.
+  const char* names[] = { "slPolyDataNormals angle (default)", "slPolyDataNormals angle, 1 thread",
+    "slPolyDataNormals area", "vtkTriangleMeshPointNormals", "vtkPolyDataNormals (split/cons off)",
+    "OpenMesh update_face+vertex_normals" };
+  const std::vector<BenchTimes> t = timeInterleaved(runs,
+    { ours(slPolyDataNormals::ANGLE, false), onOneThread(threads, ours(slPolyDataNormals::ANGLE, false)),
+      ours(slPolyDataNormals::AREA, false), update(tmpn), update(pdnPlain), [&] { om.UpdateNormals(); } });
+  std::printf("   vertex normals, no splitting      median ms        range ms   cpu ms  ns/tri  x floor  "
+              "x TriMeshPN          x PolyDataN\n");
+  for (size_t i = 0; i < t.size(); ++i)
   {
-    print(r);
-  }
-  print(tmpnRow);
-  print(pdnRow);
-  print(omRow);
-
-  // 2. Feature-angle splitting and consistency on.
-  const BenchTimes split = timeRuns(runs, ours(slPolyDataNormals::ANGLE, true));
-  const BenchTimes pdnSplit = timeRuns(std::min(runs, 3), [&] {
-    pdnDefault->Modified();
-    pdnDefault->Update();
-  });
-  std::printf("\nsplitting (30 degrees) and consistency on\n");
-  std::printf("%-36s %9s %15s %8s %10s %12s   output points\n", "", "median ms", "range ms", "cpu ms", "M tris/s",
-    "x PolyDataN");
-  vtkNew<slPolyDataNormals> check;
-  check->SetInputData(mesh);
-  check->Update();
-  auto printSplit = [&](const char* name, const BenchTimes& t, vtkIdType points) {
     char range[32];
-    std::snprintf(range, sizeof(range), "%.1f-%.1f", t.minimum() * 1e3, t.maximum() * 1e3);
-    std::printf("%-36s %9.1f %15s %8.1f %10.1f %12.2f   %lld\n", name, t.median() * 1e3, range, t.medianCpu() * 1e3,
-      tris / t.median() / 1e6, pdnSplit.median() / t.median(), static_cast<long long>(points));
-  };
-  printSplit("slPolyDataNormals angle (defaults)", split, check->GetOutput()->GetNumberOfPoints());
-  printSplit("vtkPolyDataNormals (defaults)", pdnSplit, pdnDefault->GetOutput()->GetNumberOfPoints());
+    std::snprintf(range, sizeof(range), "%.1f-%.1f", t[i].minimum() * 1e3, t[i].maximum() * 1e3);
+    std::printf("   %-35s %8.1f %15s %8.1f %7.1f %8.2f  %-20s %s\n", names[i], t[i].median() * 1e3, range,
+      t[i].medianCpu() * 1e3, t[i].median() / tris * 1e9, t[i].median() / floorPlain,
+      format(ratios(t[3], t[i], 1.5)).c_str(), format(ratios(t[4], t[i], 15)).c_str());
+  }
+  Result r;
+  r.label = label;
+  r.triangles = tris;
+  r.nsPerTriangle = t[0].median() / tris * 1e9;
+  r.overTMPN = ratios(t[3], t[0], 1.5);
+  r.overPDN = ratios(t[4], t[0], 15);
+  r.speedUp = ratios(t[1], t[0], 1.8);
+  r.floorRatio = t[0].median() / floorPlain;
+  std::printf("   speed-up of slPolyDataNormals angle from 1 to %d threads: %s\n", threads,
+    format(r.speedUp).c_str());
 
-  // 3. Peak memory above the input, each in a fresh child process.
+  // 2. Splitting (30 degrees) and consistency on.
+  const std::vector<BenchTimes> s =
+    timeInterleaved(runs, { ours(slPolyDataNormals::ANGLE, true), update(pdnDefault) });
+  r.splitOverPDN = ratios(s[1], s[0], 10);
+  r.splitFloorRatio = s[0].median() / floorSplit;
+  std::printf("   splitting 30 deg + consistency    median ms        range ms   cpu ms  ns/tri  x floor  "
+              "x PolyDataN defaults   output points\n");
+  const char* splitNames[] = { "slPolyDataNormals (defaults)", "vtkPolyDataNormals (defaults)" };
+  const double splitOut[] = { splitPoints, static_cast<double>(pdnDefault->GetOutput()->GetNumberOfPoints()) };
+  for (size_t i = 0; i < s.size(); ++i)
+  {
+    char range[32];
+    std::snprintf(range, sizeof(range), "%.1f-%.1f", s[i].minimum() * 1e3, s[i].maximum() * 1e3);
+    std::printf("   %-35s %8.1f %15s %8.1f %7.1f %8.2f  %-20s %.0f\n", splitNames[i], s[i].median() * 1e3, range,
+      s[i].medianCpu() * 1e3, s[i].median() / tris * 1e9, s[i].median() / floorSplit,
+      format(ratios(s[1], s[i], 10)).c_str(), splitOut[i]);
+  }
+
+  // 3. Peak memory above the input, each job once in a fresh child process.
   const double input = mesh->GetActualMemorySize() * 1024.0;
-  std::printf("\npeak resident memory above the input (input mesh: %.1f MiB)\n", input / 1048576.0);
-  auto memory = [&](const char* name, const std::function<void()>& job) {
-    const long long peak = slPeakMemoryAbove(job);
-    std::printf("%-36s %9.1f MiB  %5.2f x input\n", name, peak / 1048576.0, peak / input);
-  };
-  memory("slPolyDataNormals angle, no split", ours(slPolyDataNormals::ANGLE, false));
-  memory("slPolyDataNormals angle, split+cons", ours(slPolyDataNormals::ANGLE, true));
-  memory("vtkTriangleMeshPointNormals", [&] {
-    tmpn->Modified();
-    tmpn->Update();
-  });
-  memory("vtkPolyDataNormals (defaults)", [&] {
-    pdnDefault->Modified();
-    pdnDefault->Update();
-  });
+  std::printf("   peak memory above the input:");
+  const std::pair<const char*, std::function<void()>> jobs[] = { { "angle no split",
+                                                                    ours(slPolyDataNormals::ANGLE, false) },
+    { "split+cons", ours(slPolyDataNormals::ANGLE, true) }, { "vtkTriangleMeshPointNormals", update(tmpn) } };
+  for (const auto& j : jobs)
+  {
+    std::printf(" %s %.2fx;", j.first, static_cast<double>(slPeakMemoryAbove(j.second)) / input);
+  }
+  std::printf("\n\n");
+  return r;
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+  BenchArguments args("shadelab_bench_normals",
+    "slPolyDataNormals against vtkTriangleMeshPointNormals, vtkPolyDataNormals and OpenMesh on generated tori", 5);
+  std::vector<double> sizes = { 0.1, 0.5, 2, 8 };
+  args.text("sizes", "LIST", "millions of triangles, comma-separated (default 0.1,0.5,2,8)",
+    [&](const std::string& v) { return parseSizes(v, sizes); });
+  std::string order = "both";
+  args.text("order", "ORDER", "ordered, shuffled (points and triangles in random order) or both (default)",
+    [&](const std::string& v) {
+      order = v;
+      return v == "ordered" || v == "shuffled" || v == "both" ? "" : "'" + v + "' is not ordered, shuffled or both";
+    });
+  if (!args.parse(argc, argv))
+  {
+    return args.exitCode();
+  }
+  const BenchMachine machine = BenchMachine::measure();
+  machine.print();
+  const int threads = machine.threads;
+  std::vector<Result> results;
+  for (double millions : sizes)
+  {
+    vtkSmartPointer<vtkPolyData> torus = slBenchTorus(static_cast<long long>(millions * 1e6));
+    char size[32];
+    std::snprintf(size, sizeof(size), "%gM triangles", millions);
+    if (order != "shuffled")
+    {
+      results.push_back(benchOne(torus, std::string(size) + ", ordered", args.runs(), threads, machine));
+    }
+    if (order != "ordered")
+    {
+      vtkSmartPointer<vtkPolyData> mixed = slBenchShuffled(torus, 1);
+      torus = nullptr;
+      results.push_back(benchOne(mixed, std::string(size) + ", shuffled", args.runs(), threads, machine));
+    }
+  }
+
+  std::printf("summary (slPolyDataNormals angle; ratios: median (range) of per-round ratios, rounds at the goal)\n");
+  std::printf("%-26s %7s %8s %-26s %-26s %-26s %-26s %8s\n", "mesh", "ns/tri", "x floor", "x TriMeshPN (>=1.5)",
+    "x PolyDataN (>=15)", "split x PolyDataN (>=10)", "1->N threads (>=1.8)", "split x floor");
+  for (const Result& r : results)
+  {
+    auto cell = [](const Spread& s) {
+      return format(s) + " " + std::to_string(s.reaching) + "/" + std::to_string(s.of);
+    };
+    std::printf("%-26s %7.2f %8.2f %-26s %-26s %-26s %-26s %8.2f\n", r.label.c_str(), r.nsPerTriangle, r.floorRatio,
+      cell(r.overTMPN).c_str(), cell(r.overPDN).c_str(), cell(r.splitOverPDN).c_str(), cell(r.speedUp).c_str(),
+      r.splitFloorRatio);
+  }
+  // Cost per triangle of the largest mesh against the one just below (goal <= 1.2).
+  for (const char* kind : { "ordered", "shuffled" })
+  {
+    const Result *largest = nullptr, *below = nullptr;
+    for (const Result& r : results)
+    {
+      if (r.label.find(kind) == std::string::npos)
+      {
+        continue;
+      }
+      if (!largest || r.triangles > largest->triangles)
+      {
+        below = largest;
+        largest = &r;
+      }
+      else if (!below || r.triangles > below->triangles)
+      {
+        below = &r;
+      }
+    }
+    if (largest && below)
+    {
+      std::printf("ns/triangle %s, %s against %s: %.2f (goal <= 1.2)\n", kind, largest->label.c_str(),
+        below->label.c_str(), largest->nsPerTriangle / below->nsPerTriangle);
+    }
+  }
   return 0;
 }

@@ -27,12 +27,26 @@ std::string cellsProblem(const Id* offsets, vtkIdType numOffsets, const Id* ids,
   {
     return std::string(kind) + " cells: offsets do not span their " + std::to_string(numIds) + " point ids";
   }
-  for (vtkIdType c = 1; c < numOffsets; ++c)
-  {
-    if (offsets[c] < offsets[c - 1])
+  // The first decrease, found in parallel like the ids below.
+  std::atomic<vtkIdType> firstDecrease(numOffsets);
+  vtkSMPTools::For(1, numOffsets, 65536, [&](vtkIdType begin, vtkIdType end) {
+    bool bad = false;
+    for (vtkIdType c = begin; c < end; ++c)
     {
-      return std::string(kind) + " " + std::to_string(c - 1) + ": its offset decreases";
+      bad |= offsets[c] < offsets[c - 1];
     }
+    for (vtkIdType c = begin; bad && c < end; ++c)
+    {
+      if (offsets[c] < offsets[c - 1])
+      {
+        slAtomicMinimum(firstDecrease, c);
+        return;
+      }
+    }
+  });
+  if (firstDecrease.load() < numOffsets)
+  {
+    return std::string(kind) + " " + std::to_string(firstDecrease.load() - 1) + ": its offset decreases";
   }
   // The first id outside [0, numPoints), found in parallel: the common case
   // (none) is one branch-free pass.

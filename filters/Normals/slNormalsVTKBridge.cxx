@@ -11,6 +11,8 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 slnormals::Parallel slSMPParallel()
 {
@@ -34,17 +36,74 @@ vtkIdType slFirstNonFinitePoint(vtkPoints* points, double* largestSide)
     std::array<double, 6>{ { HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL } });
   vtkSMPTools::For(0, n, 65536, [&](vtkIdType b, vtkIdType e) {
     std::array<double, 6>& box = boxes.Local();
+    if (f)
+    {
+      // Float points: one branch-free pass over the range as a flat array,
+      // four points (12 values, three 4-lane vectors) at a time; lane l of
+      // vector k holds component (4 k + l) % 3. Float min and max are exact,
+      // so the box is the same as in double.
+      using F4 = float __attribute__((vector_size(16)));
+      using I4 = int32_t __attribute__((vector_size(16)));
+      F4 lo[3], hi[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        lo[k] = F4{ HUGE_VALF, HUGE_VALF, HUGE_VALF, HUGE_VALF };
+        hi[k] = -lo[k];
+      }
+      I4 notFinite = { 0, 0, 0, 0 };
+      const float* p = f + 3 * b;
+      const vtkIdType values = 3 * (e - b);
+      vtkIdType i = 0;
+      for (; i + 12 <= values; i += 12)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          F4 x;
+          std::memcpy(&x, p + i + 4 * k, sizeof(x));
+          notFinite |= (x - x) != 0.0f; // NaN and infinities only
+          lo[k] = x < lo[k] ? x : lo[k];
+          hi[k] = x > hi[k] ? x : hi[k];
+        }
+      }
+      float low[3] = { HUGE_VALF, HUGE_VALF, HUGE_VALF }, high[3] = { -HUGE_VALF, -HUGE_VALF, -HUGE_VALF };
+      for (int k = 0; k < 3; ++k)
+      {
+        for (int l = 0; l < 4; ++l)
+        {
+          low[(4 * k + l) % 3] = std::min(low[(4 * k + l) % 3], lo[k][l]);
+          high[(4 * k + l) % 3] = std::max(high[(4 * k + l) % 3], hi[k][l]);
+        }
+      }
+      bool bad = notFinite[0] | notFinite[1] | notFinite[2] | notFinite[3];
+      for (; i < values; ++i)
+      {
+        const float x = p[i];
+        bad = bad || !std::isfinite(x);
+        low[i % 3] = std::min(low[i % 3], x);
+        high[i % 3] = std::max(high[i % 3], x);
+      }
+      if (bad)
+      {
+        for (vtkIdType v = b; v < e; ++v)
+        {
+          if (!std::isfinite(f[3 * v]) || !std::isfinite(f[3 * v + 1]) || !std::isfinite(f[3 * v + 2]))
+          {
+            slAtomicMinimum(first, v);
+            return;
+          }
+        }
+      }
+      for (int c = 0; c < 3; ++c)
+      {
+        box[2 * c] = std::min(box[2 * c], static_cast<double>(low[c]));
+        box[2 * c + 1] = std::max(box[2 * c + 1], static_cast<double>(high[c]));
+      }
+      return;
+    }
     for (vtkIdType i = b; i < e; ++i)
     {
       double p[3];
-      if (f)
-      {
-        p[0] = f[3 * i], p[1] = f[3 * i + 1], p[2] = f[3 * i + 2];
-      }
-      else
-      {
-        data->GetTuple(i, p);
-      }
+      data->GetTuple(i, p);
       if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
       {
         slAtomicMinimum(first, i);

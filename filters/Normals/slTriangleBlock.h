@@ -131,21 +131,18 @@ struct TriangleBlock
     }
   }
 
-  /// Adds the corner contributions into @p acc (3 T per entry) at the
-  /// corners' entries of @p accIds (the connectivity's layout).
-  template <typename AccId>
-  void scatter(const AccId* accIds, T* acc) const
+  /// Hands every corner's contribution to @p sink: sink.add(entry, x, y, z)
+  /// with the corner's entry of @p accIds (the connectivity's layout).
+  template <typename AccId, typename Sink>
+  void scatter(const AccId* accIds, Sink& sink) const
   {
     const AccId* to = accIds + this->start;
     for (int i = 0; i < this->count; ++i, to += 3)
     {
       for (int k = 0; k < 3; ++k)
       {
-        T* a = acc + 3 * static_cast<int64_t>(to[k]);
         const T w = this->weight[k][i];
-        a[0] += this->nx[i] * w;
-        a[1] += this->ny[i] * w;
-        a[2] += this->nz[i] * w;
+        sink.add(static_cast<int64_t>(to[k]), this->nx[i] * w, this->ny[i] * w, this->nz[i] * w);
       }
     }
   }

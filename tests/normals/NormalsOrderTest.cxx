@@ -1,0 +1,209 @@
+// Vertex normals do not depend on the order of the points and polygons, nor
+// on how the work is cut into chunks: a mesh whose points and triangles are
+// shuffled (and each triangle's corners rotated) gets the ordered mesh's
+// normals, permuted, for every weighting, thread count and point type.
+#include "NormalsTestMeshes.h"
+
+#include "slPolyDataNormals.h"
+#include "slVertexNormalsCore.h"
+
+#include <vtkCellArray.h>
+#include <vtkDataArray.h>
+#include <vtkFloatArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <random>
+#include <vector>
+
+namespace
+{
+/// Points (xyz) and triangles (3 ids each) as plain arrays.
+template <typename T>
+struct Mesh
+{
+  std::vector<T> xyz;
+  std::vector<int64_t> offsets, connectivity;
+
+  slnormals::Polygons<int64_t> view()
+  {
+    slnormals::Polygons<int64_t> p;
+    p.offsets = this->offsets.data();
+    p.connectivity = this->connectivity.data();
+    p.numPolygons = static_cast<int64_t>(this->offsets.size()) - 1;
+    return p;
+  }
+  int64_t numPoints() const { return static_cast<int64_t>(this->xyz.size() / 3); }
+};
+
+template <typename T>
+Mesh<T> meshOf(vtkPolyData* poly)
+{
+  Mesh<T> m;
+  for (vtkIdType i = 0; i < poly->GetNumberOfPoints(); ++i)
+  {
+    const double* p = poly->GetPoint(i);
+    m.xyz.insert(m.xyz.end(), { static_cast<T>(p[0]), static_cast<T>(p[1]), static_cast<T>(p[2]) });
+  }
+  m.offsets.push_back(0);
+  vtkIdType n;
+  const vtkIdType* ids;
+  vtkCellArray* polys = poly->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
+  {
+    m.connectivity.insert(m.connectivity.end(), ids, ids + n);
+    m.offsets.push_back(static_cast<int64_t>(m.connectivity.size()));
+  }
+  return m;
+}
+
+/// @p m with its points renumbered by @p newId, its triangles in random
+/// order and each one's corners rotated by a random step (same orientation).
+template <typename T>
+Mesh<T> shuffled(const Mesh<T>& m, const std::vector<int64_t>& newId, std::mt19937& rng)
+{
+  Mesh<T> s;
+  s.xyz.resize(m.xyz.size());
+  for (int64_t v = 0; v < m.numPoints(); ++v)
+  {
+    std::copy_n(&m.xyz[static_cast<size_t>(3 * v)], 3, &s.xyz[static_cast<size_t>(3 * newId[static_cast<size_t>(v)])]);
+  }
+  std::vector<int64_t> order(m.offsets.size() - 1);
+  std::iota(order.begin(), order.end(), 0);
+  std::shuffle(order.begin(), order.end(), rng);
+  std::uniform_int_distribution<int> step(0, 2);
+  s.offsets.push_back(0);
+  for (int64_t f : order)
+  {
+    const int r = step(rng);
+    for (int k = 0; k < 3; ++k)
+    {
+      s.connectivity.push_back(newId[static_cast<size_t>(m.connectivity[static_cast<size_t>(3 * f + (k + r) % 3)])]);
+    }
+    s.offsets.push_back(static_cast<int64_t>(s.connectivity.size()));
+  }
+  return s;
+}
+
+/// A serial stand-in for a thread pool of @p threads threads that runs the
+/// sub-ranges last first, so that nothing may rely on the order chunks run in.
+slnormals::Parallel backwards(int threads)
+{
+  slnormals::Parallel p;
+  p.threads = threads;
+  p.forRange = [](int64_t begin, int64_t end, int64_t grain, const slnormals::Parallel::Body& body) {
+    const int64_t step = std::max<int64_t>(grain, 1);
+    for (int64_t b = begin + (end - begin - 1) / step * step; b >= begin; b -= step)
+    {
+      body(b, std::min(end, b + step));
+    }
+  };
+  return p;
+}
+
+template <typename T>
+void expectSameNormalsInAnyOrder(vtkPolyData* poly)
+{
+  Mesh<T> ordered = meshOf<T>(poly);
+  ASSERT_GT(ordered.offsets.size(), 65537u) << "too small for the chunked path";
+  std::mt19937 rng(7);
+  std::vector<int64_t> newId(static_cast<size_t>(ordered.numPoints()));
+  std::iota(newId.begin(), newId.end(), 0);
+  std::shuffle(newId.begin(), newId.end(), rng);
+  Mesh<T> mixed = shuffled(ordered, newId, rng);
+  const int64_t n = ordered.numPoints();
+  for (int w = 0; w < 4; ++w)
+  {
+    const auto weighting = static_cast<slnormals::Weighting>(w);
+    std::vector<float> reference(static_cast<size_t>(3 * n));
+    slnormals::computeVertexNormals(ordered.view(), ordered.xyz.data(), n, weighting, reference.data(), backwards(1));
+    for (int threads : { 1, 2, 3, 8 })
+    {
+      std::vector<float> a(static_cast<size_t>(3 * n), -9.f), b(static_cast<size_t>(3 * n), -9.f);
+      slnormals::computeVertexNormals(ordered.view(), ordered.xyz.data(), n, weighting, a.data(), backwards(threads));
+      slnormals::computeVertexNormals(mixed.view(), mixed.xyz.data(), n, weighting, b.data(), backwards(threads));
+      double worstOrdered = 0, worstShuffled = 0;
+      for (int64_t v = 0; v < n; ++v)
+      {
+        const int64_t s = newId[static_cast<size_t>(v)];
+        for (int c = 0; c < 3; ++c)
+        {
+          const float r = reference[static_cast<size_t>(3 * v + c)];
+          worstOrdered = std::max(worstOrdered, std::fabs(double(a[static_cast<size_t>(3 * v + c)]) - r));
+          worstShuffled = std::max(worstShuffled, std::fabs(double(b[static_cast<size_t>(3 * s + c)]) - r));
+        }
+      }
+      // Float rounding of sums taken in another order: a few units in the last place.
+      EXPECT_LT(worstOrdered, 2e-6) << "weighting " << w << ", " << threads << " threads";
+      EXPECT_LT(worstShuffled, 2e-6) << "weighting " << w << ", " << threads << " threads, shuffled";
+    }
+  }
+}
+} // namespace
+
+TEST(NormalsOrder, ShuffledTorusGetsTheOrderedNormalsFloat)
+{
+  // 300 x 150 grid: 90 000 triangles, above the size where the work is chunked.
+  expectSameNormalsInAnyOrder<float>(normalstest::irregularTorus(1.0, 0.35, 300, 150, 3));
+}
+
+TEST(NormalsOrder, ShuffledEllipsoidGetsTheOrderedNormalsDouble)
+{
+  // 81 920 triangles; double points take the scratch accumulator.
+  expectSameNormalsInAnyOrder<double>(normalstest::irregularEllipsoid({ 1.5, 1.0, 0.6 }, 5, 6));
+}
+
+TEST(NormalsOrder, FilterGivesShuffledMeshesThePermutedNormals)
+{
+  vtkSmartPointer<vtkPolyData> poly = normalstest::irregularTorus(1.0, 0.35, 300, 150, 11);
+  Mesh<float> ordered = meshOf<float>(poly);
+  std::mt19937 rng(13);
+  std::vector<int64_t> newId(static_cast<size_t>(ordered.numPoints()));
+  std::iota(newId.begin(), newId.end(), 0);
+  std::shuffle(newId.begin(), newId.end(), rng);
+  const Mesh<float> mixed = shuffled(ordered, newId, rng);
+  auto toPolyData = [](const Mesh<float>& m) {
+    vtkNew<vtkFloatArray> xyz;
+    xyz->SetNumberOfComponents(3);
+    xyz->SetNumberOfTuples(m.numPoints());
+    std::copy(m.xyz.begin(), m.xyz.end(), xyz->GetPointer(0));
+    vtkNew<vtkPoints> points;
+    points->SetData(xyz);
+    vtkNew<vtkCellArray> cells;
+    for (size_t f = 0; f + 1 < m.offsets.size(); ++f)
+    {
+      const vtkIdType ids[3] = { m.connectivity[3 * f], m.connectivity[3 * f + 1], m.connectivity[3 * f + 2] };
+      cells->InsertNextCell(3, ids);
+    }
+    auto out = vtkSmartPointer<vtkPolyData>::New();
+    out->SetPoints(points);
+    out->SetPolys(cells);
+    return out;
+  };
+  auto normalsOf = [](vtkPolyData* in) {
+    vtkNew<slPolyDataNormals> f;
+    f->SetInputData(in);
+    f->SplittingOff();
+    f->Update();
+    return vtkSmartPointer<vtkDataArray>(f->GetOutput()->GetPointData()->GetNormals());
+  };
+  vtkSmartPointer<vtkDataArray> a = normalsOf(toPolyData(ordered)), b = normalsOf(toPolyData(mixed));
+  ASSERT_TRUE(a && b);
+  double worst = 0;
+  for (int64_t v = 0; v < ordered.numPoints(); ++v)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      worst = std::max(worst, std::fabs(a->GetComponent(v, c) - b->GetComponent(newId[static_cast<size_t>(v)], c)));
+    }
+  }
+  EXPECT_LT(worst, 2e-6);
+}
