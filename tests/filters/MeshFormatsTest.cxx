@@ -24,6 +24,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <fstream>
 #include <iterator>
 #include <map>
@@ -138,6 +139,26 @@ void expectIdentical(vtkPolyData* ours, vtkPolyData* theirs, const std::string& 
   EXPECT_EQ(ours->GetNumberOfVerts() + ours->GetNumberOfLines() + ours->GetNumberOfStrips(), 0) << what;
 }
 
+/// A sphere with normals and texture coordinates @p uv(point id).
+vtkSmartPointer<vtkPolyData> texturedSphere(int resolution, std::array<double, 2> (*uv)(double))
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(resolution);
+  sphere->SetPhiResolution(resolution - 2);
+  sphere->Update();
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->DeepCopy(sphere->GetOutput());
+  vtkNew<vtkFloatArray> tcoords;
+  tcoords->SetName("TCoords");
+  tcoords->SetNumberOfComponents(2);
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    tcoords->InsertNextTuple(uv(static_cast<double>(i)).data());
+  }
+  mesh->GetPointData()->SetTCoords(tcoords);
+  return mesh;
+}
+
 /// OBJ files of every form slParseOBJ takes.
 const std::map<std::string, std::string>& objFiles()
 {
@@ -210,20 +231,8 @@ TEST(MeshFormats, OBJOutsideTheCommonFormGoesToVTK)
 TEST(MeshFormats, PLYAsVTKReadsIt)
 {
   const TestFolder folder;
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetThetaResolution(9);
-  sphere->SetPhiResolution(7);
-  sphere->Update();
-  vtkNew<vtkPolyData> mesh;
-  mesh->DeepCopy(sphere->GetOutput());
-  vtkNew<vtkFloatArray> uv;
-  uv->SetName("TCoords");
-  uv->SetNumberOfComponents(2);
-  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
-  {
-    uv->InsertNextTuple2(0.1 * static_cast<double>(i), 1.0 / static_cast<double>(i + 1));
-  }
-  mesh->GetPointData()->SetTCoords(uv);
+  vtkSmartPointer<vtkPolyData> mesh =
+    texturedSphere(9, [](double i) { return std::array<double, 2>{ 0.1 * i, 1.0 / (i + 1) }; });
   // As VTK writes it (points and texture coordinates), and as ShadeLab does
   // (with normals).
   vtkNew<vtkPLYWriter> writer;
@@ -250,20 +259,9 @@ TEST(MeshFormats, PLYAsVTKReadsIt)
 TEST(MeshFormats, WrittenOBJAndPLYReadBackBitForBit)
 {
   const TestFolder folder;
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetThetaResolution(11);
-  sphere->SetPhiResolution(9);
-  sphere->Update();
-  vtkNew<vtkPolyData> mesh;
-  mesh->DeepCopy(sphere->GetOutput());
-  vtkNew<vtkFloatArray> uv;
-  uv->SetName("TCoords");
-  uv->SetNumberOfComponents(2);
-  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
-  {
-    uv->InsertNextTuple2(1.0 / 3.0 + static_cast<double>(i), 1e-7 * static_cast<double>(i));
-  }
-  mesh->GetPointData()->SetTCoords(uv);
+  vtkSmartPointer<vtkPolyData> mesh =
+    texturedSphere(11, [](double i) { return std::array<double, 2>{ 1.0 / 3.0 + i, 1e-7 * i }; });
+  vtkDataArray* uv = mesh->GetPointData()->GetTCoords();
   for (const char* name : { "m.obj", "m.ply" })
   {
     vtkNew<slMeshWriter> writer;
