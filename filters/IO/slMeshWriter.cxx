@@ -19,6 +19,7 @@
 #include <vtkPLYWriter.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataWriter.h>
+#include <vtkSMPTools.h>
 #include <vtkSTLWriter.h>
 #include <vtkSmartPointer.h>
 #include <vtkXMLPolyDataWriter.h>
@@ -123,7 +124,7 @@ bool formatOwn(const std::string& ext, vtkPolyData* mesh, std::string& bytes)
   }
   if (ext == ".obj")
   {
-    slFormatOBJ(view, bytes);
+    slFormatOBJ(view, bytes, vtkSMPTools::GetEstimatedNumberOfThreads());
     return true;
   }
   return slFormatPLY(view, bytes);

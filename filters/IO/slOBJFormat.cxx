@@ -190,7 +190,7 @@ void parseLines(const char* begin, const char* end, Chunk& chunk)
       ++c.at;
     }
     const std::size_t length = static_cast<std::size_t>(c.at - keyword);
-    float x, y, z;
+    float x = 0, y = 0, z = 0;
     bool ok = true;
     if (length == 1 && keyword[0] == 'v')
     {
@@ -359,22 +359,17 @@ bool slParseOBJ(const char* text, std::size_t size, bool merge, slMeshArrays& me
   return true;
 }
 
-void slFormatOBJ(const slMeshView& mesh, std::string& out)
+namespace
 {
-  out.reserve(out.size() + static_cast<std::size_t>(mesh.numberOfPoints) * 40 *
-      (1 + (mesh.normals.data ? 1 : 0) + (mesh.tcoords.data ? 1 : 0)));
-  tuples(out, "v", mesh.points, mesh.numberOfPoints, 3);
-  if (mesh.normals.data)
-  {
-    tuples(out, "vn", mesh.normals, mesh.numberOfPoints, 3);
-  }
-  if (mesh.tcoords.data)
-  {
-    tuples(out, "vt", mesh.tcoords, mesh.numberOfPoints, 2);
-  }
+/// The "f" lines of @p mesh, each corner's index repeated for vt and vn.
+void faces(const slMeshView& mesh, std::string& out)
+{
   // v, v/vt, v//vn or v/vt/vn, all of one index.
   const char* separator = mesh.tcoords.data ? "/" : "//";
   const int repeats = (mesh.tcoords.data ? 1 : 0) + (mesh.normals.data ? 1 : 0);
+  const std::size_t digits = std::to_string(mesh.numberOfPoints).size();
+  const std::size_t corners = static_cast<std::size_t>(mesh.offsets[static_cast<std::size_t>(mesh.numberOfPolygons)]);
+  out.reserve(static_cast<std::size_t>(mesh.numberOfPolygons) * 2 + corners * (digits + 2) * static_cast<std::size_t>(1 + repeats));
   for (std::int64_t p = 0; p < mesh.numberOfPolygons; ++p)
   {
     out += 'f';
@@ -390,5 +385,37 @@ void slFormatOBJ(const slMeshView& mesh, std::string& out)
       }
     }
     out += '\n';
+  }
+}
+} // namespace
+
+void slFormatOBJ(const slMeshView& mesh, std::string& out, int threads)
+{
+  // The faces are formatted beside the values when there is a second thread.
+  std::string faceLines;
+  std::thread faceThread;
+  if (threads > 1)
+  {
+    faceThread = std::thread(faces, std::cref(mesh), std::ref(faceLines));
+  }
+  out.reserve(out.size() + static_cast<std::size_t>(mesh.numberOfPoints) * 36 *
+      (1 + (mesh.normals.data ? 1 : 0) + (mesh.tcoords.data ? 1 : 0)));
+  tuples(out, "v", mesh.points, mesh.numberOfPoints, 3);
+  if (mesh.normals.data)
+  {
+    tuples(out, "vn", mesh.normals, mesh.numberOfPoints, 3);
+  }
+  if (mesh.tcoords.data)
+  {
+    tuples(out, "vt", mesh.tcoords, mesh.numberOfPoints, 2);
+  }
+  if (faceThread.joinable())
+  {
+    faceThread.join();
+    out += faceLines;
+  }
+  else
+  {
+    faces(mesh, out);
   }
 }
