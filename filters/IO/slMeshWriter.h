@@ -24,7 +24,7 @@
  *
  * VTP compression: LZ4 by default, about ten times faster to write than
  * zlib for about twice the size (bench/io/vtp_encoding.py;
- * docs/architecture.md has the figures).
+ * docs/mesh-io.md has the figures).
  *
  * Caveats: ParaView 5.11 as Debian 12 ships it cannot read appended VTP
  * data, compressed or not (its VTK and Debian's libexpat; see
