@@ -3,6 +3,7 @@
 #include "slPointDeduplication.h"
 
 #include <algorithm>
+#include <atomic>
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -134,9 +135,11 @@ void appendIndex(std::string& out, std::int64_t value)
   out.append(buffer, r.ptr);
 }
 
-void tuples(std::string& out, const char* keyword, const slValuesView& values, std::int64_t count, int components)
+/// The @p keyword lines of tuples [@p begin, @p end) of @p values.
+void tuples(std::string& out, const char* keyword, const slValuesView& values, std::int64_t begin, std::int64_t end,
+  int components)
 {
-  for (std::int64_t i = 0; i < count; ++i)
+  for (std::int64_t i = begin; i < end; ++i)
   {
     out += keyword;
     for (int k = 0; k < components; ++k)
@@ -361,16 +364,18 @@ bool slParseOBJ(const char* text, std::size_t size, bool merge, slMeshArrays& me
 
 namespace
 {
-/// The "f" lines of @p mesh, each corner's index repeated for vt and vn.
-void faces(const slMeshView& mesh, std::string& out)
+/// The "f" lines of polygons [@p begin, @p end) of @p mesh, each corner's
+/// index repeated for vt and vn.
+void faces(const slMeshView& mesh, std::int64_t begin, std::int64_t end, std::string& out)
 {
   // v, v/vt, v//vn or v/vt/vn, all of one index.
   const char* separator = mesh.tcoords.data ? "/" : "//";
   const int repeats = (mesh.tcoords.data ? 1 : 0) + (mesh.normals.data ? 1 : 0);
   const std::size_t digits = std::to_string(mesh.numberOfPoints).size();
-  const std::size_t corners = static_cast<std::size_t>(mesh.offsets[static_cast<std::size_t>(mesh.numberOfPolygons)]);
-  out.reserve(static_cast<std::size_t>(mesh.numberOfPolygons) * 2 + corners * (digits + 2) * static_cast<std::size_t>(1 + repeats));
-  for (std::int64_t p = 0; p < mesh.numberOfPolygons; ++p)
+  const std::size_t corners = static_cast<std::size_t>(
+    mesh.offsets[static_cast<std::size_t>(end)] - mesh.offsets[static_cast<std::size_t>(begin)]);
+  out.reserve(static_cast<std::size_t>(end - begin) * 2 + corners * (digits + 2) * static_cast<std::size_t>(1 + repeats));
+  for (std::int64_t p = begin; p < end; ++p)
   {
     out += 'f';
     for (std::int64_t k = mesh.offsets[static_cast<std::size_t>(p)]; k < mesh.offsets[static_cast<std::size_t>(p + 1)]; ++k)
@@ -391,31 +396,60 @@ void faces(const slMeshView& mesh, std::string& out)
 
 void slFormatOBJ(const slMeshView& mesh, std::string& out, int threads)
 {
-  // The faces are formatted beside the values when there is a second thread.
-  std::string faceLines;
-  std::thread faceThread;
-  if (threads > 1)
+  // The file in pieces of at most 256k lines (v, vn, vt, then f), formatted
+  // on @p threads threads, each taking the next piece, then joined in order.
+  struct Piece
   {
-    faceThread = std::thread(faces, std::cref(mesh), std::ref(faceLines));
+    int kind; // 0 v, 1 vn, 2 vt, 3 f
+    std::int64_t begin, end;
+    std::string text;
+  };
+  std::vector<Piece> pieces;
+  const std::int64_t step = 1 << 18;
+  const std::int64_t counts[] = { mesh.numberOfPoints, mesh.normals.data ? mesh.numberOfPoints : 0,
+    mesh.tcoords.data ? mesh.numberOfPoints : 0, mesh.numberOfPolygons };
+  for (int kind = 0; kind < 4; ++kind)
+  {
+    for (std::int64_t begin = 0; begin < counts[kind]; begin += step)
+    {
+      pieces.push_back(Piece{ kind, begin, std::min(counts[kind], begin + step), std::string() });
+    }
   }
-  out.reserve(out.size() + static_cast<std::size_t>(mesh.numberOfPoints) * 36 *
-      (1 + (mesh.normals.data ? 1 : 0) + (mesh.tcoords.data ? 1 : 0)));
-  tuples(out, "v", mesh.points, mesh.numberOfPoints, 3);
-  if (mesh.normals.data)
+  std::atomic<std::size_t> next{ 0 };
+  auto work = [&] {
+    for (std::size_t k = next++; k < pieces.size(); k = next++)
+    {
+      Piece& piece = pieces[k];
+      if (piece.kind == 3)
+      {
+        faces(mesh, piece.begin, piece.end, piece.text);
+        continue;
+      }
+      static const char* const keywords[] = { "v", "vn", "vt" };
+      const slValuesView& values = piece.kind == 0 ? mesh.points : piece.kind == 1 ? mesh.normals : mesh.tcoords;
+      piece.text.reserve(static_cast<std::size_t>(piece.end - piece.begin) * 40);
+      tuples(piece.text, keywords[piece.kind], values, piece.begin, piece.end, piece.kind == 2 ? 2 : 3);
+    }
+  };
+  std::vector<std::thread> workers;
+  for (int t = 1; t < threads; ++t)
   {
-    tuples(out, "vn", mesh.normals, mesh.numberOfPoints, 3);
+    workers.emplace_back(work);
   }
-  if (mesh.tcoords.data)
+  work();
+  for (std::thread& w : workers)
   {
-    tuples(out, "vt", mesh.tcoords, mesh.numberOfPoints, 2);
+    w.join();
   }
-  if (faceThread.joinable())
+  std::size_t total = out.size();
+  for (const Piece& piece : pieces)
   {
-    faceThread.join();
-    out += faceLines;
+    total += piece.text.size();
   }
-  else
+  out.reserve(total);
+  for (Piece& piece : pieces)
   {
-    faces(mesh, out);
+    out += piece.text;
+    std::string().swap(piece.text);
   }
 }

@@ -33,8 +33,8 @@ SHADELABIO_EXPORT bool slParseOBJ(const char* text, std::size_t size, bool merge
 /// Appends @p mesh as OBJ text to @p out: "v", then "vn" and "vt" lines if
 /// the mesh has them, each value with the fewest digits that read back to
 /// the same float (double for double arrays), then one "f" line per polygon
-/// whose corners name the same index for v, vt and vn. Uses a second thread
-/// for the faces if @p threads is 2 or more.
+/// whose corners name the same index for v, vt and vn. Formats on @p
+/// threads threads.
 SHADELABIO_EXPORT void slFormatOBJ(const slMeshView& mesh, std::string& out, int threads);
 
 #endif
