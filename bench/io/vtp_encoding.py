@@ -5,44 +5,50 @@ memory, then to a temporary file that is synced and renamed), on a sphere
 with point normals.
 
     PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 bench/io/vtp_encoding.py \
-        [--resolution 1000] [--runs 3]
+        [--resolution 1000] [--runs 5] [--threads N]
 
-Resolution 1000 gives 2,000,000 triangles. Prints the median and range of
-the write times, one read time and the size, and the machine.
+Resolution 1000 gives 2,000,000 triangles. Prints the machine
+(bench/common/BenchMachine, through shadelab_bench_machine), then per
+encoding the median and range of the write and read times and the size.
 """
 import argparse
 import os
-import platform
 import statistics
 import tempfile
 import time
 
-from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
-from vtkmodules.vtkFiltersSources import vtkSphereSource
-from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter
-
-from shadelab import slMeshWriter
+import machine
 
 # name, a writer for it
 ENCODINGS = [
-    ("vtkXMLPolyDataWriter, VTK's defaults", lambda: vtkXMLPolyDataWriter()),
-    ("slMeshWriter, --compress zlib", lambda: shadelab_writer(slMeshWriter.ZLIB)),
-    ("slMeshWriter, lz4 (default)", lambda: shadelab_writer(slMeshWriter.LZ4)),
-    ("slMeshWriter, --compress none", lambda: shadelab_writer(slMeshWriter.NONE)),
+    ("vtkXMLPolyDataWriter, VTK's defaults", lambda: vtk_writer()),
+    ("slMeshWriter, --compress zlib", lambda: shadelab_writer("ZLIB")),
+    ("slMeshWriter, lz4 (default)", lambda: shadelab_writer("LZ4")),
+    ("slMeshWriter, --compress none", lambda: shadelab_writer("NONE")),
 ]
 
 
+def vtk_writer():
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+    return vtkXMLPolyDataWriter()
+
+
 def shadelab_writer(compression):
+    from shadelab import slMeshWriter
     writer = slMeshWriter()
-    writer.SetCompression(compression)
+    writer.SetCompression(getattr(slMeshWriter, compression))
     return writer
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--resolution", type=int, default=1000)
-    parser.add_argument("--runs", type=int, default=3)
+    machine.add_arguments(parser, runs=5)
     args = parser.parse_args()
+    machine.apply_threads(args)
+    from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
+    from vtkmodules.vtkFiltersSources import vtkSphereSource
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
     sphere = vtkSphereSource()
     sphere.SetThetaResolution(args.resolution)
     sphere.SetPhiResolution(args.resolution + 2)
@@ -51,11 +57,9 @@ def main():
     normals.SplittingOff()
     normals.Update()
     mesh = normals.GetOutput()
-    with open("/proc/cpuinfo") as f:
-        cpu = next((line.split(":", 1)[1].strip() for line in f if line.startswith("model name")), platform.processor())
-    print("machine: %s, %d cores; %d triangles, %d runs each" % (cpu, os.cpu_count(), mesh.GetNumberOfCells(),
-                                                                 args.runs))
-    print("| encoding | write: median (range) | read | size |")
+    machine.print_machine(args)
+    print("%d triangles, %d runs each\n" % (mesh.GetNumberOfCells(), args.runs))
+    print("| encoding | write: median (range) | read: median (range) | size |")
     print("|---|---|---|---|")
     with tempfile.TemporaryDirectory() as work:
         path = os.path.join(work, "mesh.vtp")
@@ -68,13 +72,16 @@ def main():
                 start = time.perf_counter()
                 writer.Write()
                 times.append(time.perf_counter() - start)
-            reader = vtkXMLPolyDataReader()
-            reader.SetFileName(path)
-            start = time.perf_counter()
-            reader.Update()
-            read = time.perf_counter() - start
-            print("| %s | %.2f s (%.2f–%.2f) | %.2f s | %.1f MB |" % (
-                name, statistics.median(times), min(times), max(times), read, os.path.getsize(path) / 1e6))
+            reads = []
+            for _ in range(args.runs):
+                reader = vtkXMLPolyDataReader()
+                reader.SetFileName(path)
+                start = time.perf_counter()
+                reader.Update()
+                reads.append(time.perf_counter() - start)
+            print("| %s | %.2f s (%.2f–%.2f) | %.2f s (%.2f–%.2f) | %.1f MB |" % (
+                name, statistics.median(times), min(times), max(times), statistics.median(reads), min(reads),
+                max(reads), os.path.getsize(path) / 1e6), flush=True)
 
 
 if __name__ == "__main__":

@@ -3,8 +3,11 @@
 #include "slConnectivityCheck.h"
 #include "slErrorCapture.h"
 #include "slFileExtension.h"
+#include "slMeshArraysVTK.h"
 #include "slMeshFileCheck.h"
+#include "slOBJFormat.h"
 #include "slOFFParser.h"
+#include "slPLYFormat.h"
 #include "slPointWelding.h"
 
 #include "shadelab/PrintableText.h"
@@ -25,6 +28,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataReader.h>
+#include <vtkSMPTools.h>
 #include <vtkSTLReader.h>
 #include <vtkSmartPointer.h>
 #include <vtkXMLPolyDataReader.h>
@@ -102,6 +106,47 @@ vtkSmartPointer<vtkPolyData> appendLeaves(vtkCompositeDataSet* composite)
   }
   append->Update();
   return append->GetOutput();
+}
+
+/// Reads an OBJ or PLY file through ShadeLab's own parsers into @p mesh.
+/// False for other formats and for files those parsers decline, which go to
+/// the file checks and VTK's readers.
+bool readOwnFormat(const char* fileName, const std::string& ext, bool merge, vtkPolyData* mesh)
+{
+  if (ext != ".obj" && ext != ".ply")
+  {
+    return false;
+  }
+  try
+  {
+    std::ifstream in(fileName, std::ios::binary | std::ios::ate);
+    const std::streamoff size = in ? static_cast<std::streamoff>(in.tellg()) : -1;
+    if (size <= 0)
+    {
+      return false;
+    }
+    std::string bytes(static_cast<size_t>(size), '\0');
+    in.seekg(0);
+    if (!in.read(&bytes[0], size))
+    {
+      return false;
+    }
+    slMeshArrays arrays;
+    const bool parsed = ext == ".obj" ? slParseOBJ(bytes.data(), bytes.size(), merge, arrays, vtkSMPTools::GetEstimatedNumberOfThreads())
+                                      : slParsePLY(bytes.data(), bytes.size(), arrays);
+    if (!parsed)
+    {
+      return false;
+    }
+    std::string().swap(bytes);
+    // vtkOBJReader adds texture coordinates before normals.
+    slToPolyData(arrays, ext == ".obj", mesh);
+    return true;
+  }
+  catch (const std::bad_alloc&)
+  {
+    return false; // VTK's path then says what the file needs
+  }
 }
 
 /// Index of the first point with a NaN or infinite coordinate, or -1.
@@ -183,7 +228,7 @@ int slMeshReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInform
       return this->Fail(problem);
     }
   }
-  else
+  else if (!readOwnFormat(this->FileName, ext, this->MergeDuplicatePoints, mesh))
   {
     probe.close();
     // VTK's readers trust the file; what would make them crash, allocate

@@ -12,6 +12,11 @@
  * .gltf and .glb (vtkGLTFReader; every mesh primitive of the first scene,
  * with node transforms applied, appended into one polydata).
  *
+ * OBJ and binary PLY files in the layouts most tools write (slOBJFormat.h,
+ * slPLYFormat.h) are read by ShadeLab's own parsers instead, several times
+ * faster, to exactly the mesh the VTK reader (and, for OBJ, the merging
+ * below) gives; any other file goes to the checks and the VTK reader.
+ *
  * vtkOBJReader emits one point per face corner. With MergeDuplicatePoints
  * on (the default), points equal in position and in every point-data value
  * (texture coordinates, normals) are merged again, so the mesh is connected

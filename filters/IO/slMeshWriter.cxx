@@ -5,6 +5,9 @@
 #include "slBinaryPLYSize.h"
 #include "slErrorCapture.h"
 #include "slFileExtension.h"
+#include "slMeshArraysVTK.h"
+#include "slOBJFormat.h"
+#include "slPLYFormat.h"
 
 #include <vtkCellArray.h>
 #include <vtkErrorCode.h>
@@ -16,6 +19,7 @@
 #include <vtkPLYWriter.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataWriter.h>
+#include <vtkSMPTools.h>
 #include <vtkSTLWriter.h>
 #include <vtkSmartPointer.h>
 #include <vtkXMLPolyDataWriter.h>
@@ -107,6 +111,24 @@ long long expectedPLYSize(const std::string& path, vtkPolyData* mesh)
   }
   return size;
 }
+
+/// @p mesh encoded as OBJ or PLY by ShadeLab's own formatters into @p bytes;
+/// false for other formats and meshes they do not write (which VTK's
+/// writers then write).
+bool formatOwn(const std::string& ext, vtkPolyData* mesh, std::string& bytes)
+{
+  slMeshView view;
+  if ((ext != ".obj" && ext != ".ply") || !slViewOf(mesh, view))
+  {
+    return false;
+  }
+  if (ext == ".obj")
+  {
+    slFormatOBJ(view, bytes, vtkSMPTools::GetEstimatedNumberOfThreads());
+    return true;
+  }
+  return slFormatPLY(view, bytes);
+}
 } // namespace
 
 slMeshWriter::slMeshWriter()
@@ -177,9 +199,15 @@ bool slMeshWriter::WriteMesh(vtkPolyData* mesh)
     // step. vtkPLYWriter cannot: it appends ".ply" to any other file name and
     // its string output is empty in VTK 9.1. It writes the temporary file
     // itself, whose size is then checked against its header.
+    shadelab::AtomicOutput output(name);
+    std::string own;
+    if (formatOwn(ext, mesh, own))
+    {
+      output.commit(own.data(), own.size());
+      return true;
+    }
     const bool ply = ext == ".ply";
     shadelab::MemoryFile memory;
-    shadelab::AtomicOutput output(name);
     vtkSmartPointer<vtkAlgorithm> writer = makeWriter(ext, mesh, ply ? output.temporaryPath() : memory.path(), this->Compression);
     vtkNew<slErrorCapture> errors;
     errors->Watch(writer);

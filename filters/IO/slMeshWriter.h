@@ -8,12 +8,15 @@
  * The format follows the file name's extension (case insensitive):
  * .vtp (vtkXMLPolyDataWriter, raw binary appended data compressed as
  * Compression says, keeps every array), .vtk
- * (vtkPolyDataWriter, binary, keeps every array), .ply (vtkPLYWriter,
- * binary; keeps point normals, texture coordinates and RGB colours only),
- * .obj (vtkOBJWriter; keeps point normals and texture coordinates only),
- * .stl (vtkSTLWriter, binary; geometry only).
+ * (vtkPolyDataWriter, binary, keeps every array), .ply (binary; point
+ * normals and texture coordinates, written by slFormatPLY; a mesh with
+ * colours (active scalars), vertices, lines or strips goes to vtkPLYWriter,
+ * which keeps texture coordinates and RGB colours), .obj (point normals and
+ * texture coordinates, written by slFormatOBJ with the fewest digits that
+ * read back exactly; other meshes as above go to vtkOBJWriter), .stl
+ * (vtkSTLWriter, binary; geometry only).
  *
- * VTK encodes the mesh in memory; ShadeLab then writes the bytes to a
+ * The mesh is encoded in memory; ShadeLab then writes the bytes to a
  * temporary file beside the target, syncs it and renames it over the target:
  * a failure (a full disk included) never leaves a partial file nor destroys
  * an existing one. GetErrorMessage() gives a one-line reason naming the file
@@ -21,7 +24,7 @@
  *
  * VTP compression: LZ4 by default, about ten times faster to write than
  * zlib for about twice the size (bench/io/vtp_encoding.py;
- * docs/architecture.md has the figures).
+ * docs/mesh-io.md has the figures).
  *
  * Caveats: ParaView 5.11 as Debian 12 ships it cannot read appended VTP
  * data, compressed or not (its VTK and Debian's libexpat; see

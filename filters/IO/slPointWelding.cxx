@@ -1,5 +1,7 @@
 #include "slPointWelding.h"
 
+#include "slPointDeduplication.h"
+
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
@@ -9,36 +11,29 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 
-#include <string>
-#include <unordered_map>
 #include <vector>
 
 namespace
 {
-/// The bytes of point @p id: coordinates and every point-data tuple.
-void pointKey(vtkPolyData* mesh, vtkIdType id, std::string& key)
+/// Point @p id as a row of doubles: coordinates, then every point-data tuple.
+void pointRow(vtkPolyData* mesh, vtkIdType id, double* row)
 {
-  key.clear();
-  double p[3];
-  mesh->GetPoint(id, p);
-  key.append(reinterpret_cast<const char*>(p), sizeof(p));
+  mesh->GetPoint(id, row);
+  int at = 3;
   vtkPointData* pd = mesh->GetPointData();
   for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
   {
-    vtkDataArray* array = pd->GetArray(a);
-    if (!array)
+    if (vtkDataArray* array = pd->GetArray(a))
     {
-      continue;
-    }
-    for (int c = 0; c < array->GetNumberOfComponents(); ++c)
-    {
-      const double v = array->GetComponent(id, c);
-      key.append(reinterpret_cast<const char*>(&v), sizeof(v));
+      for (int c = 0; c < array->GetNumberOfComponents(); ++c)
+      {
+        row[at++] = array->GetComponent(id, c);
+      }
     }
   }
 }
 
-vtkSmartPointer<vtkCellArray> remap(vtkCellArray* cells, const std::vector<vtkIdType>& newId)
+vtkSmartPointer<vtkCellArray> remap(vtkCellArray* cells, const std::vector<std::int64_t>& newId)
 {
   auto out = vtkSmartPointer<vtkCellArray>::New();
   out->AllocateExact(cells->GetNumberOfCells(), cells->GetNumberOfConnectivityIds());
@@ -58,22 +53,20 @@ vtkSmartPointer<vtkCellArray> remap(vtkCellArray* cells, const std::vector<vtkId
 long long slMergeIdenticalPoints(vtkPolyData* mesh)
 {
   const vtkIdType n = mesh->GetNumberOfPoints();
-  std::vector<vtkIdType> newId(static_cast<size_t>(n));
-  std::vector<vtkIdType> kept;
-  kept.reserve(static_cast<size_t>(n));
-  std::unordered_map<std::string, vtkIdType> seen;
-  seen.reserve(static_cast<size_t>(n));
-  std::string key;
+  size_t width = 3;
+  for (int a = 0; a < mesh->GetPointData()->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = mesh->GetPointData()->GetArray(a);
+    width += array ? static_cast<size_t>(array->GetNumberOfComponents()) : 0;
+  }
+  std::vector<double> rows(static_cast<size_t>(n) * width);
   for (vtkIdType i = 0; i < n; ++i)
   {
-    pointKey(mesh, i, key);
-    auto inserted = seen.emplace(key, static_cast<vtkIdType>(kept.size()));
-    if (inserted.second)
-    {
-      kept.push_back(i);
-    }
-    newId[static_cast<size_t>(i)] = inserted.first->second;
+    pointRow(mesh, i, &rows[static_cast<size_t>(i) * width]);
   }
+  std::vector<std::int64_t> newId;
+  const std::vector<std::int64_t> kept = slUniqueRows(
+    reinterpret_cast<const unsigned char*>(rows.data()), width * sizeof(double), static_cast<size_t>(n), newId);
   const long long removed = n - static_cast<vtkIdType>(kept.size());
   if (removed == 0)
   {

@@ -1,18 +1,111 @@
 // slMeshReader on any bytes as a file of one extension (SL_FUZZ_EXTENSION):
 // either an error message and an empty output, or a mesh that every
 // ShadeLab filter may follow (finite points, cells naming existing points).
+// For OBJ and PLY, bytes that ShadeLab's own parser takes must also read to
+// exactly what VTK's reader gives.
 #include "FuzzInputFile.h"
 #include "FuzzToolOutput.h"
 
 #include "slConnectivityCheck.h"
 #include "slMeshReader.h"
+#include "slOBJFormat.h"
+#include "slPLYFormat.h"
 
+#include <vtkCellArray.h>
+#include <vtkDataArray.h>
+#include <vtkIdList.h>
 #include <vtkNew.h>
+#include <vtkOBJReader.h>
+#include <vtkPLYReader.h>
+#include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 
 #include <cmath>
 #include <cstdlib>
+
+namespace
+{
+/// Equal values, NaN equal to NaN (slMeshReader rejects those meshes later).
+bool equal(double a, double b)
+{
+  return a == b || (std::isnan(a) && std::isnan(b));
+}
+
+/// True if @p mesh holds exactly @p arrays' points, normals, texture
+/// coordinates and polygons.
+bool same(vtkPolyData* mesh, const slMeshArrays& arrays)
+{
+  const vtkIdType n = static_cast<vtkIdType>(arrays.points.size() / 3);
+  vtkDataArray* normals = mesh->GetPointData()->GetNormals();
+  vtkDataArray* tcoords = mesh->GetPointData()->GetTCoords();
+  if (mesh->GetNumberOfPoints() != n || (normals != nullptr) != !arrays.normals.empty() ||
+    (tcoords != nullptr) != !arrays.tcoords.empty() ||
+    mesh->GetPolys()->GetNumberOfCells() != static_cast<vtkIdType>(arrays.offsets.size()) - 1)
+  {
+    return false;
+  }
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const size_t k = static_cast<size_t>(3 * i + c);
+      if (!equal(mesh->GetPoints()->GetData()->GetComponent(i, c), arrays.points[k]) ||
+        (normals && !equal(normals->GetComponent(i, c), arrays.normals[k])) ||
+        (tcoords && c < 2 && !equal(tcoords->GetComponent(i, c), arrays.tcoords[static_cast<size_t>(2 * i + c)])))
+      {
+        return false;
+      }
+    }
+  }
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType f = 0; f < mesh->GetPolys()->GetNumberOfCells(); ++f)
+  {
+    mesh->GetPolys()->GetCellAtId(f, ids);
+    const std::int64_t first = arrays.offsets[static_cast<size_t>(f)];
+    if (ids->GetNumberOfIds() != arrays.offsets[static_cast<size_t>(f + 1)] - first)
+    {
+      return false;
+    }
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    {
+      if (ids->GetId(k) != arrays.connectivity[static_cast<size_t>(first + k)])
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+/// What VTK's reader gives for a file ShadeLab's parser takes, against it.
+void compareWithVTK(const std::string& path, const uint8_t* data, size_t size)
+{
+  const std::string ext = SL_FUZZ_EXTENSION;
+  const char* text = reinterpret_cast<const char*>(data);
+  slMeshArrays arrays;
+  if (ext == ".obj" && slParseOBJ(text, size, false, arrays, 1))
+  {
+    vtkNew<vtkOBJReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    if (!same(reader->GetOutput(), arrays))
+    {
+      std::abort();
+    }
+  }
+  if (ext == ".ply" && slParsePLY(text, size, arrays))
+  {
+    vtkNew<vtkPLYReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    if (!same(reader->GetOutput(), arrays))
+    {
+      std::abort();
+    }
+  }
+}
+} // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
@@ -35,5 +128,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
       std::abort();
     }
   }
+  compareWithVTK(path, data, size);
   return 0;
 }

@@ -1,0 +1,122 @@
+#include "slMeshArraysVTK.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkFloatArray.h>
+#include <vtkIdTypeArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkTypeInt32Array.h>
+#include <vtkTypeInt64Array.h>
+
+#include <cstring>
+#include <type_traits>
+
+namespace
+{
+vtkSmartPointer<vtkFloatArray> floats(std::vector<float>& values, int components, const char* name)
+{
+  auto array = vtkSmartPointer<vtkFloatArray>::New();
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(static_cast<vtkIdType>(values.size() / static_cast<std::size_t>(components)));
+  std::memcpy(array->GetPointer(0), values.data(), values.size() * sizeof(float));
+  std::vector<float>().swap(values);
+  if (name)
+  {
+    array->SetName(name);
+  }
+  return array;
+}
+
+vtkSmartPointer<vtkIdTypeArray> ids(std::vector<std::int64_t>& values)
+{
+  static_assert(sizeof(vtkIdType) == sizeof(std::int64_t), "64-bit vtkIdType");
+  auto array = vtkSmartPointer<vtkIdTypeArray>::New();
+  array->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
+  std::memcpy(array->GetPointer(0), values.data(), values.size() * sizeof(std::int64_t));
+  std::vector<std::int64_t>().swap(values);
+  return array;
+}
+
+bool values(vtkDataArray* array, int components, slValuesView& view)
+{
+  if (!array)
+  {
+    return true;
+  }
+  if (array->GetNumberOfComponents() != components ||
+    (array->GetDataType() != VTK_FLOAT && array->GetDataType() != VTK_DOUBLE))
+  {
+    return false;
+  }
+  view.data = array->GetVoidPointer(0);
+  view.isDouble = array->GetDataType() == VTK_DOUBLE;
+  return true;
+}
+
+bool indices(vtkDataArray* array, slIndicesView& view)
+{
+  if (vtkTypeInt64Array::SafeDownCast(array) || vtkIdTypeArray::SafeDownCast(array))
+  {
+    view.data = array->GetVoidPointer(0);
+    view.is64 = true;
+    return true;
+  }
+  if (vtkTypeInt32Array::SafeDownCast(array))
+  {
+    view.data = array->GetVoidPointer(0);
+    view.is64 = false;
+    return true;
+  }
+  return false;
+}
+} // namespace
+
+void slToPolyData(slMeshArrays& mesh, bool tcoordsFirst, vtkPolyData* output)
+{
+  vtkNew<vtkPoints> points;
+  points->SetData(floats(mesh.points, 3, nullptr));
+  vtkNew<vtkCellArray> polys;
+  vtkSmartPointer<vtkIdTypeArray> offsets = ids(mesh.offsets);
+  polys->SetData(offsets, ids(mesh.connectivity));
+  output->Initialize();
+  output->SetPoints(points);
+  output->SetPolys(polys);
+  vtkPointData* pd = output->GetPointData();
+  auto addTCoords = [&] {
+    if (!mesh.tcoords.empty())
+    {
+      pd->SetTCoords(floats(mesh.tcoords, 2, "TCoords"));
+    }
+  };
+  if (tcoordsFirst)
+  {
+    addTCoords();
+  }
+  if (!mesh.normals.empty())
+  {
+    pd->SetNormals(floats(mesh.normals, 3, "Normals"));
+  }
+  addTCoords();
+}
+
+bool slViewOf(vtkPolyData* mesh, slMeshView& view)
+{
+  vtkCellArray* polys = mesh->GetPolys();
+  if (!mesh->GetPoints() || mesh->GetNumberOfVerts() > 0 || mesh->GetNumberOfLines() > 0 ||
+    mesh->GetNumberOfStrips() > 0 || mesh->GetPointData()->GetScalars() || mesh->GetCellData()->GetScalars())
+  {
+    return false;
+  }
+  view = slMeshView();
+  view.numberOfPoints = mesh->GetNumberOfPoints();
+  view.numberOfPolygons = polys ? polys->GetNumberOfCells() : 0;
+  vtkNew<vtkCellArray> empty;
+  vtkCellArray* cells = polys ? polys : empty.Get();
+  return values(mesh->GetPoints()->GetData(), 3, view.points) &&
+    values(mesh->GetPointData()->GetNormals(), 3, view.normals) &&
+    values(mesh->GetPointData()->GetTCoords(), 2, view.tcoords) && indices(cells->GetOffsetsArray(), view.offsets) &&
+    indices(cells->GetConnectivityArray(), view.connectivity) && polys;
+}

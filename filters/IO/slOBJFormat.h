@@ -1,0 +1,40 @@
+#ifndef slOBJFormat_h
+#define slOBJFormat_h
+/**
+ * @file slOBJFormat.h
+ * @brief ShadeLab's own OBJ parser and formatter, without VTK: vtkOBJReader
+ * and vtkOBJWriter take several seconds for a mesh of a few million
+ * triangles. Internal to ShadeLab::IO.
+ *
+ * The parser takes OBJ as it is commonly written and declines anything else,
+ * which slMeshReader then gives to the file checks and vtkOBJReader: so a
+ * file gives the same mesh, or the same one-line problem, either way.
+ */
+
+#include "ShadeLabIOModule.h"
+#include "slMeshArrays.h"
+
+#include <cstddef>
+#include <string>
+
+/// Fills @p mesh from @p size bytes of OBJ text at @p text as vtkOBJReader
+/// reads them (float values; one point per vertex when every corner's vt and
+/// vn index equals its v index, else one per corner), followed, if @p merge,
+/// by the merging of points equal in position, normal and texture coordinate
+/// (slMergeIdenticalPoints, first occurrence first). Returns false, leaving
+/// @p mesh unspecified, unless the text consists only of blank lines,
+/// comments, "v x y z", "vt u v", "vn x y z" lines and "f" lines of 3 or
+/// more corners, all faces with corners of one form (v, v/vt, v//vn or
+/// v/vt/vn, positive indices naming existing values), with finite decimal
+/// numbers, lines of at most 1000 bytes, and vt (vn) lines only if faces use
+/// them. Parses on @p threads threads (at least one).
+SHADELABIO_EXPORT bool slParseOBJ(const char* text, std::size_t size, bool merge, slMeshArrays& mesh, int threads);
+
+/// Appends @p mesh as OBJ text to @p out: "v", then "vn" and "vt" lines if
+/// the mesh has them, each value with the fewest digits that read back to
+/// the same float (double for double arrays), then one "f" line per polygon
+/// whose corners name the same index for v, vt and vn. Formats on @p
+/// threads threads.
+SHADELABIO_EXPORT void slFormatOBJ(const slMeshView& mesh, std::string& out, int threads);
+
+#endif

@@ -1,0 +1,28 @@
+#ifndef slPointDeduplication_h
+#define slPointDeduplication_h
+/**
+ * @file slPointDeduplication.h
+ * @brief Which rows of a table are byte-for-byte repeats of an earlier one:
+ * the rule by which OBJ points equal in position and in every point value
+ * are merged (slMergeIdenticalPoints, slParseOBJ). VTK-free. Internal to
+ * ShadeLab::IO.
+ */
+
+#include "slMeshArrays.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+/// For @p count rows of @p rowBytes bytes each at @p rows: fills @p newId
+/// with each row's index among the distinct rows (numbered in order of first
+/// occurrence) and returns the index of each distinct row's first occurrence.
+std::vector<std::int64_t> slUniqueRows(
+  const unsigned char* rows, std::size_t rowBytes, std::size_t count, std::vector<std::int64_t>& newId);
+
+/// Merges the points of @p mesh equal in position, normal and texture
+/// coordinate (bit for bit), keeping first occurrences in order, and renames
+/// the connectivity accordingly.
+void slDeduplicatePoints(slMeshArrays& mesh);
+
+#endif

@@ -1,0 +1,297 @@
+// ShadeLab's own OBJ and PLY parsers and formatters: the files they take give
+// exactly what VTK's readers give (for OBJ, followed by the merging of equal
+// corners, computed here on its own); the files they decline go to VTK; and
+// what slMeshWriter writes reads back bit for bit, in ShadeLab and in VTK.
+#include "TestFolder.h"
+
+#include "slMeshReader.h"
+#include "slMeshWriter.h"
+#include "slOBJFormat.h"
+#include "slPLYFormat.h"
+
+#include <vtkCellArray.h>
+#include <vtkDataArray.h>
+#include <vtkFloatArray.h>
+#include <vtkIdList.h>
+#include <vtkNew.h>
+#include <vtkOBJReader.h>
+#include <vtkPLYReader.h>
+#include <vtkPLYWriter.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSphereSource.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <vector>
+
+namespace
+{
+std::string contents(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+vtkSmartPointer<vtkPolyData> readShadeLab(const std::string& path)
+{
+  vtkNew<slMeshReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  EXPECT_STREQ(reader->GetErrorMessage(), "") << path;
+  vtkSmartPointer<vtkPolyData> out = reader->GetOutput();
+  return out;
+}
+
+template <typename Reader>
+vtkSmartPointer<vtkPolyData> readVTK(const std::string& path)
+{
+  vtkNew<Reader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkSmartPointer<vtkPolyData> out = reader->GetOutput();
+  return out;
+}
+
+/// A point's position and every point-data value, in array order.
+std::vector<double> row(vtkPolyData* mesh, vtkIdType id)
+{
+  std::vector<double> r(3);
+  mesh->GetPoint(id, r.data());
+  for (int a = 0; a < mesh->GetPointData()->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = mesh->GetPointData()->GetArray(a);
+    for (int c = 0; c < array->GetNumberOfComponents(); ++c)
+    {
+      r.push_back(array->GetComponent(id, c));
+    }
+  }
+  return r;
+}
+
+/// @p mesh with points equal in every value merged (bit for bit: 0 and -0
+/// stay apart), first occurrence first, as a list of distinct rows and
+/// polygons naming them.
+struct Merged
+{
+  std::vector<std::vector<double>> rows;
+  std::vector<std::vector<vtkIdType>> polygons;
+};
+Merged merged(vtkPolyData* mesh)
+{
+  Merged m;
+  std::map<std::string, vtkIdType> seen;
+  std::vector<vtkIdType> newId(static_cast<size_t>(mesh->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    const std::vector<double> r = row(mesh, i);
+    const std::string bytes(reinterpret_cast<const char*>(r.data()), r.size() * sizeof(double));
+    auto inserted = seen.emplace(bytes, static_cast<vtkIdType>(m.rows.size()));
+    if (inserted.second)
+    {
+      m.rows.push_back(r);
+    }
+    newId[static_cast<size_t>(i)] = inserted.first->second;
+  }
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < mesh->GetPolys()->GetNumberOfCells(); ++c)
+  {
+    mesh->GetPolys()->GetCellAtId(c, ids);
+    std::vector<vtkIdType> polygon;
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    {
+      polygon.push_back(newId[static_cast<size_t>(ids->GetId(k))]);
+    }
+    m.polygons.push_back(polygon);
+  }
+  return m;
+}
+
+std::vector<std::string> arrayNames(vtkPolyData* mesh)
+{
+  std::vector<std::string> names;
+  for (int a = 0; a < mesh->GetPointData()->GetNumberOfArrays(); ++a)
+  {
+    names.emplace_back(mesh->GetPointData()->GetArrayName(a));
+  }
+  return names;
+}
+
+/// Every point, array value and polygon of @p ours equals @p theirs, in order.
+void expectIdentical(vtkPolyData* ours, vtkPolyData* theirs, const std::string& what)
+{
+  ASSERT_EQ(ours->GetNumberOfPoints(), theirs->GetNumberOfPoints()) << what;
+  EXPECT_EQ(ours->GetPoints()->GetDataType(), theirs->GetPoints()->GetDataType()) << what;
+  EXPECT_EQ(arrayNames(ours), arrayNames(theirs)) << what;
+  EXPECT_EQ(ours->GetPointData()->GetNormals() != nullptr, theirs->GetPointData()->GetNormals() != nullptr) << what;
+  EXPECT_EQ(ours->GetPointData()->GetTCoords() != nullptr, theirs->GetPointData()->GetTCoords() != nullptr) << what;
+  const Merged a = merged(ours), b = merged(theirs);
+  for (vtkIdType i = 0; i < ours->GetNumberOfPoints(); ++i)
+  {
+    ASSERT_EQ(row(ours, i), row(theirs, i)) << what << ": point " << i;
+  }
+  EXPECT_EQ(a.polygons, b.polygons) << what;
+  EXPECT_EQ(ours->GetNumberOfVerts() + ours->GetNumberOfLines() + ours->GetNumberOfStrips(), 0) << what;
+}
+
+/// A sphere with normals and texture coordinates @p uv(point id).
+vtkSmartPointer<vtkPolyData> texturedSphere(int resolution, std::array<double, 2> (*uv)(double))
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(resolution);
+  sphere->SetPhiResolution(resolution - 2);
+  sphere->Update();
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->DeepCopy(sphere->GetOutput());
+  vtkNew<vtkFloatArray> tcoords;
+  tcoords->SetName("TCoords");
+  tcoords->SetNumberOfComponents(2);
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    tcoords->InsertNextTuple(uv(static_cast<double>(i)).data());
+  }
+  mesh->GetPointData()->SetTCoords(tcoords);
+  return mesh;
+}
+
+/// OBJ files of every form slParseOBJ takes.
+const std::map<std::string, std::string>& objFiles()
+{
+  static const std::map<std::string, std::string> files = {
+    { "plain", "# a comment\nv 0 0 0\nv 1 0 0\nv 1 1 0\r\nv 0 1 0\n\nf 1 2 3\nf 1 3 4\n" },
+    { "quad and scientific", "v -1e-3 2.5E+2 .5\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 1 0 0\nf 1 2 3 4\nf 5 3 2\n" },
+    { "same index", "v 0 0 0\nv 1 0 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvn 0 0 1\nvn 0 0 1\nvn 0 0 1\n"
+                    "f 1/1/1 2/2/2 3/3/3\n" },
+    { "normals by corner", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nvn 0 0 -1\n"
+                           "f 1//1 2//1 3//1\nf 1//2 3//2 4//2\n" },
+    { "uv seam", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvt 0.5 0.5\n"
+                 "f 1/1 2/2 3/3\nf 1/5 3/3 4/4\n" },
+    { "all three, forward references", "f 1/2/1 2/1/1 3/3/1\t\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\n"
+                                       "vn 0 0 1\n" },
+    { "negative zero", "v 0 0 0\nv -0 0 0\nv 1 0 0\nv 0 1 0\nf 1 3 4\nf 2 3 4\n" },
+  };
+  return files;
+}
+} // namespace
+
+TEST(MeshFormats, OBJAsVTKReadsItWithCornersMerged)
+{
+  const TestFolder folder;
+  for (const auto& file : objFiles())
+  {
+    const std::string path = folder.path("m.obj");
+    folder.write("m.obj", file.second);
+    slMeshArrays arrays;
+    EXPECT_TRUE(slParseOBJ(file.second.data(), file.second.size(), true, arrays, 2)) << file.first;
+    vtkSmartPointer<vtkPolyData> ours = readShadeLab(path);
+    vtkSmartPointer<vtkPolyData> theirs = readVTK<vtkOBJReader>(path);
+    const Merged a = merged(ours), b = merged(theirs);
+    // Merging leaves nothing to merge, and gives VTK's points merged.
+    EXPECT_EQ(static_cast<size_t>(ours->GetNumberOfPoints()), a.rows.size()) << file.first;
+    EXPECT_EQ(a.rows, b.rows) << file.first;
+    EXPECT_EQ(a.polygons, b.polygons) << file.first;
+    EXPECT_EQ(arrayNames(ours), arrayNames(theirs)) << file.first;
+    EXPECT_EQ(ours->GetPoints()->GetDataType(), theirs->GetPoints()->GetDataType()) << file.first;
+
+    // Without merging: VTK's points, one for one.
+    vtkNew<slMeshReader> unmerged;
+    unmerged->SetFileName(path.c_str());
+    unmerged->MergeDuplicatePointsOff();
+    unmerged->Update();
+    expectIdentical(unmerged->GetOutput(), theirs, file.first + ", unmerged");
+  }
+}
+
+TEST(MeshFormats, OBJOutsideTheCommonFormGoesToVTK)
+{
+  const TestFolder folder;
+  const std::map<std::string, std::string> declined = {
+    { "group", "v 0 0 0\nv 1 0 0\nv 0 1 0\ng part\nf 1 2 3\n" },
+    { "negative index", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n" },
+    { "mixed forms", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/1\nf 1 2 3\n" },
+    { "vertex colours", "v 0 0 0 1 0 0\nv 1 0 0 1 0 0\nv 0 1 0 1 0 0\nf 1 2 3\n" },
+    { "line", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nl 1 2\n" },
+    { "continued line", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 \\\n3\n" },
+  };
+  for (const auto& file : declined)
+  {
+    slMeshArrays arrays;
+    EXPECT_FALSE(slParseOBJ(file.second.data(), file.second.size(), true, arrays, 1)) << file.first;
+  }
+  // Declined, it reads as before: through vtkOBJReader.
+  folder.write("g.obj", declined.at("group"));
+  EXPECT_EQ(readShadeLab(folder.path("g.obj"))->GetNumberOfPolys(), 1);
+}
+
+TEST(MeshFormats, PLYAsVTKReadsIt)
+{
+  const TestFolder folder;
+  vtkSmartPointer<vtkPolyData> mesh =
+    texturedSphere(9, [](double i) { return std::array<double, 2>{ 0.1 * i, 1.0 / (i + 1) }; });
+  // As VTK writes it (points and texture coordinates), and as ShadeLab does
+  // (with normals).
+  vtkNew<vtkPLYWriter> writer;
+  writer->SetInputData(mesh);
+  writer->SetFileName(folder.path("vtk.ply").c_str());
+  writer->SetFileTypeToBinary();
+  writer->Write();
+  vtkNew<slMeshWriter> ours;
+  ours->SetInputData(mesh);
+  ours->SetFileName(folder.path("shadelab.ply").c_str());
+  ASSERT_TRUE(ours->Write()) << ours->GetErrorMessage();
+  for (const char* name : { "vtk.ply", "shadelab.ply" })
+  {
+    const std::string bytes = contents(folder.path(name));
+    slMeshArrays arrays;
+    EXPECT_TRUE(slParsePLY(bytes.data(), bytes.size(), arrays)) << name;
+    expectIdentical(readShadeLab(folder.path(name)), readVTK<vtkPLYReader>(folder.path(name)), name);
+  }
+  vtkSmartPointer<vtkPolyData> back = readVTK<vtkPLYReader>(folder.path("shadelab.ply"));
+  ASSERT_NE(back->GetPointData()->GetNormals(), nullptr);
+  EXPECT_EQ(back->GetPointData()->GetNormals()->GetTuple3(5)[2], mesh->GetPointData()->GetNormals()->GetTuple3(5)[2]);
+}
+
+TEST(MeshFormats, WrittenOBJAndPLYReadBackBitForBit)
+{
+  const TestFolder folder;
+  vtkSmartPointer<vtkPolyData> mesh =
+    texturedSphere(11, [](double i) { return std::array<double, 2>{ 1.0 / 3.0 + i, 1e-7 * i }; });
+  vtkDataArray* uv = mesh->GetPointData()->GetTCoords();
+  for (const char* name : { "m.obj", "m.ply" })
+  {
+    vtkNew<slMeshWriter> writer;
+    writer->SetInputData(mesh);
+    writer->SetFileName(folder.path(name).c_str());
+    ASSERT_TRUE(writer->Write()) << writer->GetErrorMessage();
+    const std::string bytes = contents(folder.path(name));
+    slMeshArrays arrays;
+    EXPECT_TRUE(std::string(name) == "m.obj" ? slParseOBJ(bytes.data(), bytes.size(), false, arrays, 1)
+                                             : slParsePLY(bytes.data(), bytes.size(), arrays));
+    vtkNew<slMeshReader> reader;
+    reader->SetFileName(folder.path(name).c_str());
+    reader->MergeDuplicatePointsOff();
+    reader->Update();
+    vtkPolyData* back = reader->GetOutput();
+    ASSERT_EQ(back->GetNumberOfPoints(), mesh->GetNumberOfPoints()) << name;
+    for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+    {
+      double a[3], b[3];
+      mesh->GetPoint(i, a);
+      back->GetPoint(i, b);
+      ASSERT_EQ(std::vector<double>(a, a + 3), std::vector<double>(b, b + 3)) << name << " point " << i;
+      ASSERT_EQ(back->GetPointData()->GetNormals()->GetTuple3(i)[1], mesh->GetPointData()->GetNormals()->GetTuple3(i)[1]);
+      ASSERT_EQ(back->GetPointData()->GetTCoords()->GetTuple2(i)[0], uv->GetTuple2(i)[0]) << name;
+      ASSERT_EQ(back->GetPointData()->GetTCoords()->GetTuple2(i)[1], uv->GetTuple2(i)[1]) << name;
+    }
+    EXPECT_EQ(merged(back).polygons, merged(mesh).polygons) << name;
+  }
+  // VTK reads ShadeLab's OBJ to the same values.
+  const Merged vtk = merged(readVTK<vtkOBJReader>(folder.path("m.obj")));
+  const Merged own = merged(readShadeLab(folder.path("m.obj")));
+  EXPECT_EQ(vtk.rows, own.rows);
+}
