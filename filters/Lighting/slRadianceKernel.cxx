@@ -40,7 +40,7 @@ glsl8::slLight foldLight(const glsl::slLight& light, const glsl::slMaterial& m)
 {
   const glsl::slLight l = glsl::slFoldLight(light, m);
   glsl8::slLight v;
-#define SHADELAB_COPY(type, field, what) v.field = l.field;
+#define SHADELAB_COPY(type, field, ...) v.field = l.field;
   SHADELAB_LIGHT_FIELDS(SHADELAB_COPY)
 #undef SHADELAB_COPY
   return v;

@@ -57,7 +57,7 @@ struct LightUniformNames
   explicit LightUniformNames(int i)
   {
     const std::string base = "slLights[" + std::to_string(i) + "].";
-#define SHADELAB_NAME(type, field, what) fields.push_back(base + #field);
+#define SHADELAB_NAME(type, field, ...) fields.push_back(base + #field);
     SHADELAB_LIGHT_FIELDS(SHADELAB_NAME)
 #undef SHADELAB_NAME
   }
@@ -78,7 +78,7 @@ void setUniform(vtkShaderProgram*, const std::string&, int) {}
 void setLightUniforms(vtkShaderProgram* program, const LightUniformNames& names, const shadelab::glsl::slLight& light)
 {
   size_t f = 0;
-#define SHADELAB_UPLOAD(type, field, what) setUniform(program, names.fields[f++], light.field);
+#define SHADELAB_UPLOAD(type, field, ...) setUniform(program, names.fields[f++], light.field);
   SHADELAB_LIGHT_FIELDS(SHADELAB_UPLOAD)
 #undef SHADELAB_UPLOAD
 }

@@ -2,7 +2,7 @@
 // generated GLSL constants and slIsNormalizedModel(), the name lists, the
 // formulas of slLighting.glsl (every model and light type row must have its
 // expected values in TableExpectations.h, and the "reads" and "lobe" columns
-// must say what the formulas do), and the ParaView plugin's menus.
+// must say what the formulas do).
 #include "TableExpectations.h"
 
 #include "shadelab/LightingTables.h"

@@ -243,7 +243,7 @@ TEST(SceneFile, ShippedScenesAreValid)
 TEST(SceneFile, SchemaListsExactlyTheKeysTheReaderAccepts)
 {
   // The reader's "allowed here" list for each object, against the JSON Schema.
-  std::ifstream in(std::string(SHADELAB_DATA_DIR) + "/schema/scene.schema.json");
+  std::ifstream in(SHADELAB_SCHEMA_FILE);
   ASSERT_TRUE(in.good());
   const nlohmann::json schema = nlohmann::json::parse(in);
   auto schemaKeys = [](const nlohmann::json& object) {
@@ -262,10 +262,10 @@ TEST(SceneFile, SchemaListsExactlyTheKeysTheReaderAccepts)
   EXPECT_EQ(allowedIn(errorFor(R"({"shading": {"zzz": 1}})")), schemaKeys(schema["$defs"]["shading"]));
   EXPECT_EQ(allowedIn(errorFor(R"({"material": {"zzz": 1}})")), schemaKeys(schema["$defs"]["material"]));
   EXPECT_EQ(allowedIn(errorFor(R"({"camera": {"zzz": 1}})")), schemaKeys(schema["$defs"]["camera"]));
-  for (const char* type : { "directional", "point", "spot", "ambient" })
+  for (const LightTypeInfo& t : kLightTypes)
   {
-    const std::string light = std::string(R"({"lights": [{"type": ")") + type + R"(", "zzz": 1}]})";
-    EXPECT_EQ(allowedIn(errorFor(light)), schemaKeys(schema["$defs"][std::string(type) + "Light"])) << type;
+    const std::string light = std::string(R"({"lights": [{"type": ")") + t.name + R"(", "zzz": 1}]})";
+    EXPECT_EQ(allowedIn(errorFor(light)), schemaKeys(schema["$defs"][std::string(t.name) + "Light"])) << t.name;
   }
 }
 
@@ -375,7 +375,7 @@ void expectSchemaMatches(
 
 TEST(SceneFile, SchemaTypesRangesAndDefaultsAreTheKeyTables)
 {
-  std::ifstream in(std::string(SHADELAB_DATA_DIR) + "/schema/scene.schema.json");
+  std::ifstream in(SHADELAB_SCHEMA_FILE);
   ASSERT_TRUE(in.good());
   const nlohmann::json schema = nlohmann::json::parse(in);
   const nlohmann::json& defs = schema["$defs"];

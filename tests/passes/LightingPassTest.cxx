@@ -160,7 +160,7 @@ TEST_P(GouraudAgreesWithCPU, Within2Of255OnInteriorPixels)
     << "model " << shadelab::modelName(scene.model) << ": worst difference " << a.worst * 255.0f << "/255";
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryModel, GouraudAgreesWithCPU, ::testing::Range(0, 6),
+INSTANTIATE_TEST_SUITE_P(EveryModel, GouraudAgreesWithCPU, ::testing::Range(0, shadelab::kLightingModelCount),
   [](const ::testing::TestParamInfo<int>& info) {
     std::string name = shadelab::modelName(static_cast<shadelab::ShadingModel>(info.param));
     std::replace(name.begin(), name.end(), '-', '_');

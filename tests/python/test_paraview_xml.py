@@ -3,16 +3,16 @@ property that stands for a scene key has the key's range, and its default
 where it overrides a scene's material (the BRDF lobe source, which reads no
 scene, keeps its own defaults, those of slBRDFLobeSource); a
 list of lighting models or shading frequencies names the scene format's, in
-its order (their values are the ids the filters take). Reads the XML and the
-scene schema as files: no ParaView needed."""
+its order (their values are the ids the filters take). Reads the XML as the
+plugin's build fills it (its model menus come from LightingTables.h) and the
+generated scene schema: no ParaView needed."""
 import json
 import os
 import unittest
 from xml.etree import ElementTree
 
-ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
-PLUGIN = os.path.join(ROOT, "plugins", "ParaView", "Plugin")
-SCHEMA = os.path.join(os.environ["SHADELAB_DATA_DIR"], "schema", "scene.schema.json")
+PLUGIN = os.environ["SHADELAB_PARAVIEW_XML_DIR"]
+SCHEMA = os.environ["SHADELAB_SCHEMA_FILE"]
 
 # XML property name -> scene key under "material".
 MATERIAL = {"AmbientColor": "ambient", "DiffuseColor": "diffuse", "SpecularColor": "specular",

@@ -5,28 +5,14 @@
 // string for the shaders. Run by the build (filters/LightingCore/CMakeLists.txt).
 // slLighting.glsl is compiled after it everywhere: LightingGLSL.h and its
 // batch and double variants include it, lightingShaderSource() prepends it.
+#include "WriteGenerated.h"
 #include "shadelab/LightingTables.h"
 
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 #include <string>
 
-namespace
-{
-bool write(const char* path, const std::string& text)
-{
-  std::ofstream file(path, std::ios::binary | std::ios::trunc);
-  file << text;
-  file.close();
-  if (!file)
-  {
-    std::fprintf(stderr, "%s: cannot write\n", path);
-    return false;
-  }
-  return true;
-}
-} // namespace
+using shadelab::generator::writeGenerated;
 
 int main(int argc, char** argv)
 {
@@ -58,7 +44,7 @@ int main(int argc, char** argv)
       << (normalized.empty() ? "false" : normalized) << ";\n}\n";
 
   out << "\n// One light, ready for evaluation (angles already turned into cosines).\nstruct slLight\n{\n";
-#define SHADELAB_FIELD(type, field, what) out << "  " #type " " #field "; // " what "\n";
+#define SHADELAB_FIELD(type, field, what, value) out << "  " #type " " #field "; // " what "\n";
   SHADELAB_LIGHT_FIELDS(SHADELAB_FIELD)
 #undef SHADELAB_FIELD
   out << "};\n\n// Material coefficients.\nstruct slMaterial\n{\n";
@@ -72,5 +58,5 @@ int main(int argc, char** argv)
                              "const std::string& shadelab::lightingTablesShaderSource()\n{\n"
                              "  static const std::string source = R\"SLGLSL(" +
     out.str() + ")SLGLSL\";\n  return source;\n}\n";
-  return write(argv[1], out.str()) && write(argv[2], source) ? 0 : 1;
+  return writeGenerated(argv[1], out.str()) && writeGenerated(argv[2], source) ? 0 : 1;
 }

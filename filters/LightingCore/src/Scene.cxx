@@ -133,19 +133,9 @@ bool parseLightSpaceName(const std::string& name, LightSpace& out)
 glsl::slLight toEvaluationLight(const SceneLight& light)
 {
   glsl::slLight out;
-  out.type = static_cast<int>(light.type);
-  out.position = light.position;
-  out.direction = glsl::slSafeNormalize(light.direction);
-  out.ambient = light.ambient;
-  out.diffuse = light.diffuse;
-  out.specular = light.specular;
-  out.intensity = light.intensity;
-  out.attenuation = light.attenuation;
-  const float cutoff = glm::radians(light.cutoffDegrees);
-  const float inner = glm::radians(glm::max(light.cutoffDegrees - light.edgeDegrees, 0.0f));
-  out.cosCutoff = glm::cos(cutoff);
-  out.cosInner = light.edgeDegrees > 0.0f ? glm::cos(inner) : out.cosCutoff;
-  out.exponent = light.exponent;
+#define SHADELAB_FIELD(type, field, what, value) out.field = value;
+  SHADELAB_LIGHT_FIELDS(SHADELAB_FIELD)
+#undef SHADELAB_FIELD
   return out;
 }
 

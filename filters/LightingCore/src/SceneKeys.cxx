@@ -53,31 +53,93 @@ SceneKey<S> textKey(const char* name, std::string S::*field, const char* whenEmp
   return k;
 }
 
+template <typename S>
+SceneKey<S> described(SceneKey<S> key, const char* what)
+{
+  key.what = what;
+  return key;
+}
+
 std::string indexed(const std::string& path, int i)
 {
   return path + "[" + std::to_string(i) + "]";
 }
 } // namespace
 
+namespace
+{
+/// The range column of SHADELAB_LIGHT_KEYS.
+struct LightKeyRange
+{
+  double lo = 0.0, hi = 0.0;
+  bool openLo = false, openHi = false;
+  bool upToCutoff = false;
+  bool byKind = false; ///< the kind's own range (vectorKey())
+};
+LightKeyRange anyValue()
+{
+  LightKeyRange r;
+  r.byKind = true;
+  return r;
+}
+LightKeyRange closed(double lo, double hi)
+{
+  LightKeyRange r;
+  r.lo = lo;
+  r.hi = hi;
+  return r;
+}
+LightKeyRange openBelow(double lo, double hi)
+{
+  LightKeyRange r = closed(lo, hi);
+  r.openLo = true;
+  return r;
+}
+/// [lo, hi], and at most the light's cutoff (a spot's edge).
+LightKeyRange upToCutoff(double lo, double hi)
+{
+  LightKeyRange r = closed(lo, hi);
+  r.upToCutoff = true;
+  return r;
+}
+
+using L = SceneLight;
+
+/// The key of SceneLight member @p field, whose C++ type picks the field pointer.
+SceneKey<L> lightKey(const char* name, SceneKeyKind, float L::*field, unsigned parameter, LightKeyRange range)
+{
+  SceneKey<L> k = numberKey(name, field, range.lo, range.hi, range.openLo, range.openHi, parameter);
+  k.upTo = range.upToCutoff ? &L::cutoffDegrees : nullptr;
+  return k;
+}
+SceneKey<L> lightKey(const char* name, SceneKeyKind kind, glm::vec3 L::*field, unsigned parameter, LightKeyRange)
+{
+  return vectorKey(name, kind, field, parameter);
+}
+SceneKey<L> lightKey(const char* name, SceneKeyKind, std::string L::*field, unsigned parameter, LightKeyRange)
+{
+  SceneKey<L> k = textKey(name, field);
+  k.lightParameter = parameter;
+  return k;
+}
+SceneKey<L> lightKey(const char* name, SceneKeyKind kind, LightSpace L::*field, unsigned parameter, LightKeyRange)
+{
+  SceneKey<L> k{ name, kind, parameter };
+  k.space = field;
+  return k;
+}
+} // namespace
+
 const std::vector<SceneKey<SceneLight>>& lightKeys()
 {
-  // In reading order: "edge" after the "cutoff" it is bounded by.
-  static const std::vector<SceneKey<SceneLight>> keys = [] {
-    using L = SceneLight;
-    SceneKey<L> space{ "space", SceneKeyKind::Space, kLightSpace };
-    space.space = &L::space;
-    SceneKey<L> edge = numberKey("edge", &L::edgeDegrees, 0.0, 90.0, false, false, kLightEdge);
-    edge.upTo = &L::cutoffDegrees;
-    return std::vector<SceneKey<L>>{ textKey("name", &L::name), space,
-      numberKey("intensity", &L::intensity, 0.0, kMaxColourValue),
-      vectorKey("ambient", SceneKeyKind::Colour, &L::ambient),
-      vectorKey("diffuse", SceneKeyKind::Colour, &L::diffuse, kLightDiffuse),
-      vectorKey("specular", SceneKeyKind::Colour, &L::specular, kLightSpecular),
-      vectorKey("position", SceneKeyKind::Point, &L::position, kLightPosition),
-      vectorKey("direction", SceneKeyKind::Direction, &L::direction, kLightDirection),
-      vectorKey("attenuation", SceneKeyKind::Coefficients, &L::attenuation, kLightAttenuation),
-      numberKey("cutoff", &L::cutoffDegrees, 0.0, 90.0, true, false, kLightCutoff),
-      numberKey("exponent", &L::exponent, 0.0, kMaxSpotExponent, false, false, kLightExponent), edge };
+  static const std::vector<SceneKey<L>> keys = [] {
+    std::vector<SceneKey<L>> out;
+#define SHADELAB_KEY(member, name, Kind, value, parameter, range, meaning)                                            \
+  out.push_back(lightKey(name, SceneKeyKind::Kind, &L::member, parameter, range));                                   \
+  out.back().what = meaning;
+    SHADELAB_LIGHT_KEYS(SHADELAB_KEY)
+#undef SHADELAB_KEY
+    return out;
   }();
   return keys;
 }
@@ -85,10 +147,15 @@ const std::vector<SceneKey<SceneLight>>& lightKeys()
 const std::vector<SceneKey<SceneMaterial>>& materialKeys()
 {
   using M = SceneMaterial;
-  static const std::vector<SceneKey<M>> keys{ vectorKey("ambient", SceneKeyKind::Colour, &M::ambient),
-    vectorKey("diffuse", SceneKeyKind::Colour, &M::diffuse), vectorKey("specular", SceneKeyKind::Colour, &M::specular),
-    vectorKey("emission", SceneKeyKind::Colour, &M::emission), numberKey("shininess", &M::shininess, 0.0, kMaxShininess),
-    textKey("diffuseTexture", &M::diffuseTexture, "must name an image file") };
+  static const std::vector<SceneKey<M>> keys{
+    described(vectorKey("ambient", SceneKeyKind::Colour, &M::ambient), "k_a"),
+    described(vectorKey("diffuse", SceneKeyKind::Colour, &M::diffuse), "k_d"),
+    described(vectorKey("specular", SceneKeyKind::Colour, &M::specular), "k_s"),
+    described(vectorKey("emission", SceneKeyKind::Colour, &M::emission), "k_e"),
+    described(numberKey("shininess", &M::shininess, 0.0, kMaxShininess), "n, the specular exponent"),
+    described(textKey("diffuseTexture", &M::diffuseTexture, "must name an image file"),
+      "Image (any OpenImageIO format) used as k_d through the mesh's texture coordinates; relative to the scene "
+      "file.") };
   return keys;
 }
 

@@ -6,7 +6,8 @@
  * material parameters. Everything else derives from these tables: the
  * SL_MODEL_* and SL_LIGHT_* constants of slLighting.glsl (generated from here
  * at build time, see GenerateGLSLTables.cxx), the C++ enums below, the name
- * lists of Scene.h, the scene keys (SceneKeys.h), the JSON schema test, the
+ * lists of Scene.h, the scene keys (SceneKeys.h), the JSON schema and the
+ * ParaView plugin's model menus (generated at build time), the
  * command line's and the viewer's choices, and every dispatch over a model or
  * a light type (an X-macro expansion, so a new row is a new case).
  *
@@ -14,7 +15,9 @@
  *
  * A row's position is its value (the enum value, the GLSL constant, the index
  * in the name lists). Adding a lighting model: one row here, its formula in
- * slLighting.glsl, its expected values in tests/core/ModelExpectations.h.
+ * slLighting.glsl, its expected values in tests/core/TableExpectations.h.
+ * Adding a light type: the same three files (a new parameter: its bit, its
+ * key row and the evaluated field it feeds, all here).
  */
 
 namespace shadelab
@@ -69,7 +72,7 @@ enum class SpecularLobe
 
 /// The values a light type can take besides its name, type, intensity and
 /// ambient colour (which every light has). A light-type row names its own;
-/// SceneKeys.h says how each is written in a scene file.
+/// SHADELAB_LIGHT_KEYS below says how each is written in a scene file.
 enum LightParameterBit : unsigned
 {
   kLightSpace = 1u << 0,       ///< world or camera coordinates
@@ -84,22 +87,54 @@ enum LightParameterBit : unsigned
 };
 
 /// The light as the lighting equation evaluates it: the fields of slLight
-/// (generated into slLightingTables.glsl), set from a SceneLight by
-/// toEvaluationLight(), copied field by field into the CPU kernel's batches
-/// and uploaded field by field as the render pass's uniforms.
-/// X(GLSL type: int, float or vec3, field, what).
+/// (generated into slLightingTables.glsl), each computed from a SceneLight's
+/// members (see SHADELAB_LIGHT_KEYS) by toEvaluationLight(), copied field by
+/// field into the CPU kernel's batches and uploaded field by field as the
+/// render pass's uniforms. X(GLSL type: int, float or vec3, field, what, its
+/// value: an expression of the SceneLight `light`).
 #define SHADELAB_LIGHT_FIELDS(X)                                                                                      \
-  X(int, type, "SL_LIGHT_*")                                                                                          \
-  X(vec3, position, "point and spot lights")                                                                          \
-  X(vec3, direction, "unit vector the light travels along (directional, spot)")                                       \
-  X(vec3, ambient, "per-light ambient colour (OpenGL style)")                                                         \
-  X(vec3, diffuse, "per-light diffuse colour")                                                                        \
-  X(vec3, specular, "per-light specular colour")                                                                      \
-  X(float, intensity, "scales all three colours")                                                                     \
-  X(vec3, attenuation, "c1, c2, c3 of min(1, 1 / (c1 + c2 d + c3 d^2))")                                              \
-  X(float, cosCutoff, "spot: cosine of the cutoff half-angle")                                                        \
-  X(float, cosInner, "spot: cosine where the smooth edge ends (== cosCutoff: hard edge)")                             \
-  X(float, exponent, "spot: cos^exponent falloff inside the cone")
+  X(int, type, "SL_LIGHT_*", static_cast<int>(light.type))                                                            \
+  X(vec3, position, "point and spot lights", light.position)                                                          \
+  X(vec3, direction, "unit vector the light travels along (directional, spot)",                                       \
+    glsl::slSafeNormalize(light.direction))                                                                           \
+  X(vec3, ambient, "per-light ambient colour (OpenGL style)", light.ambient)                                          \
+  X(vec3, diffuse, "per-light diffuse colour", light.diffuse)                                                         \
+  X(vec3, specular, "per-light specular colour", light.specular)                                                      \
+  X(float, intensity, "scales all three colours", light.intensity)                                                    \
+  X(vec3, attenuation, "c1, c2, c3 of min(1, 1 / (c1 + c2 d + c3 d^2))", light.attenuation)                           \
+  X(float, cosCutoff, "spot: cosine of the cutoff half-angle", glm::cos(glm::radians(light.cutoffDegrees)))           \
+  X(float, cosInner, "spot: cosine where the smooth edge ends (== cosCutoff: hard edge)",                             \
+    light.edgeDegrees > 0.0f ? glm::cos(glm::radians(glm::max(light.cutoffDegrees - light.edgeDegrees, 0.0f)))       \
+                             : glm::cos(glm::radians(light.cutoffDegrees)))                                           \
+  X(float, exponent, "spot: cos^exponent falloff inside the cone", light.exponent)
+
+/// The keys of a light in a scene file besides "type" (which every light has
+/// and which decides the others), in reading order ("edge" after the
+/// "cutoff" that bounds it): the members of SceneLight (Scene.h), the rows
+/// of lightKeys() (SceneKeys.h) that the scene reader, writer, range checks
+/// and JSON schema go through. X(SceneLight member, "key", SceneKeyKind,
+/// default, the LightParameterBit a type must take to take the key (0u:
+/// every type), range (SceneKeys.cxx: anyValue(), closed(lo, hi),
+/// openBelow(lo, hi), upToCutoff(lo, hi)), "what it means").
+#define SHADELAB_LIGHT_KEYS(X)                                                                                        \
+  X(name, "name", Text, std::string(), 0u, anyValue(), "a label for messages and editors")                           \
+  X(space, "space", Space, LightSpace::World, kLightSpace, anyValue(),                                                \
+    "world, or camera: VTK's camera-light convention, camera at (0,0,1) looking at the origin, view up +y")          \
+  X(intensity, "intensity", Number, 1.0f, 0u, closed(0.0, kMaxColourValue), "scales the light's colours")            \
+  X(ambient, "ambient", Colour, glm::vec3(0.0f), 0u, anyValue(),                                                      \
+    "per-light ambient colour (OpenGL style); an ambient light's colour")                                             \
+  X(diffuse, "diffuse", Colour, glm::vec3(1.0f), kLightDiffuse, anyValue(), "per-light diffuse colour")               \
+  X(specular, "specular", Colour, glm::vec3(1.0f), kLightSpecular, anyValue(), "per-light specular colour")           \
+  X(position, "position", Point, glm::vec3(0.0f, 0.0f, 1.0f), kLightPosition, anyValue(), "where the light is")      \
+  X(direction, "direction", Direction, glm::vec3(0.0f, 0.0f, -1.0f), kLightDirection, anyValue(),                     \
+    "where the light travels (a spot's axis); any non-zero length, normalised on use")                               \
+  X(attenuation, "attenuation", Coefficients, glm::vec3(1.0f, 0.0f, 0.0f), kLightAttenuation, anyValue(),             \
+    "c1, c2, c3 of f_att = min(1, 1 / (c1 + c2 d + c3 d^2)); all zero means none")                                  \
+  X(cutoffDegrees, "cutoff", Number, 30.0f, kLightCutoff, openBelow(0.0, 90.0), "half-angle of the cone, degrees")   \
+  X(exponent, "exponent", Number, 0.0f, kLightExponent, closed(0.0, kMaxSpotExponent),                                \
+    "cos^exponent falloff from the axis")                                                                             \
+  X(edgeDegrees, "edge", Number, 0.0f, kLightEdge, upToCutoff(0.0, 90.0),                                             \
+    "width in degrees of the smooth edge inside the cutoff, at most the cutoff; 0: hard edge")
 
 /// Light types. X(Enumerator, GLSL_SUFFIX, "scene-file name", parameters).
 /// GLSL: SL_LIGHT_<GLSL_SUFFIX>. A type without kLightDiffuse lights k_a

@@ -39,21 +39,52 @@ enum class ShadingFrequency
   Phong
 };
 
+/// What a scene key holds and how it is checked (SceneKeys.h).
+enum class SceneKeyKind
+{
+  Number,       ///< one number in [lo, hi]
+  Colour,       ///< 3 numbers, each in [0, kMaxColourValue]
+  Point,        ///< 3 finite numbers
+  Direction,    ///< 3 finite numbers, not all zero
+  Coefficients, ///< 3 numbers, each >= 0 (a light's attenuation)
+  Text,         ///< a string (not empty when whenEmpty is set)
+  Space         ///< a LightSpace name
+};
+
+/// The C++ type of a key of kind K.
+template <SceneKeyKind K>
+struct SceneKeyValue
+{
+  using type = glm::vec3;
+};
+template <>
+struct SceneKeyValue<SceneKeyKind::Number>
+{
+  using type = float;
+};
+template <>
+struct SceneKeyValue<SceneKeyKind::Text>
+{
+  using type = std::string;
+};
+template <>
+struct SceneKeyValue<SceneKeyKind::Space>
+{
+  using type = LightSpace;
+};
+
+/// A light: its type and one member per row of SHADELAB_LIGHT_KEYS
+/// (LightingTables.h), with the row's default: name, space, position,
+/// direction (where the light travels; not normalised), ambient, diffuse,
+/// specular, intensity, attenuation (c1, c2, c3), cutoffDegrees (spot
+/// half-angle, in (0, 90]), exponent (spot falloff, >= 0), edgeDegrees
+/// (width of the smooth spot edge, in [0, cutoff]).
 struct SceneLight
 {
-  std::string name;
   LightType type = LightType::Directional;
-  LightSpace space = LightSpace::World;
-  glm::vec3 position{ 0.0f, 0.0f, 1.0f };
-  glm::vec3 direction{ 0.0f, 0.0f, -1.0f }; ///< where the light travels; not normalised
-  glm::vec3 ambient{ 0.0f };
-  glm::vec3 diffuse{ 1.0f };
-  glm::vec3 specular{ 1.0f };
-  float intensity = 1.0f;
-  glm::vec3 attenuation{ 1.0f, 0.0f, 0.0f }; ///< c1, c2, c3
-  float cutoffDegrees = 30.0f;               ///< spot half-angle, in (0, 90]
-  float exponent = 0.0f;                     ///< spot falloff exponent, >= 0
-  float edgeDegrees = 0.0f;                  ///< width of the smooth spot edge, in [0, cutoff]
+#define SHADELAB_MEMBER(member, key, Kind, value, ...) SceneKeyValue<SceneKeyKind::Kind>::type member = value;
+  SHADELAB_LIGHT_KEYS(SHADELAB_MEMBER)
+#undef SHADELAB_MEMBER
 };
 
 struct SceneMaterial

@@ -5,7 +5,7 @@
  * @brief Reading and writing JSON scene files with strict validation.
  *
  * The format is documented in docs/scene-format.md and, machine-readably, in
- * data/schema/scene.schema.json. Reading rejects malformed JSON, duplicate and
+ * scene.schema.json, which the build generates from SceneKeys.h. Reading rejects malformed JSON, duplicate and
  * unknown keys, wrong types and out-of-range values, each with one line of the
  * form `FILE: KEY.PATH: problem` (or `FILE:LINE:COLUMN: problem` for syntax).
  */

@@ -6,7 +6,8 @@
  * cameras: each key's name, kind, range, default, which light types take it
  * and which field it fills. The scene reader and writer (SceneFile.cxx), the
  * range check of scenes built in code (SceneLimits.cxx) and the JSON schema
- * test all go through these tables.
+ * (generator/GenerateSceneSchema.cxx) all go through these tables. The
+ * light keys are the rows of SHADELAB_LIGHT_KEYS (LightingTables.h).
  *
  * Defaults are those of a default-constructed SceneMaterial and SceneCamera,
  * and defaultLight() for lights.
@@ -20,18 +21,6 @@
 
 namespace shadelab
 {
-
-/// What a key holds and how it is checked.
-enum class SceneKeyKind
-{
-  Number,       ///< one number in [lo, hi]
-  Colour,       ///< 3 numbers, each in [0, kMaxColourValue]
-  Point,        ///< 3 finite numbers
-  Direction,    ///< 3 finite numbers, not all zero
-  Coefficients, ///< 3 numbers, each >= 0 (a light's attenuation)
-  Text,         ///< a string (not empty when whenEmpty is set)
-  Space         ///< a LightSpace name
-};
 
 /// One key of the object @p Struct (SceneLight, SceneMaterial, SceneCamera).
 /// Exactly one of the field pointers is set, the one of its kind.
@@ -53,9 +42,12 @@ struct SceneKey
   glm::vec3 Struct::*vector = nullptr;
   std::string Struct::*text = nullptr;
   LightSpace Struct::*space = nullptr;
+  /// What the key means, for the JSON schema (null: nothing to add).
+  const char* what = nullptr;
 };
 
-/// The keys of a light besides "type" (read first, it decides the others).
+/// The keys of a light besides "type" (read first, it decides the others):
+/// the rows of SHADELAB_LIGHT_KEYS (LightingTables.h).
 const std::vector<SceneKey<SceneLight>>& lightKeys();
 /// The keys of "material".
 const std::vector<SceneKey<SceneMaterial>>& materialKeys();
