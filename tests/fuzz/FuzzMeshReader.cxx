@@ -6,6 +6,7 @@
 
 #include "slConnectivityCheck.h"
 #include "slMeshReader.h"
+#include "slUpdateOrThrow.h"
 
 #include <vtkNew.h>
 #include <vtkPoints.h>
@@ -19,9 +20,16 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   const std::string path = fuzzInputFile(data, size, SL_FUZZ_EXTENSION);
   vtkNew<slMeshReader> reader;
   reader->SetFileName(path.c_str());
-  reader->Update();
+  bool failed = false;
+  try
+  {
+    slUpdateOrThrow(reader);
+  }
+  catch (const shadelab::Error&)
+  {
+    failed = true;
+  }
   vtkPolyData* mesh = reader->GetOutput();
-  const bool failed = *reader->GetErrorMessage() != '\0';
   if (failed != (mesh->GetNumberOfPoints() == 0) || !slConnectivityProblem(mesh).empty())
   {
     std::abort();
