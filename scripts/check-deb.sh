@@ -39,7 +39,7 @@ PY
 import shadelab
 assert shadelab.__file__ == '/usr/lib/python3/dist-packages/shadelab/__init__.py', shadelab.__file__
 scene = shadelab.slScene()
-assert scene.ReadFile('/usr/share/shadelab/scenes/default.json'), scene.GetErrorMessage()
+assert scene.ReadFile('/usr/share/shadelab/scenes/default.json')
 print('check-deb: import shadelab from', shadelab.__file__, 'with', scene.GetNumberOfLights(), 'lights')"
 
 cmake -S tests/install/downstream -B "$work/downstream" -DCMAKE_BUILD_TYPE=Release > "$work/cmake.log" \

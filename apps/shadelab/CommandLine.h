@@ -8,6 +8,8 @@
  * positional arguments. Every problem is a UsageError whose text is one line.
  */
 
+#include "shadelab/Error.h"
+
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -24,11 +26,8 @@ struct UsageError : std::runtime_error
   using std::runtime_error::runtime_error;
 };
 
-/// Bad input or a failed job: exit status 1, message printed as one line.
-struct JobError : std::runtime_error
-{
-  using std::runtime_error::runtime_error;
-};
+// Bad input or a failed job is a shadelab::Error (shadelab/Error.h): exit
+// status 1, its one-line message printed.
 
 /// One option a subcommand accepts.
 struct OptionSpec

@@ -19,7 +19,7 @@ struct Command
   const char* name;
   const char* summary;
   /// Runs with the arguments after the subcommand name; returns the exit
-  /// status or throws UsageError / JobError.
+  /// status or throws UsageError / shadelab::Error.
   int (*run)(const std::vector<std::string>& args);
 };
 

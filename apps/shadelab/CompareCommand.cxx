@@ -7,6 +7,7 @@
 #include "shadelab/Scene.h"
 #include "slComparisonRenderer.h"
 #include "slScene.h"
+#include "slUpdateOrThrow.h"
 
 #include <vtkNew.h>
 #include <vtkPolyData.h>
@@ -73,10 +74,7 @@ int runCompare(const std::vector<std::string>& args)
   {
     comparison->SetDifference(1, 2, amplify);
   }
-  if (!comparison->Render())
-  {
-    throw JobError(comparison->GetErrorMessage());
-  }
+  slCallOrThrow(comparison, [&] { return comparison->Render(); });
   writeImage(comparison->GetImage(), cl.get("output"));
   std::cout << "wrote " << cl.get("output") << "\n";
   return 0;

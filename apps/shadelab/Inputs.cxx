@@ -8,6 +8,7 @@
 #include "slMeshReader.h"
 #include "slMeshWriter.h"
 #include "slScene.h"
+#include "slUpdateOrThrow.h"
 
 #include <vtkImageData.h>
 #include <vtkNew.h>
@@ -29,11 +30,7 @@ vtkSmartPointer<vtkPolyData> loadMesh(const std::string& path)
 {
   vtkNew<slMeshReader> reader;
   reader->SetFileName(path.c_str());
-  reader->Update();
-  if (*reader->GetErrorMessage())
-  {
-    throw JobError(reader->GetErrorMessage());
-  }
+  slUpdateOrThrow(reader);
   vtkSmartPointer<vtkPolyData> mesh = vtkSmartPointer<vtkPolyData>::New();
   mesh->ShallowCopy(reader->GetOutput());
   return mesh;
@@ -46,9 +43,9 @@ vtkSmartPointer<slScene> loadScene(const std::string& path)
   {
     scene->SetScene(shadelab::defaultScene());
   }
-  else if (!scene->ReadFile(path.c_str()))
+  else
   {
-    throw JobError(scene->GetErrorMessage());
+    slCallOrThrow(scene, [&] { return scene->ReadFile(path.c_str()); });
   }
   return scene;
 }
@@ -131,10 +128,7 @@ void writeMesh(vtkPolyData* mesh, const std::string& path, const CommandLine& cl
   writer->SetCompression(compression);
   writer->SetInputData(mesh);
   writer->SetFileName(path.c_str());
-  if (!writer->Write())
-  {
-    throw JobError(writer->GetErrorMessage());
-  }
+  slCallOrThrow(writer, [&] { return writer->Write(); });
 }
 
 void writeImage(vtkImageData* image, const std::string& path)
@@ -142,10 +136,7 @@ void writeImage(vtkImageData* image, const std::string& path)
   vtkNew<slImageWriter> writer;
   writer->SetInputData(image);
   writer->SetFileName(path.c_str());
-  if (!writer->Write())
-  {
-    throw JobError(writer->GetErrorMessage());
-  }
+  slCallOrThrow(writer, [&] { return writer->Write(); });
 }
 
 } // namespace app

@@ -3,7 +3,7 @@
 /**
  * @file Inputs.h
  * @brief Loading what subcommands share: meshes, scenes, option overrides,
- * and writing images, each turning failures into one-line JobErrors.
+ * and writing images, each turning failures into one-line shadelab::Errors.
  */
 
 #include "shadelab/Scene.h"
@@ -26,11 +26,11 @@ struct OptionSpec;
 /// The mesh formats loadMesh() reads, as one phrase for help and messages.
 const char* meshFormatsText();
 
-/// Reads a mesh with slMeshReader. Throws JobError ("FILE: problem").
+/// Reads a mesh with slMeshReader. Throws shadelab::Error ("FILE: problem").
 vtkSmartPointer<vtkPolyData> loadMesh(const std::string& path);
 
 /// Reads a scene file, or returns the built-in default scene for "".
-/// Throws JobError ("FILE: KEY.PATH: problem").
+/// Throws shadelab::Error ("FILE: KEY.PATH: problem").
 vtkSmartPointer<slScene> loadScene(const std::string& path);
 
 /// The help of --model: what it does and every model's name (LightingTables.h).
@@ -50,10 +50,10 @@ void parseSize(const std::string& text, int& width, int& height);
 OptionSpec meshCompressionOption();
 
 /// Writes a mesh all-or-nothing (VTP, VTK, PLY, OBJ, STL), VTP compressed
-/// as --compress of @p cl says. Throws JobError.
+/// as --compress of @p cl says. Throws shadelab::Error.
 void writeMesh(vtkPolyData* mesh, const std::string& path, const CommandLine& cl);
 
-/// Writes an image all-or-nothing. Throws JobError.
+/// Writes an image all-or-nothing. Throws shadelab::Error.
 void writeImage(vtkImageData* image, const std::string& path);
 
 } // namespace app

@@ -6,6 +6,7 @@
 #include "LightingOptions.h"
 #include "OutputFormats.h"
 #include "slScene.h"
+#include "slUpdateOrThrow.h"
 
 #include "slImageReader.h"
 #include "slRadianceFilter.h"
@@ -54,11 +55,7 @@ int runLight(const std::vector<std::string>& args)
   if (cl.has("diffuse-texture"))
   {
     texture->SetFileName(cl.get("diffuse-texture").c_str());
-    texture->Update();
-    if (*texture->GetErrorMessage())
-    {
-      throw JobError(texture->GetErrorMessage());
-    }
+    slUpdateOrThrow(texture);
     filter->SetDiffuseTexture(texture->GetOutput());
   }
   return runMeshJobs("light", jobs, [&](const MeshJob& job) {

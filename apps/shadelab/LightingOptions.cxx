@@ -6,6 +6,7 @@
 #include "slLitFilter.h"
 #include "slPolyDataNormals.h"
 #include "slScene.h"
+#include "slUpdateOrThrow.h"
 
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -38,7 +39,7 @@ vtkSmartPointer<vtkPolyData> loadMeshWithNormals(const std::string& path)
   vtkSmartPointer<vtkPolyData> mesh = loadMesh(path);
   if (mesh->GetNumberOfPoints() == 0)
   {
-    throw JobError(path + ": the mesh is empty (no points)");
+    throw Error(path + ": the mesh is empty (no points)");
   }
   if (mesh->GetPointData()->GetNormals())
   {
@@ -51,11 +52,7 @@ vtkSmartPointer<vtkPolyData> loadMeshWithNormals(const std::string& path)
   normals->SplittingOff();
   normals->ConsistencyOn();
   normals->WeldCoincidentPointsOn();
-  normals->Update();
-  if (*normals->GetErrorMessage())
-  {
-    throw JobError(normals->GetErrorMessage());
-  }
+  slUpdateOrThrow(normals);
   vtkSmartPointer<vtkPolyData> out = normals->GetOutput();
   return out;
 }
@@ -71,10 +68,14 @@ vtkSmartPointer<slScene> configureLitFilter(const CommandLine& cl, slLitFilter* 
 
 void runLitFilter(slLitFilter* filter, const std::string& meshPath)
 {
-  filter->Update();
-  std::string message = filter->GetErrorMessage();
-  if (!message.empty())
+  try
   {
+    slUpdateOrThrow(filter);
+  }
+  catch (const Error& e)
+  {
+    // The filter knows its input only as "input mesh"; the command knows the file.
+    std::string message = e.what();
     const std::string generic = "input mesh";
     if (message.compare(0, generic.size(), generic) == 0)
     {
@@ -86,7 +87,7 @@ void runLitFilter(slLitFilter* filter, const std::string& meshPath)
     {
       message.replace(at, flag.size(), "(--allow-zero-normals lights such points without direction)");
     }
-    throw JobError(message);
+    throw Error(message);
   }
 }
 
@@ -118,10 +119,7 @@ void writeFieldImageIfAsked(
   }
   image->SetPanelWidth(480);
   image->SetPanelHeight(360);
-  if (!image->Render())
-  {
-    throw JobError(cl.get("image") + ": " + image->GetErrorMessage());
-  }
+  slCallOrThrow(image, [&] { return image->Render(); }, cl.get("image") + ": ");
   writeImage(image->GetImage(), cl.get("image"));
   std::cout << "wrote " << cl.get("image") << "\n";
 }

@@ -34,7 +34,7 @@ vtkSmartPointer<vtkPolyData> loadMeshWithNormals(const std::string& path);
 /// Scene (with --model) and --allow-zero-normals onto @p filter; returns the scene.
 vtkSmartPointer<slScene> configureLitFilter(const CommandLine& cl, slLitFilter* filter);
 
-/// Updates @p filter; throws JobError with its one-line message on failure,
+/// Updates @p filter; throws shadelab::Error with its one-line message on failure,
 /// "input mesh" replaced by @p meshPath.
 void runLitFilter(slLitFilter* filter, const std::string& meshPath);
 

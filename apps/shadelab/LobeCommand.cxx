@@ -13,6 +13,7 @@
 #include "slLobesOnMesh.h"
 #include "slScene.h"
 #include "slSceneRenderer.h"
+#include "slUpdateOrThrow.h"
 
 #include <vtkAbstractArray.h>
 #include <vtkIdList.h>
@@ -64,14 +65,7 @@ void writeTable(vtkTable* table, const std::string& path)
     }
     csv << "\n";
   }
-  try
-  {
-    writeFileAtomically(path, csv.str());
-  }
-  catch (const std::runtime_error& e)
-  {
-    throw JobError(e.what());
-  }
+  writeFileAtomically(path, csv.str());
 }
 
 std::vector<OptionSpec> lobeOptions()
@@ -123,7 +117,7 @@ int runLobe(const std::vector<std::string>& args)
   {
     vtkNew<slAlbedoTable> table;
     table->SetShininess(cl.getNumber("shininess", 20.0, 0.0, 1e4));
-    table->Update();
+    slUpdateOrThrow(table);
     writeTable(table->GetOutput(), output);
   }
   else if (cl.positional().empty() && kind == OutputKind::Image)
@@ -139,10 +133,7 @@ int runLobe(const std::vector<std::string>& args)
       }
     }
     applyLobeOptions(cl, image->GetLobeParameters());
-    if (!image->Render())
-    {
-      throw JobError(output + ": " + image->GetErrorMessage());
-    }
+    slCallOrThrow(image, [&] { return image->Render(); }, output + ": ");
     writeImage(image->GetImage(), output);
   }
   else if (cl.positional().empty())
@@ -150,7 +141,7 @@ int runLobe(const std::vector<std::string>& args)
     vtkNew<slBRDFLobeSource> lobe;
     lobe->SetModel(modelNumber(cl));
     applyLobeOptions(cl, lobe);
-    lobe->Update();
+    slUpdateOrThrow(lobe);
     writeMesh(lobe->GetOutput(0), output, cl);
     if (cl.has("slice"))
     {
@@ -182,10 +173,7 @@ int runLobe(const std::vector<std::string>& args)
       renderer->SetScene(scene);
       renderer->SetMesh(mesh);
       renderer->AddOverlay(lobes->GetOutput(), 1.0, 0.55, 0.1);
-      if (!renderer->Render())
-      {
-        throw JobError(output + ": " + renderer->GetErrorMessage());
-      }
+      slCallOrThrow(renderer, [&] { return renderer->Render(); }, output + ": ");
       writeImage(renderer->GetImage(), output);
     }
     else

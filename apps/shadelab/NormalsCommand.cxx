@@ -20,7 +20,7 @@ namespace app
 
 namespace
 {
-/// Normals of one mesh, written to @p output. Throws JobError.
+/// Normals of one mesh, written to @p output. Throws shadelab::Error.
 void computeNormals(const CommandLine& cl, const MeshJob& job)
 {
   vtkNew<slPolyDataNormals> normals;

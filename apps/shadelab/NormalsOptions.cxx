@@ -4,6 +4,7 @@
 
 #include "slPolyDataFilter.h"
 #include "slPolyDataNormals.h"
+#include "slUpdateOrThrow.h"
 
 #include <vtkNew.h>
 #include <vtkPolyData.h>
@@ -53,11 +54,7 @@ void applyNormalsOptions(const CommandLine& cl, slPolyDataNormals* filter)
 
 vtkSmartPointer<vtkPolyData> runMeshFilter(slPolyDataFilter* filter, const std::string& meshPath)
 {
-  filter->Update();
-  if (*filter->GetErrorMessage())
-  {
-    throw JobError(meshPath + ": " + filter->GetErrorMessage());
-  }
+  slUpdateOrThrow(filter, meshPath + ": ");
   auto out = vtkSmartPointer<vtkPolyData>::New();
   out->ShallowCopy(vtkPolyData::SafeDownCast(filter->GetOutputDataObject(0)));
   return out;

@@ -3,7 +3,7 @@
 /**
  * @file NormalsOptions.h
  * @brief What `shadelab normals`, `tangents` and `detail` share: the normals
- * options, and running a filter with its error turned into a JobError.
+ * options, and running a filter with its error turned into a shadelab::Error.
  */
 
 #include "CommandLine.h"
@@ -29,7 +29,7 @@ std::vector<OptionSpec> normalsOptionSpecs();
 void applyNormalsOptions(const CommandLine& cl, slPolyDataNormals* filter);
 
 /// Updates @p filter (fed with the mesh read from @p meshPath) and returns a
-/// copy of its output. Throws JobError("MESH: problem") if it reports an error.
+/// copy of its output. Throws shadelab::Error("MESH: problem") if it reports an error.
 vtkSmartPointer<vtkPolyData> runMeshFilter(slPolyDataFilter* filter, const std::string& meshPath);
 
 /// Prints "shadelab CMD: note: ..." when @p mesh has vertex or line cells.

@@ -8,6 +8,7 @@
 #include "slLightingPass.h"
 #include "slScene.h"
 #include "slSceneRenderer.h"
+#include "slUpdateOrThrow.h"
 
 #include <vtkNew.h>
 #include <vtkPolyData.h>
@@ -81,7 +82,7 @@ int runRender(const std::vector<std::string>& args)
   if (cl.has("light") && cl.getIndex("light", 0, 0, slLightingPass::GetMaximumNumberOfLights() - 1) >=
       scene->GetNumberOfLights())
   {
-    throw JobError("option --light: light " + cl.get("light") + " is out of range: the scene has " +
+    throw Error("option --light: light " + cl.get("light") + " is out of range: the scene has " +
       std::to_string(scene->GetNumberOfLights()) + " lights");
   }
   int width = 0, height = 0;
@@ -98,10 +99,7 @@ int runRender(const std::vector<std::string>& args)
   renderer->SetMesh(mesh);
   renderer->SetWidth(width);
   renderer->SetHeight(height);
-  if (!renderer->Render())
-  {
-    throw JobError(renderer->GetErrorMessage());
-  }
+  slCallOrThrow(renderer, [&] { return renderer->Render(); });
   if (cl.has("vtk-lighting") && !cl.has("quiet"))
   {
     std::istringstream notes(scene->GetConversionNotes());

@@ -7,6 +7,7 @@
 #include "slLobeImageRenderer.h"
 #include "slLobesOnMesh.h"
 #include "slScene.h"
+#include "slUpdateOrThrow.h"
 
 #include "shadelab/LightingGLSL.h"
 
@@ -137,10 +138,13 @@ void BrdfPanel::update()
   lobes->SetPointIds(ids);
   lobes->SetScale(0.25);
   lobes->ZeroNormalsAreErrorsOff(); // the mesh may have isolated points; the picked one has a normal
-  lobes->Update();
-  if (*lobes->GetErrorMessage())
+  try
   {
-    emit problem(QString::fromUtf8(lobes->GetErrorMessage()));
+    slUpdateOrThrow(lobes);
+  }
+  catch (const shadelab::Error& e)
+  {
+    emit problem(QString::fromUtf8(e.what()));
     return;
   }
 
@@ -180,9 +184,13 @@ void BrdfPanel::update()
   parameters->SetSpecularWeight(glsl::slLuminance(scene.material.specular));
   picture->SetPanelWidth(320);
   picture->SetPanelHeight(240);
-  if (!picture->Render())
+  try
   {
-    emit problem(QString::fromUtf8(picture->GetErrorMessage()));
+    slCallOrThrow(picture, [&] { return picture->Render(); });
+  }
+  catch (const shadelab::Error& e)
+  {
+    emit problem(QString::fromUtf8(e.what()));
     return;
   }
   this->Picture->setPixmap(QPixmap::fromImage(toQImage(picture->GetImage())));

@@ -7,6 +7,7 @@
 #include "slCosineField.h"
 #include "slRadianceFilter.h"
 #include "slScene.h"
+#include "slUpdateOrThrow.h"
 
 #include <vtkPolyData.h>
 
@@ -182,10 +183,13 @@ void FieldsPanel::showField()
     filter->SetScene(this->Document->vtkScene());
     filter->SetCamera(this->View->camera());
     filter->ZeroNormalsAreErrorsOff();
-    filter->Update();
-    if (*filter->GetErrorMessage())
+    try
     {
-      emit problem(QString::fromUtf8(filter->GetErrorMessage()));
+      slUpdateOrThrow(filter);
+    }
+    catch (const shadelab::Error& e)
+    {
+      emit problem(QString::fromUtf8(e.what()));
       return;
     }
     fields = filter->GetOutput();

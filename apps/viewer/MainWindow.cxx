@@ -11,6 +11,7 @@
 
 #include "slImageWriter.h"
 #include "slMeshReader.h"
+#include "slUpdateOrThrow.h"
 
 #include <vtkImageData.h>
 #include <vtkNew.h>
@@ -169,10 +170,13 @@ bool MainWindow::saveScreenshot(const QString& path, QString* error)
   const QByteArray file = path.toLocal8Bit();
   writer->SetFileName(file.constData());
   writer->SetInputData(image);
-  writer->Write();
-  if (*writer->GetErrorMessage())
+  try
   {
-    const QString problem = QString::fromUtf8(writer->GetErrorMessage());
+    slCallOrThrow(writer, [&] { return writer->Write(); });
+  }
+  catch (const shadelab::Error& e)
+  {
+    const QString problem = QString::fromUtf8(e.what());
     this->showProblem(problem);
     return fail(problem, error);
   }

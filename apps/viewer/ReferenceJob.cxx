@@ -2,6 +2,7 @@
 
 #include "slRadianceReference.h"
 #include "slScene.h"
+#include "slUpdateOrThrow.h"
 
 #include <vtkCamera.h>
 #include <vtkCommand.h>
@@ -56,9 +57,16 @@ bool ReferenceJob::start(vtkPolyData* mesh, const Scene& scene, vtkCamera* camer
   this->Cancelled = false;
   vtkSmartPointer<slRadianceReference> filter = this->Filter;
   this->Thread = QThread::create([this, filter] {
-    filter->Update();
+    QString error;
+    try
+    {
+      slUpdateOrThrow(filter);
+    }
+    catch (const shadelab::Error& e)
+    {
+      error = QString::fromUtf8(e.what());
+    }
     vtkSmartPointer<vtkPolyData> result = filter->GetOutput();
-    QString error = QString::fromUtf8(filter->GetErrorMessage());
     if (this->Cancelled)
     {
       error = tr("cancelled");

@@ -9,6 +9,7 @@
 #include "slRenderNormals.h"
 #include "slScene.h"
 #include "slSceneRenderer.h"
+#include "slUpdateOrThrow.h"
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
@@ -163,11 +164,13 @@ vtkPolyData* SceneView::meshWithNormals()
   {
     NormalsSettings settings = this->Document->normals();
     settings.replace = false; // the rendered mesh's normals are the ones to use
-    std::string error;
-    this->MeshWithNormals = slWithRenderNormals(this->RenderedMesh, error, settings);
-    if (!this->MeshWithNormals)
+    try
     {
-      this->report(QString::fromStdString(error));
+      this->MeshWithNormals = slWithRenderNormals(this->RenderedMesh, settings);
+    }
+    catch (const shadelab::Error& e)
+    {
+      this->report(QString::fromStdString(e.what()));
     }
   }
   return this->MeshWithNormals;
@@ -278,9 +281,13 @@ void SceneView::buildLitPanels()
     {
       panel->AddOverlay(this->Lobe, 1.0, 0.55, 0.1);
     }
-    if (!panel->Prepare())
+    try
     {
-      this->report(QString::fromStdString(panel->GetErrorMessage()));
+      slCallOrThrow(panel, [&] { return panel->Prepare(); });
+    }
+    catch (const shadelab::Error& e)
+    {
+      this->report(QString::fromStdString(e.what()));
       this->Renderers.clear();
       this->Panels.clear();
       return;
@@ -313,13 +320,16 @@ void SceneView::buildLitPanels()
 
 void SceneView::buildFieldPanel()
 {
-  std::string error;
   const qreal ratio = this->devicePixelRatioF();
-  vtkSmartPointer<vtkRenderer> renderer = slFieldImageRenderer::NewFieldRenderer(this->FieldMesh,
-    this->FieldName.toStdString(), static_cast<int>(this->width() * ratio), static_cast<int>(this->height() * ratio), error);
-  if (!renderer)
+  vtkSmartPointer<vtkRenderer> renderer;
+  try
   {
-    this->report(QString::fromStdString(error));
+    renderer = slFieldImageRenderer::NewFieldRenderer(this->FieldMesh, this->FieldName.toStdString(),
+      static_cast<int>(this->width() * ratio), static_cast<int>(this->height() * ratio));
+  }
+  catch (const shadelab::Error& e)
+  {
+    this->report(QString::fromStdString(e.what()));
     return;
   }
   const glm::vec3& background = this->Document->scene().background;

@@ -2,6 +2,7 @@
 
 #include "slMeshReader.h"
 #include "slScene.h"
+#include "slUpdateOrThrow.h"
 
 #include "shadelab/DefaultScene.h"
 
@@ -27,10 +28,13 @@ bool ViewerDocument::openMesh(const QString& path, QString& error)
   vtkNew<slMeshReader> reader;
   const QByteArray file = path.toLocal8Bit();
   reader->SetFileName(file.constData());
-  reader->Update();
-  if (*reader->GetErrorMessage())
+  try
   {
-    error = QString::fromLocal8Bit(reader->GetErrorMessage());
+    slUpdateOrThrow(reader);
+  }
+  catch (const shadelab::Error& e)
+  {
+    error = QString::fromLocal8Bit(e.what());
     return false;
   }
   this->Mesh = reader->GetOutput();
@@ -43,9 +47,13 @@ bool ViewerDocument::openScene(const QString& path, QString& error)
 {
   auto read = vtkSmartPointer<slScene>::New();
   const QByteArray file = path.toLocal8Bit();
-  if (!read->ReadFile(file.constData()))
+  try
   {
-    error = QString::fromLocal8Bit(read->GetErrorMessage());
+    slCallOrThrow(read, [&] { return read->ReadFile(file.constData()); });
+  }
+  catch (const shadelab::Error& e)
+  {
+    error = QString::fromLocal8Bit(e.what());
     return false;
   }
   this->SceneObject = read;
@@ -57,9 +65,13 @@ bool ViewerDocument::openScene(const QString& path, QString& error)
 bool ViewerDocument::saveScene(const QString& path, QString& error)
 {
   const QByteArray file = path.toLocal8Bit();
-  if (!this->SceneObject->WriteFile(file.constData()))
+  try
   {
-    error = QString::fromLocal8Bit(this->SceneObject->GetErrorMessage());
+    slCallOrThrow(this->SceneObject, [&] { return this->SceneObject->WriteFile(file.constData()); });
+  }
+  catch (const shadelab::Error& e)
+  {
+    error = QString::fromLocal8Bit(e.what());
     return false;
   }
   this->ScenePath = path;

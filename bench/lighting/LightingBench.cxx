@@ -16,6 +16,7 @@
 #include "slRadianceFilter.h"
 #include "slRadianceReference.h"
 #include "slScene.h"
+#include "slUpdateOrThrow.h"
 
 #include <vtkFloatArray.h>
 #include <vtkNew.h>
@@ -165,10 +166,13 @@ vtkSmartPointer<vtkPolyData> runReference(vtkPolyData* mesh, int strategy, int s
   reference->SetStrategy(strategy);
   reference->SetSamplesPerPoint(samples);
   reference->SetSeed(seed);
-  reference->Update();
-  if (*reference->GetErrorMessage())
+  try
   {
-    std::fprintf(stderr, "%s\n", reference->GetErrorMessage());
+    slUpdateOrThrow(reference);
+  }
+  catch (const shadelab::Error& e)
+  {
+    std::fprintf(stderr, "%s\n", e.what());
     std::exit(1);
   }
   vtkSmartPointer<vtkPolyData> out = reference->GetOutput();

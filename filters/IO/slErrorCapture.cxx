@@ -48,6 +48,11 @@ void slErrorCapture::Watch(vtkObject* object)
   object->AddObserver(vtkCommand::WarningEvent, this);
 }
 
+void slErrorCapture::Unwatch(vtkObject* object)
+{
+  object->RemoveObserver(this);
+}
+
 void slErrorCapture::Execute(vtkObject*, unsigned long eventId, void* callData)
 {
   if (callData && (eventId == vtkCommand::ErrorEvent || eventId == vtkCommand::WarningEvent))

@@ -20,7 +20,7 @@
  *
  * Internal helper: not wrapped.
  *
- * @sa slOutputWindow
+ * @sa slOutputWindow slUpdateOrThrow
  */
 
 #include "ShadeLabIOModule.h"
@@ -39,6 +39,9 @@ public:
 
   /// Observe ErrorEvent and WarningEvent of @p object (which then prints nothing).
   void Watch(vtkObject* object);
+  /// Stop observing @p object; needed when it outlives the operation, since
+  /// it holds a reference that keeps this capture live.
+  void Unwatch(vtkObject* object);
 
   void Execute(vtkObject* caller, unsigned long eventId, void* callData) override;
 

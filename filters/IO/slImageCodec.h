@@ -25,7 +25,9 @@ struct slImageHeader
 };
 
 /// The image functions; every one returns false with a one-line reason in
-/// @p error (which may be empty when the library gives none).
+/// @p error (which may be empty when the library gives none). A C-style
+/// interface on purpose: no exception crosses the dlopen boundary;
+/// slImageReader and slImageWriter turn a false into their VTK error.
 struct slImageCodec
 {
   /// Forgets what the library caches for @p path (the file may have changed).

@@ -83,39 +83,34 @@ int slImageReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInfor
 {
   vtkImageData* output = vtkImageData::GetData(outputVector);
   output->Initialize();
-  this->ErrorMessage.clear();
   const std::string name = this->FileName ? this->FileName : "";
   if (name.empty())
   {
-    this->ErrorMessage = "(no file name): no image file given";
-    vtkErrorMacro(<< this->ErrorMessage);
+    vtkErrorMacro(<< "(no file name): no image file given");
     return 0;
   }
 
   std::error_code ignored;
   if (std::filesystem::is_directory(name, ignored))
   {
-    this->ErrorMessage = name + ": cannot read image: it is a directory";
-    vtkErrorMacro(<< this->ErrorMessage);
+    vtkErrorMacro(<< name << ": cannot read image: it is a directory");
     return 0;
   }
   const std::string fileProblem = slImageFileProblem(name);
   if (!fileProblem.empty())
   {
-    this->ErrorMessage = name + ": cannot read image: " + fileProblem;
-    vtkErrorMacro(<< this->ErrorMessage);
+    vtkErrorMacro(<< name << ": cannot read image: " << fileProblem);
     return 0;
   }
   std::string codecProblem;
   const slImageCodec* codec = slLoadImageCodec(codecProblem);
   if (!codec)
   {
-    this->ErrorMessage = name + ": cannot read image: " + codecProblem;
-    vtkErrorMacro(<< this->ErrorMessage);
+    vtkErrorMacro(<< name << ": cannot read image: " << codecProblem);
     return 0;
   }
   // The image libraries' own lines on stderr are held back: the problem is
-  // reported once, in ErrorMessage.
+  // reported once, in the error.
   slStderrCapture quiet;
   codec->Forget(name);
   slImageHeader header;
@@ -156,8 +151,7 @@ int slImageReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInfor
   }
   if (!reason.empty())
   {
-    this->ErrorMessage = name + ": cannot read image: " + reason;
-    vtkErrorMacro(<< this->ErrorMessage);
+    vtkErrorMacro(<< name << ": cannot read image: " << reason);
     return 0;
   }
   output->SetExtent(0, header.Width - 1, 0, header.Height - 1, 0, 0);

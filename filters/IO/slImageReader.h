@@ -9,8 +9,9 @@
  * Rows are flipped so that row 0 is the bottom of the picture, as VTK and
  * texture coordinates expect.
  *
- * A missing, unreadable or corrupt file gives an error through vtkErrorMacro,
- * an empty output, and a one-line reason naming the file in GetErrorMessage().
+ * A missing, unreadable or corrupt file gives an error through vtkErrorMacro
+ * (one line naming the file), an empty output and a failed update
+ * (slUpdateOrThrow() gives the line back).
  *
  * @sa slImageWriter vtkTexture
  */
@@ -41,9 +42,6 @@ public:
   vtkBooleanMacro(OutputFloat, bool);
   ///@}
 
-  /// The reason the last read failed, or "" after success.
-  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
-
 protected:
   slImageReader();
   ~slImageReader() override;
@@ -57,7 +55,6 @@ private:
 
   char* FileName = nullptr;
   bool OutputFloat = false;
-  std::string ErrorMessage;
 };
 
 #endif

@@ -1,4 +1,5 @@
 #include "slImageWriter.h"
+#include "slCoreBoundary.h"
 
 #include "shadelab/AtomicFile.h"
 #include "shadelab/MemoryFile.h"
@@ -6,6 +7,7 @@
 #include "slImageCodec.h"
 
 #include <vtkDataArray.h>
+#include <vtkExecutive.h>
 #include <vtkImageData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -13,7 +15,6 @@
 #include <vtkPointData.h>
 
 
-#include <stdexcept>
 
 vtkStandardNewMacro(slImageWriter);
 
@@ -44,34 +45,30 @@ int slImageWriter::FillOutputPortInformation(int, vtkInformation*)
 
 bool slImageWriter::Write()
 {
-  this->ErrorMessage.clear();
   this->Modified();
-  this->Update();
-  return this->ErrorMessage.empty();
+  return this->GetExecutive()->Update() != 0;
 }
 
 int slImageWriter::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
   vtkImageData* image = vtkImageData::GetData(inputVector[0]);
-  return this->WriteImage(image) ? 1 : 0;
+  return slRunCore(this, [&] { this->WriteImage(image); }) ? 1 : 0;
 }
 
-bool slImageWriter::WriteImage(vtkImageData* image)
+void slImageWriter::WriteImage(vtkImageData* image)
 {
   const std::string name = this->FileName ? this->FileName : "";
   auto fail = [&](const std::string& problem) {
-    this->ErrorMessage = (name.empty() ? std::string("(no file name)") : name) + ": " + problem;
-    vtkErrorMacro(<< this->ErrorMessage);
-    return false;
+    return shadelab::Error((name.empty() ? std::string("(no file name)") : name) + ": " + problem);
   };
   if (name.empty())
   {
-    return fail("no output file given");
+    throw fail("no output file given");
   }
   const std::string formatProblem = slFormatProblem(name.c_str(), "image", GetSupportedExtensions());
   if (!formatProblem.empty())
   {
-    return fail(formatProblem);
+    throw fail(formatProblem);
   }
   const std::string ext = slLowerExtension(name.c_str());
   vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
@@ -82,7 +79,7 @@ bool slImageWriter::WriteImage(vtkImageData* image)
   }
   if (!scalars || dims[0] < 1 || dims[1] < 1 || dims[2] != 1)
   {
-    return fail("nothing to write (the input is not a non-empty 2D image with scalars)");
+    throw fail("nothing to write (the input is not a non-empty 2D image with scalars)");
   }
   bool isFloat = false;
   switch (scalars->GetDataType())
@@ -93,16 +90,15 @@ bool slImageWriter::WriteImage(vtkImageData* image)
       isFloat = true;
       break;
     default:
-      return fail(std::string("unsupported scalar type ") + scalars->GetDataTypeAsString() +
+      throw fail(std::string("unsupported scalar type ") + scalars->GetDataTypeAsString() +
         " (use unsigned char or float)");
   }
   std::string codecProblem;
   const slImageCodec* codec = slLoadImageCodec(codecProblem);
   if (!codec)
   {
-    return fail(codecProblem);
+    throw fail(codecProblem);
   }
-  try
   {
     // OpenImageIO's writers do not all report a failed write (PNG reports
     // success on a full disk): they write to memory, ShadeLab to the disk.
@@ -115,22 +111,15 @@ bool slImageWriter::WriteImage(vtkImageData* image)
       {
         c = c == '\n' ? ' ' : c;
       }
-      return fail("cannot write image: " + (reason.empty() ? std::string("the image writer failed") : reason));
+      throw fail("cannot write image: " + (reason.empty() ? std::string("the image writer failed") : reason));
     }
     const std::string bytes = memory.contents();
     if (bytes.empty())
     {
-      return fail("cannot write image: the image writer produced nothing");
+      throw fail("cannot write image: the image writer produced nothing");
     }
     shadelab::writeFileAtomically(name, bytes);
   }
-  catch (const std::runtime_error& e)
-  {
-    this->ErrorMessage = e.what();
-    vtkErrorMacro(<< this->ErrorMessage);
-    return false;
-  }
-  return true;
 }
 
 void slImageWriter::PrintSelf(ostream& os, vtkIndent indent)

@@ -12,8 +12,9 @@
  * OpenImageIO encodes the image in memory; ShadeLab then writes the bytes to
  * a temporary file beside the target, syncs it and renames it over the
  * target: a failure (a full disk included) never leaves a partial file nor
- * destroys an existing one, and GetErrorMessage() names the file and the
- * system's reason.
+ * destroys an existing one. A failure is a vtkErrorMacro of one line naming
+ * the file and the system's reason, and Write() returning false
+ * (slCallOrThrow() gives the line back).
  *
  * @sa slImageReader vtkWindowToImageFilter
  */
@@ -37,12 +38,9 @@ public:
   vtkGetStringMacro(FileName);
   ///@}
 
-  /// Updates the input and writes it. Returns true on success; otherwise
-  /// GetErrorMessage() says why.
+  /// Updates the input and writes it. True on success; false after
+  /// vtkErrorMacro (also when the input's update failed).
   bool Write();
-
-  /// The reason the last Write() failed, or "".
-  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
 
   /// True if slImageWriter writes files with the extension of @p fileName.
   static bool CanWriteFile(const char* fileName);
@@ -61,10 +59,10 @@ private:
   slImageWriter(const slImageWriter&) = delete;
   void operator=(const slImageWriter&) = delete;
 
-  bool WriteImage(vtkImageData* image);
+  /// Writes @p image to FileName. Throws shadelab::Error "FILE: problem".
+  void WriteImage(vtkImageData* image);
 
   char* FileName = nullptr;
-  std::string ErrorMessage;
 };
 
 #endif

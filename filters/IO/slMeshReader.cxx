@@ -1,6 +1,7 @@
 #include "slMeshReader.h"
 
 #include "slConnectivityCheck.h"
+#include "slCoreBoundary.h"
 #include "slErrorCapture.h"
 #include "slFileExtension.h"
 #include "slMeshArraysVTK.h"
@@ -188,8 +189,7 @@ bool slMeshReader::CanReadFile(const char* fileName)
 
 bool slMeshReader::Fail(const std::string& problem)
 {
-  this->ErrorMessage = std::string(this->FileName ? this->FileName : "(no file name)") + ": " + problem;
-  vtkErrorMacro(<< this->ErrorMessage);
+  vtkErrorMacro(<< (this->FileName ? this->FileName : "(no file name)") << ": " << problem);
   return false;
 }
 
@@ -197,7 +197,6 @@ int slMeshReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInform
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   output->Initialize();
-  this->ErrorMessage.clear();
 
   if (!this->FileName || !*this->FileName)
   {
@@ -222,10 +221,9 @@ int slMeshReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInform
   vtkNew<vtkPolyData> mesh;
   if (ext == ".off")
   {
-    const std::string problem = slParseOFF(probe, mesh);
-    if (!problem.empty())
+    if (!slRunCore(this, [&] { slParseOFF(probe, this->FileName, mesh); }))
     {
-      return this->Fail(problem);
+      return 0;
     }
   }
   else if (!readOwnFormat(this->FileName, ext, this->MergeDuplicatePoints, mesh))
@@ -302,5 +300,4 @@ void slMeshReader::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
   os << indent << "MergeDuplicatePoints: " << this->MergeDuplicatePoints << "\n";
-  os << indent << "ErrorMessage: " << this->ErrorMessage << "\n";
 }

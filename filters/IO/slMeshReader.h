@@ -24,8 +24,8 @@
  *
  * The output is checked before it is passed on: a file that cannot be opened
  * or parsed, a mesh without polygons, or a point with a NaN or infinite
- * coordinate gives an error through vtkErrorMacro and an empty output. The
- * one-line reason, naming the file, is available from GetErrorMessage().
+ * coordinate gives an error through vtkErrorMacro (one line, "FILE: problem"), an
+ * empty output and a failed update (slUpdateOrThrow() gives the line back).
  *
  * @warning Only polygonal cells are required; vertices, lines and strips are
  * passed through as the underlying reader returns them.
@@ -60,9 +60,6 @@ public:
   vtkBooleanMacro(MergeDuplicatePoints, bool);
   ///@}
 
-  /// The reason the last read failed ("FILE: problem"), or "" after success.
-  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
-
   /// True if the extension of @p fileName is one slMeshReader reads.
   static bool CanReadFile(const char* fileName);
 
@@ -79,11 +76,11 @@ private:
   slMeshReader(const slMeshReader&) = delete;
   void operator=(const slMeshReader&) = delete;
 
+  /// vtkErrorMacro "FILE: @p problem"; false.
   bool Fail(const std::string& problem);
 
   char* FileName = nullptr;
   bool MergeDuplicatePoints = true;
-  std::string ErrorMessage;
 };
 
 #endif

@@ -1,4 +1,5 @@
 #include "slMeshWriter.h"
+#include "slCoreBoundary.h"
 
 #include "shadelab/AtomicFile.h"
 #include "shadelab/MemoryFile.h"
@@ -11,6 +12,7 @@
 
 #include <vtkCellArray.h>
 #include <vtkErrorCode.h>
+#include <vtkExecutive.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkNew.h>
@@ -25,7 +27,6 @@
 #include <vtkXMLPolyDataWriter.h>
 
 #include <fstream>
-#include <stdexcept>
 
 vtkStandardNewMacro(slMeshWriter);
 
@@ -158,40 +159,35 @@ int slMeshWriter::FillOutputPortInformation(int, vtkInformation*)
 
 bool slMeshWriter::Write()
 {
-  this->ErrorMessage.clear();
   this->Modified();
-  this->Update();
-  return this->ErrorMessage.empty();
+  return this->GetExecutive()->Update() != 0;
 }
 
 int slMeshWriter::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
-  return this->WriteMesh(vtkPolyData::GetData(inputVector[0])) ? 1 : 0;
+  return slRunCore(this, [&] { this->WriteMesh(vtkPolyData::GetData(inputVector[0])); }) ? 1 : 0;
 }
 
-bool slMeshWriter::WriteMesh(vtkPolyData* mesh)
+void slMeshWriter::WriteMesh(vtkPolyData* mesh)
 {
   const std::string name = this->FileName ? this->FileName : "";
   auto fail = [&](const std::string& problem) {
-    this->ErrorMessage = (name.empty() ? std::string("(no file name)") : name) + ": " + problem;
-    vtkErrorMacro(<< this->ErrorMessage);
-    return false;
+    return shadelab::Error((name.empty() ? std::string("(no file name)") : name) + ": " + problem);
   };
   if (name.empty())
   {
-    return fail("no output file given");
+    throw fail("no output file given");
   }
   const std::string formatProblem = slFormatProblem(name.c_str(), "mesh", GetSupportedExtensions());
   if (!formatProblem.empty())
   {
-    return fail(formatProblem);
+    throw fail(formatProblem);
   }
   if (!mesh || mesh->GetNumberOfPoints() == 0)
   {
-    return fail("nothing to write (empty mesh)");
+    throw fail("nothing to write (empty mesh)");
   }
   const std::string ext = slLowerExtension(name.c_str());
-  try
   {
     // VTK's writers do not all notice a failed write (a full disk can leave a
     // truncated .vtp behind a success): they write to memory, where writing
@@ -219,7 +215,7 @@ bool slMeshWriter::WriteMesh(vtkPolyData* mesh)
         : writer->GetErrorCode() != 0
         ? vtkErrorCode::GetStringFromErrorCode(writer->GetErrorCode())
         : std::string("the writer produced nothing");
-      return fail("cannot write mesh: " + reason);
+      throw fail("cannot write mesh: " + reason);
     }
     if (ply)
     {
@@ -230,13 +226,6 @@ bool slMeshWriter::WriteMesh(vtkPolyData* mesh)
       output.commit(bytes.data(), bytes.size());
     }
   }
-  catch (const std::runtime_error& e)
-  {
-    this->ErrorMessage = e.what();
-    vtkErrorMacro(<< this->ErrorMessage);
-    return false;
-  }
-  return true;
 }
 
 void slMeshWriter::PrintSelf(ostream& os, vtkIndent indent)

@@ -19,8 +19,9 @@
  * The mesh is encoded in memory; ShadeLab then writes the bytes to a
  * temporary file beside the target, syncs it and renames it over the target:
  * a failure (a full disk included) never leaves a partial file nor destroys
- * an existing one. GetErrorMessage() gives a one-line reason naming the file
- * (and the system's reason, e.g. "No space left on device").
+ * an existing one. A failure is a vtkErrorMacro of one line naming the file
+ * (and the system's reason, e.g. "No space left on device") and Write()
+ * returning false (slCallOrThrow() gives the line back).
  *
  * VTP compression: LZ4 by default, about ten times faster to write than
  * zlib for about twice the size (bench/io/vtp_encoding.py;
@@ -72,11 +73,9 @@ public:
   /// The Compressions value named @p name, or -1.
   static int GetCompressionByName(const std::string& name);
 
-  /// Updates the input and writes it. Returns true on success.
+  /// Updates the input and writes it. True on success; false after
+  /// vtkErrorMacro (also when the input's update failed).
   bool Write();
-
-  /// The reason the last Write() failed, or "".
-  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
 
   /// True if slMeshWriter writes files with the extension of @p fileName.
   static bool CanWriteFile(const char* fileName);
@@ -95,11 +94,11 @@ private:
   slMeshWriter(const slMeshWriter&) = delete;
   void operator=(const slMeshWriter&) = delete;
 
-  bool WriteMesh(vtkPolyData* mesh);
+  /// Writes @p mesh to FileName. Throws shadelab::Error "FILE: problem".
+  void WriteMesh(vtkPolyData* mesh);
 
   char* FileName = nullptr;
   int Compression = LZ4;
-  std::string ErrorMessage;
 };
 
 #endif

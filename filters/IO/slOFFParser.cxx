@@ -47,19 +47,20 @@ bool readNumber(std::istream& in, double& value)
   return end != token.c_str() && *end == '\0';
 }
 
-std::string at(long lineNumber, const std::string& problem)
+/// The error for @p problem on line @p lineNumber of @p fileName.
+shadelab::Error at(const std::string& fileName, long lineNumber, const std::string& problem)
 {
-  return "line " + std::to_string(lineNumber) + ": " + problem;
+  return shadelab::Error(fileName + ": line " + std::to_string(lineNumber) + ": " + problem);
 }
 } // namespace
 
-std::string slParseOFF(std::istream& in, vtkPolyData* output)
+void slParseOFF(std::istream& in, const std::string& fileName, vtkPolyData* output)
 {
   std::string line;
   long lineNumber = 0;
   if (!nextLine(in, line, lineNumber))
   {
-    return "line 1: empty file, expected the OFF header";
+    throw at(fileName, 1, "empty file, expected the OFF header");
   }
   std::istringstream header(line);
   std::string keyword;
@@ -72,7 +73,7 @@ std::string slParseOFF(std::istream& in, vtkPolyData* output)
     {
       if (!nextLine(in, line, lineNumber))
       {
-        return at(lineNumber, "missing vertex and face counts");
+        throw at(fileName, lineNumber, "missing vertex and face counts");
       }
       header = std::istringstream(line);
       header >> numPoints >> numFaces >> numEdges;
@@ -80,11 +81,11 @@ std::string slParseOFF(std::istream& in, vtkPolyData* output)
   }
   else
   {
-    return at(lineNumber, "expected \"OFF\", found \"" + shadelab::printableText(keyword) + "\"");
+    throw at(fileName, lineNumber, "expected \"OFF\", found \"" + shadelab::printableText(keyword) + "\"");
   }
   if (numPoints < 0 || numFaces < 0)
   {
-    return at(lineNumber, "bad vertex/face counts");
+    throw at(fileName, lineNumber, "bad vertex/face counts");
   }
 
   vtkNew<vtkPoints> points;
@@ -96,14 +97,14 @@ std::string slParseOFF(std::istream& in, vtkPolyData* output)
   {
     if (!nextLine(in, line, lineNumber))
     {
-      return at(lineNumber, "file ends after " + std::to_string(i) + " of " + std::to_string(numPoints) +
+      throw at(fileName, lineNumber, "file ends after " + std::to_string(i) + " of " + std::to_string(numPoints) +
           " vertices");
     }
     std::istringstream values(line);
     double x, y, z;
     if (!readNumber(values, x) || !readNumber(values, y) || !readNumber(values, z))
     {
-      return at(lineNumber, "expected three vertex coordinates");
+      throw at(fileName, lineNumber, "expected three vertex coordinates");
     }
     points->InsertNextPoint(x, y, z);
   }
@@ -114,18 +115,18 @@ std::string slParseOFF(std::istream& in, vtkPolyData* output)
   {
     if (!nextLine(in, line, lineNumber))
     {
-      return at(lineNumber, "file ends after " + std::to_string(f) + " of " + std::to_string(numFaces) + " faces");
+      throw at(fileName, lineNumber, "file ends after " + std::to_string(f) + " of " + std::to_string(numFaces) + " faces");
     }
     std::istringstream values(line);
     long count = 0;
     if (!(values >> count) || count < 3)
     {
-      return at(lineNumber, "a face needs a vertex count of at least 3");
+      throw at(fileName, lineNumber, "a face needs a vertex count of at least 3");
     }
     // Each index takes at least two characters of the line.
     if (count > static_cast<long>(line.size()) / 2)
     {
-      return at(lineNumber, "face has fewer than " + std::to_string(count) + " vertex indices");
+      throw at(fileName, lineNumber, "face has fewer than " + std::to_string(count) + " vertex indices");
     }
     ids.resize(static_cast<size_t>(count));
     for (long k = 0; k < count; ++k)
@@ -133,11 +134,11 @@ std::string slParseOFF(std::istream& in, vtkPolyData* output)
       long id = -1;
       if (!(values >> id))
       {
-        return at(lineNumber, "face has fewer than " + std::to_string(count) + " vertex indices");
+        throw at(fileName, lineNumber, "face has fewer than " + std::to_string(count) + " vertex indices");
       }
       if (id < 0 || id >= numPoints)
       {
-        return at(lineNumber, "vertex index " + std::to_string(id) + " is out of range [0, " +
+        throw at(fileName, lineNumber, "vertex index " + std::to_string(id) + " is out of range [0, " +
             std::to_string(numPoints) + ")");
       }
       ids[static_cast<size_t>(k)] = id;
@@ -146,5 +147,4 @@ std::string slParseOFF(std::istream& in, vtkPolyData* output)
   }
   output->SetPoints(points);
   output->SetPolys(polys);
-  return std::string();
 }

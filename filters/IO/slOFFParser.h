@@ -9,13 +9,15 @@
  * unlike half-edge readers that must drop them. Internal to ShadeLab::IO.
  */
 
+#include "shadelab/Error.h"
+
 #include <istream>
 #include <string>
 
 class vtkPolyData;
 
-/// Fills @p output from the OFF text in @p in. Returns "" on success,
-/// otherwise "line N: problem".
-std::string slParseOFF(std::istream& in, vtkPolyData* output);
+/// Fills @p output from the OFF text in @p in, read from @p fileName. Throws
+/// shadelab::Error "FILE: line N: problem" for text that is not OFF.
+void slParseOFF(std::istream& in, const std::string& fileName, vtkPolyData* output);
 
 #endif

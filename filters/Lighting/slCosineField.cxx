@@ -93,7 +93,6 @@ int slCosineField::RequestData(vtkInformation*, vtkInformationVector** inputVect
   using namespace shadelab;
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  this->ClearError();
   LightingSetup setup;
   if (!this->PrepareLighting(input, output, true, setup))
   {

@@ -47,32 +47,31 @@ float wrap(double t)
 }
 } // namespace
 
-std::string diffuseFromArray(vtkPolyData* mesh, const std::string& arrayName, std::vector<glm::vec3>& out)
+void diffuseFromArray(vtkPolyData* mesh, const std::string& arrayName, std::vector<glm::vec3>& out)
 {
   vtkDataArray* a = mesh->GetPointData()->GetArray(arrayName.c_str());
   if (!a)
   {
-    return "input mesh: no point array \"" + arrayName + "\" for the diffuse colour";
+    throw Error("input mesh: no point array \"" + arrayName + "\" for the diffuse colour");
   }
   if (a->GetNumberOfComponents() != 3 && a->GetNumberOfComponents() != 4)
   {
-    return "input mesh: point array \"" + arrayName + "\" has " + std::to_string(a->GetNumberOfComponents()) +
-      " components; a diffuse colour needs 3 (RGB) or 4 (RGBA)";
+    throw Error("input mesh: point array \"" + arrayName + "\" has " + std::to_string(a->GetNumberOfComponents()) +
+      " components; a diffuse colour needs 3 (RGB) or 4 (RGBA)");
   }
   out.resize(static_cast<size_t>(mesh->GetNumberOfPoints()));
   for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
   {
     out[static_cast<size_t>(i)] = colourOf(a, i);
   }
-  return "";
 }
 
-std::string diffuseFromTexture(vtkPolyData* mesh, vtkImageData* texture, std::vector<glm::vec3>& out)
+void diffuseFromTexture(vtkPolyData* mesh, vtkImageData* texture, std::vector<glm::vec3>& out)
 {
   vtkDataArray* uv = mesh->GetPointData()->GetTCoords();
   if (!uv || uv->GetNumberOfComponents() < 2)
   {
-    return "input mesh: a diffuse texture needs point texture coordinates, and the mesh has none";
+    throw Error("input mesh: a diffuse texture needs point texture coordinates, and the mesh has none");
   }
   vtkDataArray* pixels = texture ? texture->GetPointData()->GetScalars() : nullptr;
   int dims[3] = { 0, 0, 0 };
@@ -82,7 +81,7 @@ std::string diffuseFromTexture(vtkPolyData* mesh, vtkImageData* texture, std::ve
   }
   if (!pixels || dims[0] < 1 || dims[1] < 1)
   {
-    return "diffuse texture: the image is empty";
+    throw Error("diffuse texture: the image is empty");
   }
   out.resize(static_cast<size_t>(mesh->GetNumberOfPoints()));
   for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
@@ -111,7 +110,6 @@ std::string diffuseFromTexture(vtkPolyData* mesh, vtkImageData* texture, std::ve
     }
     out[static_cast<size_t>(i)] = sum;
   }
-  return "";
 }
 
 } // namespace shadelab

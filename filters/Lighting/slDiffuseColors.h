@@ -17,6 +17,8 @@
 
 #include <glm/glm.hpp>
 
+#include "shadelab/Error.h"
+
 #include <string>
 #include <vector>
 
@@ -27,12 +29,12 @@ namespace shadelab
 {
 
 /// Fills @p out with one k_d per point of @p mesh from the point array
-/// @p arrayName. Returns "" or a one-line reason.
-std::string diffuseFromArray(vtkPolyData* mesh, const std::string& arrayName, std::vector<glm::vec3>& out);
+/// @p arrayName. Throws shadelab::Error with a one-line reason.
+void diffuseFromArray(vtkPolyData* mesh, const std::string& arrayName, std::vector<glm::vec3>& out);
 
 /// Fills @p out from @p texture at the mesh's point texture coordinates.
-/// Returns "" or a one-line reason.
-std::string diffuseFromTexture(vtkPolyData* mesh, vtkImageData* texture, std::vector<glm::vec3>& out);
+/// Throws shadelab::Error with a one-line reason.
+void diffuseFromTexture(vtkPolyData* mesh, vtkImageData* texture, std::vector<glm::vec3>& out);
 
 } // namespace shadelab
 

@@ -1,6 +1,7 @@
 #include "slEnvironmentLoader.h"
 
 #include "slImageReader.h"
+#include "slUpdateOrThrow.h"
 
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
@@ -12,7 +13,7 @@
 namespace shadelab
 {
 
-std::string environmentFromImage(vtkImageData* image, const std::string& name, EnvironmentMap& out)
+void environmentFromImage(vtkImageData* image, const std::string& name, EnvironmentMap& out)
 {
   vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
   int dims[3] = { 0, 0, 0 };
@@ -22,16 +23,16 @@ std::string environmentFromImage(vtkImageData* image, const std::string& name, E
   }
   if (!scalars || dims[0] < 1 || dims[1] < 1)
   {
-    return name + ": environment map is empty";
+    throw Error(name + ": environment map is empty");
   }
   if (dims[2] != 1)
   {
-    return name + ": environment map is a 3D image; it must be a 2D equirectangular image";
+    throw Error(name + ": environment map is a 3D image; it must be a 2D equirectangular image");
   }
   if (scalars->GetNumberOfComponents() < 3)
   {
-    return name + ": environment map has " + std::to_string(scalars->GetNumberOfComponents()) +
-      " channel(s); it needs RGB";
+    throw Error(name + ": environment map has " + std::to_string(scalars->GetNumberOfComponents()) +
+      " channel(s); it needs RGB");
   }
   const bool bytes = scalars->GetDataType() == VTK_UNSIGNED_CHAR;
   std::vector<float> rgb(static_cast<size_t>(3) * dims[0] * dims[1]);
@@ -43,22 +44,16 @@ std::string environmentFromImage(vtkImageData* image, const std::string& name, E
       rgb[static_cast<size_t>(3 * i + c)] = static_cast<float>(bytes ? v / 255.0 : v);
     }
   }
-  const std::string problem = out.set(dims[0], dims[1], std::move(rgb));
-  return problem.empty() ? "" : name + ": environment map " + problem;
+  out.set(dims[0], dims[1], std::move(rgb), name);
 }
 
-std::string environmentFromFile(const std::string& fileName, EnvironmentMap& out)
+void environmentFromFile(const std::string& fileName, EnvironmentMap& out)
 {
   vtkNew<slImageReader> reader;
   reader->SetFileName(fileName.c_str());
   reader->OutputFloatOn();
-  reader->SetGlobalWarningDisplay(0);
-  reader->Update();
-  if (*reader->GetErrorMessage())
-  {
-    return reader->GetErrorMessage();
-  }
-  return environmentFromImage(reader->GetOutput(), fileName, out);
+  slUpdateOrThrow(reader);
+  environmentFromImage(reader->GetOutput(), fileName, out);
 }
 
 } // namespace shadelab

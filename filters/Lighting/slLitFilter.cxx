@@ -1,6 +1,7 @@
 #include "slLitFilter.h"
 #include "slAtomicMinimum.h"
 #include "slConnectivityCheck.h"
+#include "slCoreBoundary.h"
 
 #include "slFloat3View.h"
 #include "slGlobalBounds.h"
@@ -10,6 +11,7 @@
 #include "shadelab/DefaultScene.h"
 #include "shadelab/Scene.h"
 #include "slScene.h"
+#include "slUpdateOrThrow.h"
 
 #include <vtkCamera.h>
 #include <vtkDataArray.h>
@@ -81,7 +83,6 @@ vtkMTimeType slLitFilter::GetMTime()
 
 int slLitFilter::Fail(vtkPolyData* output, const std::string& message)
 {
-  this->ErrorMessage = message;
   if (output)
   {
     output->Initialize();
@@ -107,9 +108,10 @@ bool slLitFilter::PrepareLighting(
   if (this->SceneFileName && *this->SceneFileName)
   {
     scene = vtkSmartPointer<slScene>::New();
-    if (!scene->ReadFile(this->SceneFileName))
+    if (!slRunCore(this, output, [&] {
+          slCallOrThrow(scene, [&] { return scene->ReadFile(this->SceneFileName); });
+        }))
     {
-      this->Fail(output, scene->GetErrorMessage());
       return false;
     }
   }

@@ -26,8 +26,8 @@
  * colours and shininess with plain setters. Values out of the scene format's
  * ranges (docs/scene-format.md) are errors, as in a scene file.
  *
- * Input checks, each giving vtkErrorMacro, an empty output and a one-line
- * reason in GetErrorMessage(): an input without points, without point
+ * Input checks, each giving vtkErrorMacro of one line, an empty output and
+ * a failed request (slUpdateOrThrow() gives the line back): an input without points, without point
  * normals, with a zero-length or non-finite point normal (unless
  * ZeroNormalsAreErrors is off: such points then get no direction-dependent
  * light), and a scene without lights where the subclass needs one (named by
@@ -137,9 +137,6 @@ public:
   vtkBooleanMacro(ZeroNormalsAreErrors, bool);
   ///@}
 
-  /// The reason the last update failed, or "" after success.
-  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
-
   vtkMTimeType GetMTime() override;
 
 protected:
@@ -159,12 +156,9 @@ protected:
   /// Fail() for point @p point of @p points, whose normal has no direction.
   int FailOnZeroNormal(vtkPolyData* output, vtkIdType point, vtkIdType points);
 
-  /// Records @p message (one line), reports it with vtkErrorMacro and empties
-  /// @p output. Returns 0 for RequestData to return.
+  /// Reports @p message (one line) with vtkErrorMacro and empties @p output.
+  /// Returns 0 for RequestData to return.
   int Fail(vtkPolyData* output, const std::string& message);
-
-  /// Clears the error message; call first in RequestData.
-  void ClearError() { this->ErrorMessage.clear(); }
 
   /// Bounds of the whole input over all MPI ranks (xmin, xmax, ...), set by
   /// PrepareLighting(): sizes derived from them do not depend on the partition.
@@ -187,8 +181,6 @@ protected:
 private:
   slLitFilter(const slLitFilter&) = delete;
   void operator=(const slLitFilter&) = delete;
-
-  std::string ErrorMessage;
 };
 
 #endif

@@ -34,7 +34,6 @@ int slLobesOnMesh::RequestData(vtkInformation*, vtkInformationVector** inputVect
   using namespace shadelab;
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  this->ClearError();
   this->NumberOfLobesDrawn = 0;
   LightingSetup setup;
   if (!this->PrepareLighting(input, output, true, setup))

@@ -1,5 +1,6 @@
 #include "slRadianceFilter.h"
 #include "slAtomicMinimum.h"
+#include "slCoreBoundary.h"
 
 #include "slDiffuseColors.h"
 #include "slFloat3View.h"
@@ -7,6 +8,7 @@
 #include "slLightingSetup.h"
 #include "slParallelFillArray.h"
 #include "slRadianceKernel.h"
+#include "slUpdateOrThrow.h"
 
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
@@ -58,7 +60,6 @@ int slRadianceFilter::RequestData(vtkInformation*, vtkInformationVector** inputV
   using namespace shadelab;
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  this->ClearError();
   LightingSetup setup;
   // The kernel finds normals without a direction as it shades (one pass over
   // them, not two).
@@ -67,26 +68,26 @@ int slRadianceFilter::RequestData(vtkInformation*, vtkInformationVector** inputV
     return 0;
   }
   std::vector<glm::vec3> base; // base colour per point: multiplies k_a and k_d
-  std::string problem;
-  if (this->DiffuseColorArrayName && *this->DiffuseColorArrayName)
+  const bool haveBase = slRunCore(this, output, [&] {
+    if (this->DiffuseColorArrayName && *this->DiffuseColorArrayName)
+    {
+      diffuseFromArray(input, this->DiffuseColorArrayName, base);
+    }
+    else if (this->DiffuseTextureFileName && *this->DiffuseTextureFileName)
+    {
+      vtkNew<slImageReader> reader;
+      reader->SetFileName(this->DiffuseTextureFileName);
+      slUpdateOrThrow(reader);
+      diffuseFromTexture(input, reader->GetOutput(), base);
+    }
+    else if (this->DiffuseTexture)
+    {
+      diffuseFromTexture(input, this->DiffuseTexture, base);
+    }
+  });
+  if (!haveBase)
   {
-    problem = diffuseFromArray(input, this->DiffuseColorArrayName, base);
-  }
-  else if (this->DiffuseTextureFileName && *this->DiffuseTextureFileName)
-  {
-    vtkNew<slImageReader> reader;
-    reader->SetFileName(this->DiffuseTextureFileName);
-    reader->Update();
-    problem = *reader->GetErrorMessage() ? std::string(reader->GetErrorMessage())
-                                         : diffuseFromTexture(input, reader->GetOutput(), base);
-  }
-  else if (this->DiffuseTexture)
-  {
-    problem = diffuseFromTexture(input, this->DiffuseTexture, base);
-  }
-  if (!problem.empty())
-  {
-    return this->Fail(output, problem);
+    return 0;
   }
 
   output->ShallowCopy(input);

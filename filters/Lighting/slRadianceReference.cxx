@@ -2,6 +2,7 @@
 
 #include "shadelab/LightingTables.h"
 #include "shadelab/RadianceEstimator.h"
+#include "slCoreBoundary.h"
 #include "slEnvironmentLoader.h"
 #include "slFloat3View.h"
 #include "slLightingSetup.h"
@@ -69,25 +70,25 @@ int slRadianceReference::RequestData(
   using namespace shadelab;
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  this->ClearError();
   LightingSetup setup;
   if (!this->PrepareLighting(input, output, false, setup))
   {
     return 0;
   }
   shadelab::EnvironmentMap environment;
-  std::string problem;
-  if (this->EnvironmentFileName && *this->EnvironmentFileName)
+  const bool haveEnvironment = slRunCore(this, output, [&] {
+    if (this->EnvironmentFileName && *this->EnvironmentFileName)
+    {
+      environmentFromFile(this->EnvironmentFileName, environment);
+    }
+    else if (this->EnvironmentMap)
+    {
+      environmentFromImage(this->EnvironmentMap, "EnvironmentMap", environment);
+    }
+  });
+  if (!haveEnvironment)
   {
-    problem = environmentFromFile(this->EnvironmentFileName, environment);
-  }
-  else if (this->EnvironmentMap)
-  {
-    problem = environmentFromImage(this->EnvironmentMap, "EnvironmentMap", environment);
-  }
-  if (!problem.empty())
-  {
-    return this->Fail(output, problem);
+    return 0;
   }
   const bool anyLight = std::any_of(setup.lights.begin(), setup.lights.end(),
     [](const glsl::slLight& l) { return lightHasDirection(l.type); });

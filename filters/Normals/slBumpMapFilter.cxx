@@ -1,5 +1,6 @@
 #include "slBumpMapFilter.h"
 
+#include "slCoreBoundary.h"
 #include "slDetailInputs.h"
 
 #include "shadelab/LightingGLSLDouble.h"
@@ -26,13 +27,11 @@ int slBumpMapFilter::RequestData(vtkInformation*, vtkInformationVector** inputVe
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   output->Initialize();
-  this->ClearError();
   slSurfaceFrames frames;
   slnormals::Texture height;
-  const std::string problem = slPrepareDetail(input, this->FileName, true, frames, height);
-  if (!problem.empty())
+  if (!slRunCore(this, output, [&] { slPrepareDetail(input, this->FileName, true, frames, height); }))
   {
-    return this->Fail(problem, output);
+    return 0;
   }
   // 1 − h has the gradient of h negated: invert through the scale's sign.
   const double scale = this->InvertHeight ? -this->Scale : this->Scale;

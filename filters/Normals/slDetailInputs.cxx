@@ -1,11 +1,11 @@
 #include "slDetailInputs.h"
 
 #include "slConnectivityCheck.h"
-#include "slErrorCapture.h"
 #include "slImageReader.h"
 #include "slNormalsVTKBridge.h"
 #include "slPolyDataNormals.h"
 #include "slPolyDataTangents.h"
+#include "slUpdateOrThrow.h"
 
 #include <vtkDataArray.h>
 #include <vtkFloatArray.h>
@@ -14,33 +14,23 @@
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 
-std::string slLoadTexture(const char* fileName, slnormals::Texture& texture)
+void slLoadTexture(const char* fileName, slnormals::Texture& texture)
 {
   if (!fileName || !*fileName)
   {
-    return "no image file name given";
+    throw shadelab::Error("no image file name given");
   }
   vtkNew<slImageReader> reader;
   reader->SetFileName(fileName);
   reader->OutputFloatOn();
-  vtkNew<slErrorCapture> errors;
-  errors->Watch(reader);
-  reader->Update();
-  if (*reader->GetErrorMessage())
-  {
-    return reader->GetErrorMessage();
-  }
-  if (errors->HasError())
-  {
-    return std::string(fileName) + ": " + errors->GetError();
-  }
+  slUpdateOrThrow(reader);
   vtkImageData* image = reader->GetOutput();
   vtkDataArray* scalars = image->GetPointData()->GetScalars();
   int dims[3];
   image->GetDimensions(dims);
   if (!scalars || dims[0] < 1 || dims[1] < 1)
   {
-    return std::string(fileName) + ": the image is empty";
+    throw shadelab::Error(std::string(fileName) + ": the image is empty");
   }
   texture.width = dims[0];
   texture.height = dims[1];
@@ -50,25 +40,24 @@ std::string slLoadTexture(const char* fileName, slnormals::Texture& texture)
   {
     texture.texels[static_cast<size_t>(i)] = static_cast<float>(scalars->GetVariantValue(i).ToDouble());
   }
-  return std::string();
 }
 
-std::string slGetSurfaceFrames(vtkPolyData* input, bool needTangents, slSurfaceFrames& frames)
+void slGetSurfaceFrames(vtkPolyData* input, bool needTangents, slSurfaceFrames& frames)
 {
   const vtkIdType bad = slFirstNonFinitePoint(input->GetPoints());
   if (bad >= 0)
   {
-    return "point " + std::to_string(bad) + " has a NaN or infinite coordinate";
+    throw shadelab::Error("point " + std::to_string(bad) + " has a NaN or infinite coordinate");
   }
   const std::string cellProblem = slConnectivityProblem(input);
   if (!cellProblem.empty())
   {
-    return cellProblem;
+    throw shadelab::Error(cellProblem);
   }
   vtkDataArray* tc = input->GetPointData()->GetTCoords();
   if (!tc || tc->GetNumberOfComponents() < 2)
   {
-    return "no texture coordinates (UVs): surface detail needs a 2-component point TCoords array";
+    throw shadelab::Error("no texture coordinates (UVs): surface detail needs a 2-component point TCoords array");
   }
   vtkSmartPointer<vtkPolyData> mesh = input;
   if (!mesh->GetPointData()->GetNormals())
@@ -77,18 +66,14 @@ std::string slGetSurfaceFrames(vtkPolyData* input, bool needTangents, slSurfaceF
     normals->SetInputData(mesh);
     normals->SplittingOff();
     normals->ConsistencyOff();
-    normals->Update();
+    slUpdateOrThrow(normals);
     mesh = normals->GetOutput();
   }
   if (needTangents && !mesh->GetPointData()->GetArray("Tangents"))
   {
     vtkNew<slPolyDataTangents> tangents;
     tangents->SetInputData(mesh);
-    tangents->Update();
-    if (*tangents->GetErrorMessage())
-    {
-      return tangents->GetErrorMessage();
-    }
+    slUpdateOrThrow(tangents);
     mesh = tangents->GetOutput();
   }
   frames.mesh = mesh;
@@ -114,14 +99,13 @@ std::string slGetSurfaceFrames(vtkPolyData* input, bool needTangents, slSurfaceF
       frames.handedness[static_cast<size_t>(i)] = tangents->GetNumberOfComponents() >= 4 && v[3] < 0 ? -1.0 : 1.0;
     }
   }
-  return std::string();
 }
 
-std::string slPrepareDetail(vtkPolyData* input, const char* fileName, bool needTangents, slSurfaceFrames& frames,
+void slPrepareDetail(vtkPolyData* input, const char* fileName, bool needTangents, slSurfaceFrames& frames,
   slnormals::Texture& texture)
 {
-  std::string problem = slGetSurfaceFrames(input, needTangents, frames);
-  return problem.empty() ? slLoadTexture(fileName, texture) : problem;
+  slGetSurfaceFrames(input, needTangents, frames);
+  slLoadTexture(fileName, texture);
 }
 
 void slOutputWithNormals(vtkPolyData* output, vtkPolyData* mesh, const std::vector<glm::dvec3>& normals)

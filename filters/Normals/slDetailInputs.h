@@ -4,10 +4,13 @@
  * @file slDetailInputs.h
  * @brief What the surface-detail filters share: reading a texture through
  * slImageReader, and the per-point frames (position, normal, tangent,
- * handedness, UV) of a mesh. Internal to ShadeLab::Normals.
+ * handedness, UV) of a mesh. Internal to ShadeLab::Normals; the filters
+ * run them through slRunCore().
  */
 
 #include "slTextureSampling.h"
+
+#include "shadelab/Error.h"
 
 #include <vtkSmartPointer.h>
 
@@ -18,9 +21,9 @@
 
 class vtkPolyData;
 
-/// Reads @p fileName as float texels (0..1 for 8-bit files). Returns "" or
-/// the one-line problem, which names the file.
-std::string slLoadTexture(const char* fileName, slnormals::Texture& texture);
+/// Reads @p fileName as float texels (0..1 for 8-bit files). Throws
+/// shadelab::Error with the one-line problem, which names the file.
+void slLoadTexture(const char* fileName, slnormals::Texture& texture);
 
 /// A mesh's per-point surface frames.
 struct slSurfaceFrames
@@ -32,14 +35,13 @@ struct slSurfaceFrames
 };
 
 /// Fills @p frames from @p input, computing normals (slPolyDataNormals) and
-/// tangents (slPolyDataTangents) when absent. Returns "" or the problem
-/// (e.g. no texture coordinates).
-std::string slGetSurfaceFrames(vtkPolyData* input, bool needTangents, slSurfaceFrames& frames);
+/// tangents (slPolyDataTangents) when absent. Throws shadelab::Error with the
+/// problem (e.g. no texture coordinates).
+void slGetSurfaceFrames(vtkPolyData* input, bool needTangents, slSurfaceFrames& frames);
 
-
-
-/// slGetSurfaceFrames then slLoadTexture; "" or the first problem.
-std::string slPrepareDetail(vtkPolyData* input, const char* fileName, bool needTangents, slSurfaceFrames& frames,
+/// slGetSurfaceFrames then slLoadTexture. Throws shadelab::Error with the
+/// first problem.
+void slPrepareDetail(vtkPolyData* input, const char* fileName, bool needTangents, slSurfaceFrames& frames,
   slnormals::Texture& texture);
 
 /// @p output = @p mesh with its point array "Normals" replaced by @p normals.

@@ -1,7 +1,9 @@
 #include "slDisplacementFilter.h"
 
+#include "slCoreBoundary.h"
 #include "slDetailInputs.h"
 #include "slPolyDataNormals.h"
+#include "slUpdateOrThrow.h"
 
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -26,13 +28,11 @@ int slDisplacementFilter::RequestData(vtkInformation*, vtkInformationVector** in
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   output->Initialize();
-  this->ClearError();
   slSurfaceFrames frames;
   slnormals::Texture height;
-  const std::string problem = slPrepareDetail(input, this->FileName, false, frames, height);
-  if (!problem.empty())
+  if (!slRunCore(this, output, [&] { slPrepareDetail(input, this->FileName, false, frames, height); }))
   {
-    return this->Fail(problem, output);
+    return 0;
   }
   vtkPoints* in = frames.mesh->GetPoints();
   vtkNew<vtkPoints> moved;
@@ -56,11 +56,10 @@ int slDisplacementFilter::RequestData(vtkInformation*, vtkInformationVector** in
   normals->SetInputData(displaced);
   normals->SplittingOff();
   normals->ConsistencyOff();
-  normals->Update();
-  if (*normals->GetErrorMessage())
+  // It fails for example for points moved beyond the float range by a large Scale.
+  if (!slRunCore(this, output, [&] { slUpdateOrThrow(normals, "displaced mesh: "); }))
   {
-    // For example points moved beyond the float range by a large Scale.
-    return this->Fail(std::string("displaced mesh: ") + normals->GetErrorMessage(), output);
+    return 0;
   }
   output->ShallowCopy(normals->GetOutput());
   return 1;

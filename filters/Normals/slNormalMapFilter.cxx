@@ -1,5 +1,6 @@
 #include "slNormalMapFilter.h"
 
+#include "slCoreBoundary.h"
 #include "slDetailInputs.h"
 
 #include "shadelab/LightingGLSLDouble.h"
@@ -26,13 +27,11 @@ int slNormalMapFilter::RequestData(vtkInformation*, vtkInformationVector** input
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   output->Initialize();
-  this->ClearError();
   slSurfaceFrames frames;
   slnormals::Texture map;
-  const std::string problem = slPrepareDetail(input, this->FileName, true, frames, map);
-  if (!problem.empty())
+  if (!slRunCore(this, output, [&] { slPrepareDetail(input, this->FileName, true, frames, map); }))
   {
-    return this->Fail(problem, output);
+    return 0;
   }
   if (map.channels < 3)
   {

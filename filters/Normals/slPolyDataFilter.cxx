@@ -62,7 +62,6 @@ vtkTypeBool slPolyDataFilter::ProcessRequest(
 int slPolyDataFilter::Fail(const std::string& problem, vtkPolyData* output)
 {
   output->Initialize();
-  this->ErrorMessage = problem;
   vtkErrorMacro(<< problem);
   return 0;
 }
@@ -70,5 +69,4 @@ int slPolyDataFilter::Fail(const std::string& problem, vtkPolyData* output)
 void slPolyDataFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "ErrorMessage: " << this->ErrorMessage << "\n";
 }

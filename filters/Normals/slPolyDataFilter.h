@@ -2,12 +2,12 @@
 #define slPolyDataFilter_h
 /**
  * @class   slPolyDataFilter
- * @brief   A vtkPolyDataAlgorithm that keeps the reason of its last failure.
+ * @brief   A vtkPolyDataAlgorithm that fails as VTK's do and computes pieces with ghost cells.
  *
  * The ShadeLab::Normals filters derive from it: on bad input they call
- * Fail(), which reports the problem through vtkErrorMacro, empties the
- * output and keeps the one-line reason for GetErrorMessage(), so that callers
- * get it even when VTK's global warning display is off.
+ * Fail(), which reports the problem on one line through vtkErrorMacro,
+ * empties the output and fails the request (slUpdateOrThrow() gives the
+ * line back); the VTK-free code they run reports through slRunCore().
  *
  * Pieces (MPI ranks in ParaView's pvbatch or pvserver): every one of these
  * filters computes a point's value from the polygons around it, so when the
@@ -40,9 +40,6 @@ public:
   vtkTypeMacro(slPolyDataFilter, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// The reason the last update failed, or "" after success.
-  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
-
   /// Runs the request; after a successful REQUEST_DATA for one piece of
   /// several with no ghost levels asked, removes the output's ghost cells.
   vtkTypeBool ProcessRequest(vtkInformation* request, vtkInformationVector** inputVector,
@@ -55,17 +52,12 @@ protected:
   /// Asks the input for one more ghost level when the output is one piece of several.
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  /// Clears the error message; call at the start of RequestData.
-  void ClearError() { this->ErrorMessage.clear(); }
-
-  /// Reports @p problem, empties @p output; returns 0 for RequestData.
+  /// Reports @p problem (vtkErrorMacro), empties @p output; returns 0 for RequestData.
   int Fail(const std::string& problem, vtkPolyData* output);
 
 private:
   slPolyDataFilter(const slPolyDataFilter&) = delete;
   void operator=(const slPolyDataFilter&) = delete;
-
-  std::string ErrorMessage;
 };
 
 #endif

@@ -423,7 +423,6 @@ int slPolyDataNormals::RequestData(vtkInformation*, vtkInformationVector** input
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   output->Initialize();
-  this->ClearError();
   this->NumberOfFlippedPolygons = 0;
   if (!input || input->GetNumberOfPoints() == 0)
   {

@@ -30,7 +30,6 @@ int slPolyDataTangents::RequestData(vtkInformation*, vtkInformationVector** inpu
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   output->Initialize();
-  this->ClearError();
   this->NumberOfSplitPoints = 0;
   if (!input || input->GetNumberOfPoints() == 0)
   {

@@ -1,5 +1,7 @@
 #include "slScene.h"
 
+#include "slCoreBoundary.h"
+
 #include "shadelab/Scene.h"
 #include "shadelab/SceneFile.h"
 
@@ -27,47 +29,20 @@ void slScene::SetScene(const shadelab::Scene& scene)
 
 bool slScene::ReadFile(const char* path)
 {
-  try
-  {
-    this->SetScene(shadelab::readSceneFile(path ? path : ""));
-    this->ErrorMessage.clear();
-    return true;
-  }
-  catch (const shadelab::SceneError& e)
-  {
-    this->ErrorMessage = e.what();
-    return false;
-  }
+  return slRunCore(this, [&] { this->SetScene(shadelab::readSceneFile(path ? path : "")); });
 }
 
 bool slScene::ReadString(const char* jsonText, const char* nameForMessages)
 {
-  try
-  {
-    this->SetScene(shadelab::parseScene(jsonText ? jsonText : "", nameForMessages ? nameForMessages : "(string)"));
-    this->ErrorMessage.clear();
-    return true;
-  }
-  catch (const shadelab::SceneError& e)
-  {
-    this->ErrorMessage = e.what();
-    return false;
-  }
+  return slRunCore(this, [&] {
+    this->SetScene(
+      shadelab::parseScene(jsonText ? jsonText : "", nameForMessages ? nameForMessages : "(string)"));
+  });
 }
 
 bool slScene::WriteFile(const char* path)
 {
-  try
-  {
-    shadelab::writeSceneFile(*this->Data, path ? path : "");
-    this->ErrorMessage.clear();
-    return true;
-  }
-  catch (const shadelab::SceneError& e)
-  {
-    this->ErrorMessage = e.what();
-    return false;
-  }
+  return slRunCore(this, [&] { shadelab::writeSceneFile(*this->Data, path ? path : ""); });
 }
 
 std::string slScene::ToJSON() const

@@ -7,7 +7,8 @@
  *
  * slScene reads and writes the JSON scene files described in
  * docs/scene-format.md, with strict validation: every problem is reported as
- * one line naming the file, the key path and the problem (GetErrorMessage()).
+ * one line naming the file, the key path and the problem, through vtkErrorMacro
+ * (slCallOrThrow() gives the line back).
  *
  * It converts both ways between a scene and VTK's own objects, so a VTK
  * user's lights, property and camera can drive ShadeLab and vice versa:
@@ -59,8 +60,9 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /// Read / write a JSON scene file. On failure the scene is unchanged and
-  /// GetErrorMessage() gives the one-line reason. Writing is all or nothing.
+  /// Read / write a JSON scene file. False on failure, after
+  /// vtkErrorMacro with the one-line reason; the scene is then unchanged.
+  /// Writing is all or nothing.
   bool ReadFile(const char* path);
   bool WriteFile(const char* path);
   ///@}
@@ -70,9 +72,6 @@ public:
 
   /// The scene as JSON text.
   std::string ToJSON() const;
-
-  /// The reason the last read or write failed, or "".
-  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
 
   /// What the last conversion to or from VTK could not carry, one item per
   /// line ("" when nothing was lost).
@@ -103,7 +102,8 @@ public:
   /// Scene to VTK. ApplyToRenderer() sets the background, replaces the lights
   /// and places the camera (fitting the visible props if the scene gives no
   /// camera position, so call it after adding the actors). ApplyToActor() sets
-  /// the property, interpolation and diffuse texture.
+  /// the property, interpolation and diffuse texture; false, after
+  /// vtkErrorMacro naming the texture file, if that cannot be read.
   void ApplyToRenderer(vtkRenderer* renderer);
   /// ApplyToRenderer() with the camera fitted to @p bounds for an image of
   /// @p width x @p height (see ApplyCamera()) instead of the visible props.
@@ -151,7 +151,6 @@ private:
   void Note(const std::string& item);
 
   std::unique_ptr<shadelab::Scene> Data;
-  std::string ErrorMessage;
   std::string ConversionNotes;
 };
 

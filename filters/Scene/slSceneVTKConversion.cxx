@@ -3,7 +3,9 @@
 
 #include "shadelab/CameraPlacement.h"
 #include "shadelab/Scene.h"
+#include "slCoreBoundary.h"
 #include "slImageReader.h"
+#include "slUpdateOrThrow.h"
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
@@ -214,11 +216,20 @@ bool slScene::ApplyToActor(vtkActor* actor)
   }
   vtkNew<slImageReader> reader;
   reader->SetFileName(texturePath.c_str());
-  reader->Update();
-  if (*reader->GetErrorMessage())
+  const bool read = slRunCore(this, [&] {
+    try
+    {
+      slUpdateOrThrow(reader);
+    }
+    catch (const shadelab::Error& e)
+    {
+      // The reader names the image; the scene names the key that asked for it.
+      throw shadelab::Error(std::string(e.what()) + " (material.diffuseTexture of " +
+        (this->Data->sourceFile.empty() ? std::string("the scene") : this->Data->sourceFile) + ")");
+    }
+  });
+  if (!read)
   {
-    this->ErrorMessage = std::string(reader->GetErrorMessage()) + " (material.diffuseTexture of " +
-      (this->Data->sourceFile.empty() ? std::string("the scene") : this->Data->sourceFile) + ")";
     return false;
   }
   vtkNew<vtkTexture> texture;

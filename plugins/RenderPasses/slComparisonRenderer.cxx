@@ -1,9 +1,11 @@
 #include "slComparisonRenderer.h"
 
+#include "slCoreBoundary.h"
 #include "slLightingPass.h"
 #include "slRenderNormals.h"
 #include "slScene.h"
 #include "slOffscreen.h"
+#include "slUpdateOrThrow.h"
 
 #include "shadelab/Scene.h"
 
@@ -91,28 +93,27 @@ void slComparisonRenderer::SetDifference(int a, int b, double amplification)
 
 bool slComparisonRenderer::Render()
 {
-  this->ErrorMessage.clear();
   const int n = static_cast<int>(this->Panels.size());
   const bool difference = this->DifferenceA >= 0;
   if (!this->Scene || !this->Mesh || n == 0)
   {
-    this->ErrorMessage = "slComparisonRenderer needs a scene, a mesh and at least one panel";
+    vtkErrorMacro(<< "slComparisonRenderer needs a scene, a mesh and at least one panel");
     return false;
   }
   if (difference && (this->DifferenceA >= n || this->DifferenceB < 0 || this->DifferenceB >= n))
   {
-    this->ErrorMessage = "difference panels " + std::to_string(this->DifferenceA) + " and " +
-      std::to_string(this->DifferenceB) + " do not exist";
+    vtkErrorMacro(<< "difference panels " << this->DifferenceA << " and " << this->DifferenceB << " do not exist");
     return false;
   }
-  this->ErrorMessage = slDisplayProblem();
-  if (!this->ErrorMessage.empty())
+  const std::string displayProblem = slDisplayProblem();
+  if (!displayProblem.empty())
   {
+    vtkErrorMacro(<< displayProblem);
     return false;
   }
 
-  vtkSmartPointer<vtkPolyData> mesh = slWithRenderNormals(this->Mesh, this->ErrorMessage);
-  if (!mesh)
+  vtkSmartPointer<vtkPolyData> mesh;
+  if (!slRunCore(this, [&] { mesh = slWithRenderNormals(this->Mesh); }))
   {
     return false;
   }
@@ -130,9 +131,9 @@ bool slComparisonRenderer::Render()
     mapper->ScalarVisibilityOff();
     vtkNew<vtkActor> actor;
     actor->SetMapper(mapper);
-    if (!this->Scene->ApplyToActor(actor))
+    // The scene names the texture file it cannot read; this renderer reports it.
+    if (!slRunCore(this, [&] { slCallOrThrow(this->Scene, [&] { return this->Scene->ApplyToActor(actor); }); }))
     {
-      this->ErrorMessage = this->Scene->GetErrorMessage();
       return false;
     }
     vtkNew<vtkRenderer> renderer;

@@ -2,8 +2,10 @@
 
 #include "shadelab/LightingGLSL.h"
 
+#include "slCoreBoundary.h"
 #include "slScene.h"
 #include "slOffscreen.h"
+#include "slUpdateOrThrow.h"
 
 #include "shadelab/Scene.h"
 
@@ -183,7 +185,7 @@ void slFieldImageRenderer::RemoveAllFields()
 }
 
 vtkSmartPointer<vtkRenderer> slFieldImageRenderer::NewFieldRenderer(
-  vtkPolyData* mesh, const std::string& name, int panelWidth, int panelHeight, std::string& error)
+  vtkPolyData* mesh, const std::string& name, int panelWidth, int panelHeight)
 {
   vtkDataArray* array = mesh->GetPointData()->GetArray(name.c_str());
   const bool cellArray = !array;
@@ -193,8 +195,7 @@ vtkSmartPointer<vtkRenderer> slFieldImageRenderer::NewFieldRenderer(
   }
   if (!array)
   {
-    error = "the mesh has no point or cell array \"" + name + "\"";
-    return nullptr;
+    throw shadelab::Error("the mesh has no point or cell array \"" + name + "\"");
   }
   vtkSmartPointer<vtkFloatArray> values = scalarsOf(array);
   vtkNew<vtkPolyData> shown;
@@ -249,15 +250,15 @@ vtkSmartPointer<vtkRenderer> slFieldImageRenderer::NewFieldRenderer(
 
 bool slFieldImageRenderer::Render()
 {
-  this->ErrorMessage.clear();
   if (!this->Mesh || !this->Scene || this->Fields.empty())
   {
-    this->ErrorMessage = "slFieldImageRenderer needs a mesh, a scene and at least one field";
+    vtkErrorMacro(<< "slFieldImageRenderer needs a mesh, a scene and at least one field");
     return false;
   }
-  this->ErrorMessage = slDisplayProblem();
-  if (!this->ErrorMessage.empty())
+  const std::string displayProblem = slDisplayProblem();
+  if (!displayProblem.empty())
   {
+    vtkErrorMacro(<< displayProblem);
     return false;
   }
   const int n = static_cast<int>(this->Fields.size());
@@ -270,9 +271,10 @@ bool slFieldImageRenderer::Render()
 
   for (int i = 0; i < n; ++i)
   {
-    vtkSmartPointer<vtkRenderer> renderer = NewFieldRenderer(
-      this->Mesh, this->Fields[static_cast<size_t>(i)], this->PanelWidth, this->PanelHeight, this->ErrorMessage);
-    if (!renderer)
+    vtkSmartPointer<vtkRenderer> renderer;
+    if (!slRunCore(this, [&] {
+          renderer = NewFieldRenderer(this->Mesh, this->Fields[static_cast<size_t>(i)], this->PanelWidth, this->PanelHeight);
+        }))
     {
       return false;
     }

@@ -62,11 +62,11 @@ public:
   /// One panel on its own: a renderer showing the point (or cell) array
   /// @p arrayName of @p mesh colour-mapped as described above, with its
   /// scalar bar and title laid out for a @p panelWidth x @p panelHeight
-  /// viewport; no camera or lights are set. Null, with @p error, if the mesh
-  /// has no such array. Render() builds its grid from these; shadelab-viewer
+  /// viewport; no camera or lights are set. Throws shadelab::Error if the
+  /// mesh has no such array. Render() builds its grid from these; shadelab-viewer
   /// shows one in its fields panel.
   static vtkSmartPointer<vtkRenderer> NewFieldRenderer(
-    vtkPolyData* mesh, const std::string& arrayName, int panelWidth, int panelHeight, std::string& error);
+    vtkPolyData* mesh, const std::string& arrayName, int panelWidth, int panelHeight);
 #endif
 
 protected:

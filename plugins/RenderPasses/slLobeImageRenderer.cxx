@@ -2,7 +2,9 @@
 
 #include "slAlbedoTable.h"
 #include "slBRDFLobeSource.h"
+#include "slCoreBoundary.h"
 #include "slOffscreen.h"
+#include "slUpdateOrThrow.h"
 
 #include "shadelab/Scene.h"
 
@@ -116,15 +118,15 @@ void slLobeImageRenderer::RemoveAllModels()
 
 bool slLobeImageRenderer::Render()
 {
-  this->ErrorMessage.clear();
   if (this->Models.empty())
   {
-    this->ErrorMessage = "slLobeImageRenderer needs at least one model";
+    vtkErrorMacro(<< "slLobeImageRenderer needs at least one model");
     return false;
   }
-  this->ErrorMessage = slDisplayProblem();
-  if (!this->ErrorMessage.empty())
+  const std::string displayProblem = slDisplayProblem();
+  if (!displayProblem.empty())
   {
+    vtkErrorMacro(<< displayProblem);
     return false;
   }
   vtkSmartPointer<vtkRenderWindow> window = slOffscreenWindow(3 * this->PanelWidth, this->PanelHeight);

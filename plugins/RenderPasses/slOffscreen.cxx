@@ -1,5 +1,7 @@
 #include "slOffscreen.h"
 
+#include "shadelab/Error.h"
+
 #include "slGLXContextCheck.h"
 
 #include <vtkCallbackCommand.h>
@@ -33,7 +35,7 @@ vtkSmartPointer<vtkRenderWindow> slOffscreenWindow(int width, int height)
   // without a context. Stop there with the reason instead of either.
   vtkNew<vtkCallbackCommand> noContext;
   noContext->SetCallback([](vtkObject*, unsigned long, void*, void*) {
-    throw std::runtime_error("VTK cannot create an OpenGL context on the X display");
+    throw shadelab::Error("VTK cannot create an OpenGL context on the X display");
   });
   window->AddObserver(vtkCommand::ExitEvent, noContext);
   return window;

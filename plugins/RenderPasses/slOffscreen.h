@@ -23,7 +23,7 @@ SHADELABRENDERPASSES_EXPORT std::string slDisplayProblem();
 
 /// An offscreen window of @p width x @p height, multisampling off, so that
 /// the same scene gives the same pixels. Where VTK would abort() because it
-/// cannot create its OpenGL context, rendering it throws std::runtime_error.
+/// cannot create its OpenGL context, rendering it throws shadelab::Error.
 SHADELABRENDERPASSES_EXPORT vtkSmartPointer<vtkRenderWindow> slOffscreenWindow(int width, int height);
 
 /// Renders @p window and returns its back buffer as RGB unsigned char, row 0

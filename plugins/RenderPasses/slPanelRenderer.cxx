@@ -14,5 +14,4 @@ void slPanelRenderer::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "PanelSize: " << this->PanelWidth << " x " << this->PanelHeight << "\n";
-  os << indent << "ErrorMessage: " << this->ErrorMessage << "\n";
 }

@@ -3,10 +3,11 @@
 /**
  * @class   slPanelRenderer
  * @brief   Base of ShadeLab's composite-image renderers: panels of a fixed
- *          size, one offscreen render, the image, and a one-line error.
+ *          size, one offscreen render and the image.
  *
- * Subclasses lay out their panels in Render(), which returns false and sets
- * the error message on failure; GetImage() then holds the last good image.
+ * Subclasses lay out their panels in Render(), which on failure reports one
+ * line through vtkErrorMacro and returns false (slCallOrThrow() gives the
+ * line back); GetImage() then holds the last good image.
  *
  * @sa slComparisonRenderer slFieldImageRenderer slLobeImageRenderer
  */
@@ -34,21 +35,17 @@ public:
   vtkGetMacro(PanelHeight, int);
   ///@}
 
-  /// Renders all panels. False, with GetErrorMessage(), on failure.
+  /// Renders all panels. False, after vtkErrorMacro, on failure.
   virtual bool Render() = 0;
 
   /// The composite image (RGB, unsigned char, row 0 at the bottom).
   vtkImageData* GetImage();
-
-  /// Why the last Render() failed, or "".
-  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
 
 protected:
   slPanelRenderer();
   ~slPanelRenderer() override;
 
   vtkSmartPointer<vtkImageData> Image;
-  std::string ErrorMessage;
   int PanelWidth = 400;
   int PanelHeight = 300;
 

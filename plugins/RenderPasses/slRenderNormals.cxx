@@ -1,13 +1,14 @@
 #include "slRenderNormals.h"
 
 #include "slPolyDataNormals.h"
+#include "slUpdateOrThrow.h"
 
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 
 vtkSmartPointer<vtkPolyData> slWithRenderNormals(
-  vtkPolyData* mesh, std::string& error, const slRenderNormalsOptions& options)
+  vtkPolyData* mesh, const slRenderNormalsOptions& options)
 {
   static_assert(slPolyDataNormals::ANGLE == slRenderNormalsOptions().weighting, "the default is angle weighting");
   if (mesh->GetPointData()->GetNormals() && !options.replace)
@@ -22,12 +23,7 @@ vtkSmartPointer<vtkPolyData> slWithRenderNormals(
   normals->ConsistencyOn();
   normals->WeldCoincidentPointsOn();
   normals->ComputeCellNormalsOn();
-  normals->Update();
-  if (*normals->GetErrorMessage())
-  {
-    error = normals->GetErrorMessage();
-    return nullptr;
-  }
+  slUpdateOrThrow(normals);
   vtkSmartPointer<vtkPolyData> out = normals->GetOutput();
   return out;
 }

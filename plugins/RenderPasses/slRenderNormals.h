@@ -28,9 +28,10 @@ struct slRenderNormalsOptions
 /// @p mesh itself if it has point normals (and !options.replace); otherwise a
 /// copy with point and cell "Normals" from slPolyDataNormals with @p options,
 /// consistent orientation, and coincident points welded for the computation
-/// (texture seams and unwelded patches do not show as creases). Null, with
-/// @p error set, if the normals cannot be computed.
+/// (texture seams and unwelded patches do not show as creases). Throws
+/// shadelab::Error with slPolyDataNormals' reason if the normals cannot be
+/// computed.
 SHADELABRENDERPASSES_EXPORT vtkSmartPointer<vtkPolyData> slWithRenderNormals(
-  vtkPolyData* mesh, std::string& error, const slRenderNormalsOptions& options = slRenderNormalsOptions());
+  vtkPolyData* mesh, const slRenderNormalsOptions& options = slRenderNormalsOptions());
 
 #endif

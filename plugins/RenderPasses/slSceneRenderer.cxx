@@ -1,9 +1,11 @@
 #include "slSceneRenderer.h"
 
+#include "slCoreBoundary.h"
 #include "slLightingPass.h"
 #include "slOffscreen.h"
 #include "slRenderNormals.h"
 #include "slScene.h"
+#include "slUpdateOrThrow.h"
 
 #include <vtkActor.h>
 #include <vtkImageData.h>
@@ -101,9 +103,10 @@ bool slSceneRenderer::Render()
   {
     return false;
   }
-  this->ErrorMessage = slDisplayProblem();
-  if (!this->ErrorMessage.empty())
+  const std::string displayProblem = slDisplayProblem();
+  if (!displayProblem.empty())
   {
+    vtkErrorMacro(<< displayProblem);
     return false;
   }
   const shadelab::Scene& scene = this->Scene->GetScene();
@@ -115,11 +118,10 @@ bool slSceneRenderer::Render()
 
 bool slSceneRenderer::Prepare()
 {
-  this->ErrorMessage.clear();
   this->RenderedMesh = nullptr;
   if (!this->Scene || !this->Mesh)
   {
-    this->ErrorMessage = "slSceneRenderer needs a scene and a mesh";
+    vtkErrorMacro(<< "slSceneRenderer needs a scene and a mesh");
     return false;
   }
   const shadelab::Scene& scene = this->Scene->GetScene();
@@ -132,8 +134,7 @@ bool slSceneRenderer::Prepare()
     options.splitting = this->Splitting;
     options.featureAngle = this->FeatureAngle;
     options.replace = this->ReplaceNormals;
-    mesh = slWithRenderNormals(this->Mesh, this->ErrorMessage, options);
-    if (!mesh)
+    if (!slRunCore(this, [&] { mesh = slWithRenderNormals(this->Mesh, options); }))
     {
       return false;
     }
@@ -145,9 +146,9 @@ bool slSceneRenderer::Prepare()
   mapper->ScalarVisibilityOff();
   this->Actor = vtkSmartPointer<vtkActor>::New();
   this->Actor->SetMapper(mapper);
-  if (!this->Scene->ApplyToActor(this->Actor))
+  // The scene names the texture file it cannot read; this renderer reports it.
+  if (!slRunCore(this, [&] { slCallOrThrow(this->Scene, [&] { return this->Scene->ApplyToActor(this->Actor); }); }))
   {
-    this->ErrorMessage = this->Scene->GetErrorMessage();
     return false;
   }
 

@@ -105,12 +105,12 @@ public:
 
   /// Builds the renderer (actor, overlays, lights, camera, lighting pass)
   /// without a window; GetRenderer() then returns it, ready to be added to
-  /// any render window of the scene's size. False, with GetErrorMessage(),
-  /// on failure.
+  /// any render window of the scene's size. False, after vtkErrorMacro, on
+  /// failure.
   bool Prepare();
 
-  /// Prepare(), then renders one frame offscreen and captures it. Returns
-  /// false and sets GetErrorMessage() on failure.
+  /// Prepare(), then renders one frame offscreen and captures it. False,
+  /// after vtkErrorMacro, on failure.
   bool Render();
 
   /// The mesh as drawn by the last Prepare(): the input, or a copy with the
@@ -124,8 +124,6 @@ public:
   vtkRenderer* GetRenderer();
   vtkRenderWindow* GetRenderWindow();
   vtkActor* GetActor();
-
-  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
 
   /// True if an X display is available for rendering (DISPLAY is set).
   static bool HasDisplay();
@@ -159,7 +157,6 @@ private:
   bool ReplaceNormals = false;
   int Width = 0;
   int Height = 0;
-  std::string ErrorMessage;
 };
 
 #endif

@@ -92,7 +92,7 @@ TEST(AtomicFile, UnwritableFolderThrowsNamingTheFile)
     writeFileAtomically("/nonexistent-folder/x.json", "data");
     FAIL();
   }
-  catch (const std::runtime_error& e)
+  catch (const shadelab::Error& e)
   {
     EXPECT_EQ(std::string(e.what()).rfind("/nonexistent-folder/x.json: cannot create output file", 0), 0u);
   }
@@ -154,7 +154,7 @@ TEST(AtomicFile, CommitWrittenRefusesAShortFile)
     output.commitWritten(10);
     FAIL();
   }
-  catch (const std::runtime_error& e)
+  catch (const shadelab::Error& e)
   {
     EXPECT_EQ(std::string(e.what()), path + ": cannot write output file: the writer wrote 5 bytes of 10");
   }

@@ -22,7 +22,7 @@ std::string errorFor(const std::string& text)
   {
     parseScene(text, "bad.json");
   }
-  catch (const SceneError& e)
+  catch (const Error& e)
   {
     return e.what();
   }
@@ -197,9 +197,9 @@ TEST(SceneFile, MissingFile)
   try
   {
     readSceneFile("/nonexistent/scene.json");
-    FAIL() << "expected SceneError";
+    FAIL() << "expected shadelab::Error";
   }
-  catch (const SceneError& e)
+  catch (const Error& e)
   {
     EXPECT_STREQ(e.what(), "/nonexistent/scene.json: cannot open scene file");
   }

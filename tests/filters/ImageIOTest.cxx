@@ -3,6 +3,7 @@
 
 #include "slImageReader.h"
 #include "slImageWriter.h"
+#include "VTKErrors.h"
 
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
@@ -65,7 +66,7 @@ TEST(ImageIO, PNGRoundTripKeepsPixelsAndOrientation)
   vtkNew<slImageWriter> writer;
   writer->SetInputData(gradient(false));
   writer->SetFileName(folder.path("g.png").c_str());
-  ASSERT_TRUE(writer->Write()) << writer->GetErrorMessage();
+  ASSERT_EQ(callError(writer, [&] { return writer->Write(); }), "");
 
   vtkNew<slImageReader> reader;
   reader->SetFileName(folder.path("g.png").c_str());
@@ -87,7 +88,7 @@ TEST(ImageIO, EXRKeepsFloats)
   vtkNew<slImageWriter> writer;
   writer->SetInputData(gradient(true));
   writer->SetFileName(folder.path("g.exr").c_str());
-  ASSERT_TRUE(writer->Write()) << writer->GetErrorMessage();
+  ASSERT_EQ(callError(writer, [&] { return writer->Write(); }), "");
   vtkNew<slImageReader> reader;
   reader->SetFileName(folder.path("g.exr").c_str());
   reader->Update();
@@ -117,8 +118,7 @@ TEST(ImageIO, ReadsAMultiPartEXR)
 
   vtkNew<slImageReader> reader;
   reader->SetFileName(path.c_str());
-  reader->Update();
-  ASSERT_STREQ(reader->GetErrorMessage(), "");
+  ASSERT_EQ(updateError(reader), "");
   int dims[3];
   reader->GetOutput()->GetDimensions(dims);
   EXPECT_EQ(dims[0], 4);
@@ -130,8 +130,7 @@ TEST(ImageIO, ReadsTheSharedHDREnvironmentMap)
 {
   vtkNew<slImageReader> reader;
   reader->SetFileName((std::string(SHADELAB_DATA_DIR) + "/envmaps/venice_sunset_1k.hdr").c_str());
-  reader->Update();
-  ASSERT_STREQ(reader->GetErrorMessage(), "");
+  ASSERT_EQ(updateError(reader), "");
   int dims[3];
   reader->GetOutput()->GetDimensions(dims);
   EXPECT_EQ(dims[0], 1024);
@@ -147,14 +146,12 @@ TEST(ImageIO, UnreadableImageNamesTheFile)
   folder.write("fake.png", "not a png");
   vtkNew<slImageReader> reader;
   reader->SetFileName(folder.path("fake.png").c_str());
-  reader->Update();
-  const std::string error = reader->GetErrorMessage();
+  const std::string error = updateError(reader);
   EXPECT_EQ(error.rfind(folder.path("fake.png") + ": cannot read image", 0), 0u) << error;
   EXPECT_EQ(error.find('\n'), std::string::npos);
 
   reader->SetFileName("/nonexistent/texture.png");
-  reader->Update();
-  EXPECT_EQ(std::string(reader->GetErrorMessage()).rfind("/nonexistent/texture.png: cannot read image", 0), 0u);
+  EXPECT_EQ(updateError(reader).rfind("/nonexistent/texture.png: cannot read image", 0), 0u);
 }
 
 TEST(ImageIO, FailedWriteLeavesTheExistingFile)
@@ -170,6 +167,5 @@ TEST(ImageIO, FailedWriteLeavesTheExistingFile)
 
   writer->SetInputData(gradient(false));
   writer->SetFileName("/nonexistent-folder/out.png");
-  EXPECT_FALSE(writer->Write());
-  EXPECT_EQ(std::string(writer->GetErrorMessage()).rfind("/nonexistent-folder/out.png: cannot create output file", 0), 0u);
+  EXPECT_EQ(callError(writer, [&] { return writer->Write(); }).rfind("/nonexistent-folder/out.png: cannot create output file", 0), 0u);
 }

@@ -2,6 +2,7 @@
 #include "TestFolder.h"
 
 #include "slMeshReader.h"
+#include "VTKErrors.h"
 
 #include <vtkCellArray.h>
 #include <vtkNew.h>
@@ -41,10 +42,9 @@ ReadResult read(const std::string& path)
 {
   vtkNew<slMeshReader> reader;
   reader->SetFileName(path.c_str());
-  reader->Update();
   ReadResult r;
+  r.error = updateError(reader);
   r.mesh = reader->GetOutput();
-  r.error = reader->GetErrorMessage();
   return r;
 }
 } // namespace

@@ -3,6 +3,7 @@
 
 #include "slMeshReader.h"
 #include "slMeshWriter.h"
+#include "VTKErrors.h"
 
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -31,11 +32,10 @@ TEST(MeshWriter, EveryFormatReadsBack)
     vtkNew<slMeshWriter> writer;
     writer->SetInputData(mesh);
     writer->SetFileName(folder.path(name).c_str());
-    ASSERT_TRUE(writer->Write()) << writer->GetErrorMessage();
+    ASSERT_EQ(callError(writer, [&] { return writer->Write(); }), "");
     vtkNew<slMeshReader> reader;
     reader->SetFileName(folder.path(name).c_str());
-    reader->Update();
-    EXPECT_STREQ(reader->GetErrorMessage(), "") << name;
+    EXPECT_EQ(updateError(reader), "") << name;
     EXPECT_EQ(reader->GetOutput()->GetNumberOfPolys(), mesh->GetNumberOfPolys()) << name;
   }
   // VTP keeps the normals array.
@@ -67,7 +67,7 @@ TEST(MeshWriter, EveryVTPCompressionReadsBackExactly)
     writer->SetCompression(compression);
     writer->SetInputData(mesh);
     writer->SetFileName(path.c_str());
-    ASSERT_TRUE(writer->Write()) << writer->GetErrorMessage();
+    ASSERT_EQ(callError(writer, [&] { return writer->Write(); }), "");
     std::ifstream file(path, std::ios::binary);
     const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
     const std::string start = bytes.substr(0, 400);
@@ -77,8 +77,7 @@ TEST(MeshWriter, EveryVTPCompressionReadsBackExactly)
 
     vtkNew<slMeshReader> reader;
     reader->SetFileName(path.c_str());
-    reader->Update();
-    ASSERT_STREQ(reader->GetErrorMessage(), "") << name;
+    ASSERT_EQ(updateError(reader), "") << name;
     vtkPolyData* back = reader->GetOutput();
     ASSERT_EQ(back->GetNumberOfPoints(), mesh->GetNumberOfPoints()) << name;
     for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); i += 97)
@@ -105,8 +104,7 @@ TEST(MeshWriter, FailuresAreCleanAndNamed)
   vtkNew<slMeshWriter> writer;
   writer->SetInputData(empty);
   writer->SetFileName(folder.path("keep.vtp").c_str());
-  EXPECT_FALSE(writer->Write());
-  EXPECT_EQ(std::string(writer->GetErrorMessage()), folder.path("keep.vtp") + ": nothing to write (empty mesh)");
+  EXPECT_EQ(callError(writer, [&] { return writer->Write(); }), folder.path("keep.vtp") + ": nothing to write (empty mesh)");
   std::ifstream in(folder.path("keep.vtp"));
   std::stringstream text;
   text << in.rdbuf();
@@ -116,7 +114,6 @@ TEST(MeshWriter, FailuresAreCleanAndNamed)
   sphere->Update();
   writer->SetInputData(sphere->GetOutput());
   writer->SetFileName(folder.path("m.gltf").c_str());
-  EXPECT_FALSE(writer->Write());
-  EXPECT_EQ(std::string(writer->GetErrorMessage()),
+  EXPECT_EQ(callError(writer, [&] { return writer->Write(); }),
     folder.path("m.gltf") + ": unsupported mesh format \".gltf\" (supported: .vtp .vtk .ply .obj .stl)");
 }

@@ -2,6 +2,7 @@
 #include "slScene.h"
 
 #include "shadelab/Scene.h"
+#include "VTKErrors.h"
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
@@ -33,7 +34,7 @@ const char* kScene = R"({
 vtkSmartPointer<slScene> loadScene()
 {
   auto scene = vtkSmartPointer<slScene>::New();
-  EXPECT_TRUE(scene->ReadString(kScene, "conversion.json")) << scene->GetErrorMessage();
+  EXPECT_EQ(callError(scene, [&] { return scene->ReadString(kScene, "conversion.json"); }), "");
   return scene;
 }
 
@@ -227,4 +228,19 @@ TEST(SceneConversion, CameraLightsMatchVTKTransform)
     EXPECT_NEAR(back.position[i], expected[i], 1e-5) << i;
     EXPECT_NEAR(back.direction[i], s.lights[0].direction[i], 1e-5) << i;
   }
+}
+
+TEST(SceneConversion, UnreadableTextureNamesTheImageAndTheScene)
+{
+  vtkNew<slScene> scene;
+  ASSERT_EQ(callError(scene, [&] {
+    return scene->ReadString(R"({"material": {"diffuseTexture": "/nonexistent/albedo.png"}})", "textured.json");
+  }),
+    "");
+  vtkNew<vtkActor> actor;
+  const std::string error = callError(scene, [&] { return scene->ApplyToActor(actor); });
+  EXPECT_EQ(error.rfind("/nonexistent/albedo.png: cannot read image", 0), 0u) << error;
+  const std::string suffix = " (material.diffuseTexture of textured.json)";
+  ASSERT_GE(error.size(), suffix.size()) << error;
+  EXPECT_EQ(error.substr(error.size() - suffix.size()), suffix) << error;
 }

@@ -10,6 +10,7 @@
 #include "slMeshReader.h"
 #include "slOBJFormat.h"
 #include "slPLYFormat.h"
+#include "slUpdateOrThrow.h"
 
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
@@ -112,9 +113,16 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   const std::string path = fuzzInputFile(data, size, SL_FUZZ_EXTENSION);
   vtkNew<slMeshReader> reader;
   reader->SetFileName(path.c_str());
-  reader->Update();
+  bool failed = false;
+  try
+  {
+    slUpdateOrThrow(reader);
+  }
+  catch (const shadelab::Error&)
+  {
+    failed = true;
+  }
   vtkPolyData* mesh = reader->GetOutput();
-  const bool failed = *reader->GetErrorMessage() != '\0';
   if (failed != (mesh->GetNumberOfPoints() == 0) || !slConnectivityProblem(mesh).empty())
   {
     std::abort();

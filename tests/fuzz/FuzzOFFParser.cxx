@@ -15,7 +15,16 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
   std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));
   vtkNew<vtkPolyData> mesh;
-  if (slParseOFF(in, mesh).empty())
+  bool parsed = true;
+  try
+  {
+    slParseOFF(in, "fuzz.off", mesh);
+  }
+  catch (const shadelab::Error&)
+  {
+    parsed = false;
+  }
+  if (parsed)
   {
     vtkIdType n;
     const vtkIdType* ids;

@@ -1,4 +1,4 @@
-// The scene parser: any bytes give a scene or a SceneError, nothing else.
+// The scene parser: any bytes give a scene or a shadelab::Error, nothing else.
 #include "shadelab/SceneFile.h"
 
 #include <cstddef>
@@ -11,7 +11,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   {
     shadelab::parseScene(std::string(reinterpret_cast<const char*>(data), size), "fuzz.json");
   }
-  catch (const shadelab::SceneError&)
+  catch (const shadelab::Error&)
   {
   }
   return 0;

@@ -2,6 +2,7 @@
 #include "LightingTestMeshes.h"
 
 #include "slCosineField.h"
+#include "VTKErrors.h"
 
 #include <vtkCellData.h>
 #include <vtkIdList.h>
@@ -38,8 +39,7 @@ TEST(CosineField, PointLightCosineChangesFromPointToPoint)
   filter->SetLightIndex(0);
   vtkSmartPointer<vtkPolyData> mesh = sphere(16);
   filter->SetInputData(mesh);
-  filter->Update();
-  ASSERT_STREQ(filter->GetErrorMessage(), "");
+  ASSERT_EQ(updateError(filter), "");
   vtkPolyData* out = filter->GetOutput();
   int negative = 0;
   for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
@@ -110,9 +110,7 @@ TEST(CosineField, LightIndexOutOfRangeIsAnError)
   vtkNew<slCosineField> filter;
   filter->SetScene(makeScene({ whiteLight(LightType::Directional) }, ShadingModel::Lambert));
   filter->SetLightIndex(3);
-  filter->SetGlobalWarningDisplay(0);
   filter->SetInputData(sphere(6));
-  filter->Update();
-  EXPECT_STREQ(filter->GetErrorMessage(), "LightIndex 3 is out of range: the scene has 1 lights");
+  EXPECT_EQ(updateError(filter), "LightIndex 3 is out of range: the scene has 1 lights");
   EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
 }

@@ -4,6 +4,7 @@
 #include "slAlbedoTable.h"
 #include "slBRDFLobeSource.h"
 #include "slLobesOnMesh.h"
+#include "VTKErrors.h"
 
 #include <vtkIdList.h>
 #include <vtkTable.h>
@@ -133,8 +134,7 @@ TEST(LobesOnMesh, EachLobeSitsInItsPointsNormalFrame)
   lobes->SetScene(makeScene({ light }, ShadingModel::LambertNormalized));
   lobes->SetPointIds(ids);
   lobes->SetInputData(mesh);
-  lobes->Update();
-  ASSERT_STREQ(lobes->GetErrorMessage(), "");
+  ASSERT_EQ(updateError(lobes), "");
   vtkPolyData* out = lobes->GetOutput();
   vtkDataArray* owner = out->GetPointData()->GetArray("PointId");
   ASSERT_NE(owner, nullptr);
@@ -171,8 +171,7 @@ TEST(LobesOnMesh, SampledPointsAreLitSoEveryLobeShows)
   lobes->SetScene(makeScene({ light }, ShadingModel::BlinnPhong));
   lobes->SetNumberOfLobes(36);
   lobes->SetInputData(mesh);
-  lobes->Update();
-  ASSERT_STREQ(lobes->GetErrorMessage(), "");
+  ASSERT_EQ(updateError(lobes), "");
   EXPECT_EQ(lobes->GetNumberOfLobesDrawn(), 36);
   vtkPolyData* out = lobes->GetOutput();
   vtkDataArray* owner = out->GetPointData()->GetArray("PointId");
@@ -220,8 +219,7 @@ TEST(LobesOnMesh, TinyLobesAndPointsThatAreNotFinite)
   vtkNew<slLobesOnMesh> lobes;
   lobes->SetScene(scene);
   lobes->SetInputData(mesh);
-  lobes->Update();
-  ASSERT_STREQ(lobes->GetErrorMessage(), "");
+  ASSERT_EQ(updateError(lobes), "");
   vtkPolyData* out = lobes->GetOutput();
   ASSERT_GT(out->GetNumberOfPoints(), 0);
   double furthest = 0.0;
@@ -241,6 +239,5 @@ TEST(LobesOnMesh, TinyLobesAndPointsThatAreNotFinite)
   ids->InsertNextId(0);
   lobes->SetPointIds(ids);
   lobes->SetInputData(mesh);
-  lobes->Update();
-  EXPECT_STREQ(lobes->GetErrorMessage(), "input mesh: point 0 has a coordinate that is not finite");
+  EXPECT_EQ(updateError(lobes), "input mesh: point 0 has a coordinate that is not finite");
 }

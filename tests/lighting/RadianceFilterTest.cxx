@@ -3,6 +3,7 @@
 
 #include "shadelab/ShadePoint.h"
 #include "slRadianceFilter.h"
+#include "VTKErrors.h"
 
 #include <vtkCamera.h>
 #include <vtkFloatArray.h>
@@ -24,8 +25,7 @@ namespace
 vtkSmartPointer<vtkPolyData> run(slRadianceFilter* filter, vtkPolyData* mesh)
 {
   filter->SetInputData(mesh);
-  filter->Update();
-  EXPECT_STREQ(filter->GetErrorMessage(), "");
+  EXPECT_EQ(updateError(filter), "");
   return filter->GetOutput();
 }
 } // namespace

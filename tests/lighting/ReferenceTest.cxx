@@ -5,6 +5,7 @@
 
 #include "../filters/TestFolder.h"
 #include "slRadianceReference.h"
+#include "VTKErrors.h"
 
 #include <vtkCallbackCommand.h>
 #include <vtkFieldData.h>
@@ -48,8 +49,7 @@ vtkSmartPointer<slScene> lambertScene(const std::vector<SceneLight>& lights, con
 vtkSmartPointer<vtkPolyData> reference(slRadianceReference* filter, vtkPolyData* mesh)
 {
   filter->SetInputData(mesh);
-  filter->Update();
-  EXPECT_STREQ(filter->GetErrorMessage(), "");
+  EXPECT_EQ(updateError(filter), "");
   return filter->GetOutput();
 }
 
@@ -229,29 +229,23 @@ TEST(RadianceReference, BadEnvironmentMapsAndNoLight)
   TestFolder folder;
   folder.write("broken.hdr", "this is not an image");
   auto expectError = [](slRadianceReference* filter, const std::string& message) {
-    filter->SetGlobalWarningDisplay(0);
     filter->SetInputData(sphere(6));
-    filter->Update();
-    EXPECT_EQ(filter->GetErrorMessage(), message);
+    EXPECT_EQ(updateError(filter), message);
     EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
   };
   {
     vtkNew<slRadianceReference> filter;
     filter->SetEnvironmentFileName("/nonexistent/sky.hdr");
     filter->SetInputData(sphere(6));
-    filter->SetGlobalWarningDisplay(0);
-    filter->Update();
-    EXPECT_EQ(std::string(filter->GetErrorMessage()).rfind("/nonexistent/sky.hdr: cannot read image", 0), 0u)
-      << filter->GetErrorMessage();
+    const std::string error = updateError(filter);
+    EXPECT_EQ(error.rfind("/nonexistent/sky.hdr: cannot read image", 0), 0u) << error;
   }
   {
     vtkNew<slRadianceReference> filter;
     filter->SetEnvironmentFileName(folder.path("broken.hdr").c_str());
     filter->SetInputData(sphere(6));
-    filter->SetGlobalWarningDisplay(0);
-    filter->Update();
-    EXPECT_EQ(std::string(filter->GetErrorMessage()).rfind(folder.path("broken.hdr") + ": cannot read image", 0), 0u)
-      << filter->GetErrorMessage();
+    const std::string error = updateError(filter);
+    EXPECT_EQ(error.rfind(folder.path("broken.hdr") + ": cannot read image", 0), 0u) << error;
   }
   {
     vtkNew<slRadianceReference> filter;

@@ -8,6 +8,7 @@
 #include "slImageWriter.h"
 #include "slMeshReader.h"
 #include "slNormalMapFilter.h"
+#include "VTKErrors.h"
 
 #include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
@@ -84,7 +85,7 @@ std::string writePNG(const TestFolder& folder, const std::string& name, int w, i
   writer->SetInputData(image);
   const std::string path = folder.path(name);
   writer->SetFileName(path.c_str());
-  EXPECT_TRUE(writer->Write()) << writer->GetErrorMessage();
+  EXPECT_EQ(callError(writer, [&] { return writer->Write(); }), "");
   return path;
 }
 

@@ -5,6 +5,7 @@
 #include "slImageWriter.h"
 #include "slLightingPass.h"
 #include "slNormalMapFilter.h"
+#include "VTKErrors.h"
 
 #include <vtkActor.h>
 #include <vtkFloatArray.h>
@@ -161,14 +162,14 @@ TEST_P(NormalMap, GPUDecodesAsTheCPUFilter)
   vtkNew<slImageWriter> writer;
   writer->SetInputData(tiltedNormalImage(tilt));
   writer->SetFileName(path.c_str());
-  ASSERT_TRUE(writer->Write()) << writer->GetErrorMessage();
+  ASSERT_EQ(callError(writer, [&] { return writer->Write(); }), "");
   vtkNew<slNormalMapFilter> mapped;
   mapped->SetInputData(tangentPlane(GetParam(), 1.0f, skew));
   mapped->SetFileName(path.c_str());
-  mapped->Update();
+  const std::string error = updateError(mapped);
   std::remove(path.c_str());
   rmdir(folder);
-  ASSERT_STREQ(mapped->GetErrorMessage(), "");
+  ASSERT_EQ(error, "");
   double n[3];
   mapped->GetOutput()->GetPointData()->GetNormals()->GetTuple(0, n);
   const double cpu = std::max(0.0, -(n[0] * scene.lights[0].direction.x + n[1] * scene.lights[0].direction.y +

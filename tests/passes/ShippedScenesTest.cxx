@@ -7,6 +7,7 @@
 #include "shadelab/Scene.h"
 #include "slRadianceFilter.h"
 #include "slScene.h"
+#include "VTKErrors.h"
 
 #include <vtkDataArray.h>
 #include <vtkPointData.h>
@@ -103,7 +104,7 @@ TEST_P(ShippedSceneAgrees, CPUAndGPUWithin2Of255)
 {
   const Case& c = GetParam();
   vtkNew<slScene> file;
-  ASSERT_TRUE(file->ReadFile(c.file.c_str())) << file->GetErrorMessage();
+  ASSERT_EQ(callError(file, [&] { return file->ReadFile(c.file.c_str()); }), "");
   shadelab::Scene scene = file->GetScene();
   ASSERT_FALSE(scene.camera.hasPosition) << c.file << ": the shipped scenes fit their camera";
   scene.width = c.width;
@@ -124,9 +125,9 @@ TEST_P(ShippedSceneAgrees, CPUAndGPUWithin2Of255)
     vtkNew<slRadianceFilter> probe;
     probe->SetScene(probeScene);
     probe->SetInputData(mesh);
-    probe->Update();
+    ASSERT_EQ(updateError(probe), "");
     vtkDataArray* radiance = probe->GetOutput()->GetPointData()->GetArray("Radiance");
-    ASSERT_NE(radiance, nullptr) << probe->GetErrorMessage();
+    ASSERT_NE(radiance, nullptr);
     double brightest = 0.0;
     for (int c = 0; c < 3; ++c)
     {

@@ -1,9 +1,13 @@
 """The ShadeLab::Normals filters from Python: import, run, and error messages."""
 import os
+import sys
 import unittest
 
 import shadelab
 from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from vtk_errors import update_error  # noqa: E402
 
 DATA = os.environ["SHADELAB_DATA_DIR"]
 
@@ -35,16 +39,14 @@ class NormalsFromPythonTest(unittest.TestCase):
         plane.SetResolution(4, 4)
         t = shadelab.slPolyDataTangents()
         t.SetInputConnection(plane.GetOutputPort())
-        t.Update()
-        self.assertEqual(t.GetErrorMessage(), "")
+        self.assertEqual(update_error(t), "")
         tangent = t.GetOutput().GetPointData().GetArray("Tangents").GetTuple4(0)
         for got, want in zip(tangent, (1, 0, 0, 1)):
             self.assertAlmostEqual(got, want, places=5)
         m = shadelab.slNormalMapFilter()
         m.SetInputConnection(t.GetOutputPort())
         m.SetFileName("/nonexistent/map.png")
-        m.Update()
-        self.assertIn("/nonexistent/map.png", m.GetErrorMessage())
+        self.assertIn("/nonexistent/map.png", update_error(m))
         self.assertEqual(m.GetOutput().GetNumberOfPoints(), 0)
 
 

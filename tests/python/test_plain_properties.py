@@ -2,10 +2,14 @@
 reach): scene file name, lighting model, material values and the diffuse
 texture file name, each against a value known without them."""
 import os
+import sys
 import unittest
 
 import shadelab
 import vtk
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from vtk_errors import update_error  # noqa: E402
 
 DATA = os.environ["SHADELAB_DATA_DIR"]
 SCENE = os.path.join(DATA, "scenes", "default.json")
@@ -26,10 +30,9 @@ def radiance(configure, array="Radiance"):
     f = shadelab.slRadianceFilter()
     f.SetInputData(spot_with_normals())
     configure(f)
-    f.SetGlobalWarningDisplay(0)
-    f.Update()
+    error = update_error(f)
     out = f.GetOutput().GetPointData().GetArray(array)
-    return f.GetErrorMessage(), out
+    return error, out
 
 
 def values(array):

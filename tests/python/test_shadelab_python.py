@@ -7,6 +7,9 @@ import unittest
 import shadelab
 from vtkmodules.vtkRenderingCore import vtkLight, vtkRenderer
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from vtk_errors import call_error, update_error  # noqa: E402
+
 DATA = os.environ["SHADELAB_DATA_DIR"]
 
 
@@ -20,23 +23,20 @@ class MeshReaderTest(unittest.TestCase):
     def test_reads_fandisk(self):
         reader = shadelab.slMeshReader()
         reader.SetFileName(os.path.join(DATA, "meshes", "fandisk.obj"))
-        reader.Update()
-        self.assertEqual(reader.GetErrorMessage(), "")
+        self.assertEqual(update_error(reader), "")
         self.assertEqual(reader.GetOutput().GetNumberOfPolys(), 12946)
 
     def test_error_message_for_missing_file(self):
         reader = shadelab.slMeshReader()
         reader.SetFileName("/nonexistent/m.ply")
-        reader.GlobalWarningDisplayOff()
-        reader.Update()
-        self.assertEqual(reader.GetErrorMessage(), "/nonexistent/m.ply: cannot open file")
-        reader.GlobalWarningDisplayOn()
+        self.assertEqual(update_error(reader), "/nonexistent/m.ply: cannot open file")
+        self.assertEqual(reader.GetOutput().GetNumberOfPoints(), 0)
 
 
 class SceneTest(unittest.TestCase):
     def test_default_scene_to_vtk_lights(self):
         scene = shadelab.slScene()
-        self.assertTrue(scene.ReadFile(os.path.join(DATA, "scenes", "default.json")), scene.GetErrorMessage())
+        self.assertEqual(call_error(scene, lambda: scene.ReadFile(os.path.join(DATA, "scenes", "default.json"))), "")
         self.assertEqual(scene.GetModelName(), "blinn-phong")
         renderer = vtkRenderer()
         scene.ApplyLights(renderer)
@@ -45,8 +45,8 @@ class SceneTest(unittest.TestCase):
 
     def test_bad_scene_message(self):
         scene = shadelab.slScene()
-        self.assertFalse(scene.ReadString('{"material": {"shininess": -3}}', "mine.json"))
-        self.assertEqual(scene.GetErrorMessage(), "mine.json: material.shininess: -3 is out of range [0, 100000]")
+        self.assertEqual(call_error(scene, lambda: scene.ReadString('{"material": {"shininess": -3}}', "mine.json")),
+                         "mine.json: material.shininess: -3 is out of range [0, 100000]")
 
     def test_vtk_lights_in(self):
         light = vtkLight()
@@ -66,7 +66,7 @@ class SceneTest(unittest.TestCase):
             path = os.path.join(folder, "s.json")
             self.assertTrue(scene.WriteFile(path))
             again = shadelab.slScene()
-            self.assertTrue(again.ReadFile(path), again.GetErrorMessage())
+            self.assertEqual(call_error(again, lambda: again.ReadFile(path)), "")
             self.assertEqual(again.GetModelName(), "phong-normalized")
 
 

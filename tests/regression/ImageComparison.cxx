@@ -2,6 +2,7 @@
 
 #include "slImageReader.h"
 #include "slImageWriter.h"
+#include "VTKErrors.h"
 
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
@@ -103,7 +104,7 @@ std::string writeBaseline(vtkImageData* candidate, const std::string& baselinePa
   vtkNew<slImageWriter> writer;
   writer->SetInputData(candidate);
   writer->SetFileName(baselinePath.c_str());
-  return writer->Write() ? std::string() : writer->GetErrorMessage();
+  return callError(writer, [&] { return writer->Write(); });
 }
 
 } // namespace regression

@@ -15,6 +15,7 @@
 #include "slMeshReader.h"
 #include "slScene.h"
 #include "slSceneRenderer.h"
+#include "VTKErrors.h"
 
 #include <vtkNew.h>
 #include <vtkPolyData.h>
@@ -116,10 +117,9 @@ TEST_P(ImageRegression, MatchesBaseline)
   const Case& c = GetParam();
   vtkNew<slMeshReader> reader;
   reader->SetFileName(c.mesh.c_str());
-  reader->Update();
-  ASSERT_STREQ(reader->GetErrorMessage(), "");
+  ASSERT_EQ(updateError(reader), "");
   vtkNew<slScene> scene;
-  ASSERT_TRUE(scene->ReadFile(c.scene.c_str())) << scene->GetErrorMessage();
+  ASSERT_EQ(callError(scene, [&] { return scene->ReadFile(c.scene.c_str()); }), "");
   ASSERT_TRUE(scene->SetModelName(c.model.c_str()));
   ASSERT_TRUE(scene->SetFrequencyName(c.frequency.c_str()));
 
@@ -128,7 +128,7 @@ TEST_P(ImageRegression, MatchesBaseline)
   renderer->SetMesh(reader->GetOutput());
   renderer->GetLightingPass()->SetComponent(c.component);
   renderer->GetLightingPass()->SetFalseColor(c.falseColor);
-  ASSERT_TRUE(renderer->Render()) << renderer->GetErrorMessage();
+  ASSERT_EQ(callError(renderer, [&] { return renderer->Render(); }), "");
 
   checkAgainstBaseline(renderer->GetImage(), c.name);
 }
@@ -149,7 +149,7 @@ TEST(ImageRegressionCompare, FrequenciesSideBySideWithDifference)
   comparison->AddPanel("Gouraud", "blinn-phong", "gouraud");
   comparison->AddPanel("Phong", "blinn-phong", "phong");
   comparison->SetDifference(1, 2, 8.0);
-  ASSERT_TRUE(comparison->Render()) << comparison->GetErrorMessage();
+  ASSERT_EQ(callError(comparison, [&] { return comparison->Render(); }), "");
   checkAgainstBaseline(comparison->GetImage(), "compare-frequencies-diff");
 }
 
@@ -165,8 +165,7 @@ TEST(ImageRegressionFields, CosineFieldsWithScalarBarsAndLightGlyphs)
   vtkNew<slCosineField> cosine;
   cosine->SetScene(scene);
   cosine->SetInputConnection(normals->GetOutputPort());
-  cosine->Update();
-  ASSERT_STREQ(cosine->GetErrorMessage(), "");
+  ASSERT_EQ(updateError(cosine), "");
   vtkNew<slFieldImageRenderer> fields;
   fields->SetMesh(cosine->GetOutput());
   fields->SetScene(scene);
@@ -174,7 +173,7 @@ TEST(ImageRegressionFields, CosineFieldsWithScalarBarsAndLightGlyphs)
   fields->AddField("CosTheta_2");
   fields->SetPanelWidth(200);
   fields->SetPanelHeight(150);
-  ASSERT_TRUE(fields->Render()) << fields->GetErrorMessage();
+  ASSERT_EQ(callError(fields, [&] { return fields->Render(); }), "");
   checkAgainstBaseline(fields->GetImage(), "fields-cosine-spot");
 }
 
@@ -187,7 +186,7 @@ TEST(ImageRegressionLobes, ThreePartsWithModelsOverlaid)
   lobes->GetLobeParameters()->SetIncidenceAngle(40.0);
   lobes->SetPanelWidth(240);
   lobes->SetPanelHeight(200);
-  ASSERT_TRUE(lobes->Render()) << lobes->GetErrorMessage();
+  ASSERT_EQ(callError(lobes, [&] { return lobes->Render(); }), "");
   checkAgainstBaseline(lobes->GetImage(), "lobes-phong-blinn-normalized");
 }
 

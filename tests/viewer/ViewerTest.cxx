@@ -21,6 +21,7 @@
 #include "slMeshReader.h"
 #include "slScene.h"
 #include "slSceneRenderer.h"
+#include "VTKErrors.h"
 
 #include <vtkActorCollection.h>
 #include <vtkCamera.h>
@@ -133,9 +134,10 @@ Rgb renderOffscreen(const Scene& scene)
   vtkNew<slSceneRenderer> renderer;
   renderer->SetScene(sceneObject);
   renderer->SetMesh(reader->GetOutput());
-  if (!renderer->Render())
+  const std::string error = callError(renderer, [&] { return renderer->Render(); });
+  if (!error.empty())
   {
-    qFatal("offscreen render failed: %s", renderer->GetErrorMessage());
+    qFatal("offscreen render failed: %s", error.c_str());
   }
   return toRgb(renderer->GetImage());
 }
@@ -469,8 +471,7 @@ private slots:
       vtkNew<slImageReader> reader;
       const QByteArray file = this->path(name).toLocal8Bit();
       reader->SetFileName(file.constData());
-      reader->Update();
-      QCOMPARE(QString(reader->GetErrorMessage()), QString());
+      QCOMPARE(QString::fromStdString(updateError(reader)), QString());
       int dims[3];
       reader->GetOutput()->GetDimensions(dims);
       QCOMPARE(dims[0], view.width);
@@ -544,3 +545,4 @@ int main(int argc, char** argv)
 }
 
 #include "ViewerTest.moc"
+#include "VTKErrors.h"

@@ -102,7 +102,7 @@ AtomicOutput::AtomicOutput(std::string target)
     const int fd = ::mkostemps(buffer.data(), static_cast<int>(name.suffix.size()), O_CLOEXEC);
     if (fd < 0)
     {
-      throw std::runtime_error(this->Target + ": cannot create output file: " + std::strerror(errno));
+      throw Error(this->Target + ": cannot create output file: " + std::strerror(errno));
     }
     // The lock is advisory: were flock() unsupported here, writing still works.
     ::flock(fd, LOCK_EX);
@@ -147,7 +147,7 @@ AtomicOutput::~AtomicOutput()
 
 void AtomicOutput::fail(const std::string& what, int error) const
 {
-  throw std::runtime_error(this->Target + ": " + what + ": " + std::strerror(error));
+  throw Error(this->Target + ": " + what + ": " + std::strerror(error));
 }
 
 void AtomicOutput::commit(const char* data, std::size_t size)
@@ -186,7 +186,7 @@ void AtomicOutput::commitWritten(long long expectedSize)
         this->fail("cannot write output file", error);
       }
     }
-    throw std::runtime_error(this->Target + ": cannot write output file: the writer wrote " +
+    throw Error(this->Target + ": cannot write output file: the writer wrote " +
       std::to_string(info.st_size) + " bytes of " + std::to_string(expectedSize));
   }
   this->syncAndRename();

@@ -23,22 +23,23 @@ int findInterval(const float* cdf, int n, float u, float& fraction)
 }
 } // namespace
 
-std::string EnvironmentMap::set(int width, int height, std::vector<float> rgb)
+void EnvironmentMap::set(int width, int height, std::vector<float> rgb, const std::string& name)
 {
+  const std::string prefix = name + ": environment map ";
   if (width < 2 || height < 1 || width != 2 * height)
   {
-    return "is " + std::to_string(width) + " x " + std::to_string(height) +
-      " pixels; an equirectangular environment map must be twice as wide as it is high";
+    throw Error(prefix + "is " + std::to_string(width) + " x " + std::to_string(height) +
+      " pixels; an equirectangular environment map must be twice as wide as it is high");
   }
   if (rgb.size() != static_cast<size_t>(3) * width * height)
   {
-    return "has " + std::to_string(rgb.size()) + " values, not 3 per pixel";
+    throw Error(prefix + "has " + std::to_string(rgb.size()) + " values, not 3 per pixel");
   }
   for (size_t i = 0; i < rgb.size(); ++i)
   {
     if (!std::isfinite(rgb[i]) || rgb[i] < 0.0f)
     {
-      return "pixel " + std::to_string(i / 3) + " has a negative or non-finite value";
+      throw Error(prefix + "pixel " + std::to_string(i / 3) + " has a negative or non-finite value");
     }
   }
   this->Width = width;
@@ -67,7 +68,6 @@ std::string EnvironmentMap::set(int width, int height, std::vector<float> rgb)
     total += cdf[width];
   }
   this->TotalWeight = total;
-  return "";
 }
 
 void EnvironmentMap::setConstant(const glm::vec3& rgb)

@@ -15,7 +15,7 @@ MemoryFile::MemoryFile()
 {
   if (this->Descriptor < 0)
   {
-    throw std::runtime_error(std::string("cannot create an in-memory file: ") + std::strerror(errno));
+    throw Error(std::string("cannot create an in-memory file: ") + std::strerror(errno));
   }
   this->Path = "/proc/self/fd/" + std::to_string(this->Descriptor);
 }
@@ -30,7 +30,7 @@ std::string MemoryFile::contents() const
   struct stat info;
   if (::fstat(this->Descriptor, &info) != 0)
   {
-    throw std::runtime_error(std::string("cannot read an in-memory file: ") + std::strerror(errno));
+    throw Error(std::string("cannot read an in-memory file: ") + std::strerror(errno));
   }
   std::string bytes(static_cast<std::size_t>(info.st_size), '\0');
   std::size_t done = 0;
@@ -43,7 +43,7 @@ std::string MemoryFile::contents() const
     }
     if (got <= 0)
     {
-      throw std::runtime_error(std::string("cannot read an in-memory file: ") + std::strerror(got < 0 ? errno : EIO));
+      throw Error(std::string("cannot read an in-memory file: ") + std::strerror(got < 0 ? errno : EIO));
     }
     done += static_cast<std::size_t>(got);
   }

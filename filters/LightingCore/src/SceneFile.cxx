@@ -95,7 +95,7 @@ public:
 
   [[noreturn]] void fail(const std::string& path, const std::string& problem) const
   {
-    throw SceneError(this->File + ": " + (path.empty() ? "(top level)" : path) + ": " + problem);
+    throw Error(this->File + ": " + (path.empty() ? "(top level)" : path) + ": " + problem);
   }
 
 private:
@@ -525,7 +525,7 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName)
       : what.substr(at, colon - at);
     std::string problem = colon == std::string::npos ? what : what.substr(colon + 2);
     // The problem quotes the bytes last read, which may be anything.
-    throw SceneError(fileName + ": " + where + ": malformed JSON: " + printableText(problem, 200));
+    throw Error(fileName + ": " + where + ": malformed JSON: " + printableText(problem, 200));
   }
   return reader.read(root);
 }
@@ -535,18 +535,18 @@ Scene readSceneFile(const std::string& path)
   std::error_code ignored;
   if (std::filesystem::is_directory(path, ignored))
   {
-    throw SceneError(path + ": is a directory, not a scene file");
+    throw Error(path + ": is a directory, not a scene file");
   }
   std::ifstream in(path, std::ios::binary);
   if (!in)
   {
-    throw SceneError(path + ": cannot open scene file");
+    throw Error(path + ": cannot open scene file");
   }
   std::stringstream text;
   text << in.rdbuf();
   if (in.bad())
   {
-    throw SceneError(path + ": read error");
+    throw Error(path + ": read error");
   }
   return parseScene(text.str(), path);
 }
@@ -585,14 +585,7 @@ std::string sceneToJson(const Scene& scene)
 
 void writeSceneFile(const Scene& scene, const std::string& path)
 {
-  try
-  {
-    writeFileAtomically(path, sceneToJson(scene));
-  }
-  catch (const std::runtime_error& e)
-  {
-    throw SceneError(e.what());
-  }
+  writeFileAtomically(path, sceneToJson(scene));
 }
 
 } // namespace shadelab

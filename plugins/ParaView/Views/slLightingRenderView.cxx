@@ -35,8 +35,7 @@ void slLightingRenderView::SetSceneFileName(const char* fileName)
     vtkNew<slScene> scene;
     if (!scene->ReadFile(name.c_str()))
     {
-      vtkErrorMacro(<< scene->GetErrorMessage());
-      return;
+      return; // the scene has reported the one-line reason through vtkErrorMacro
     }
     this->Pass->SetScene(scene);
   }

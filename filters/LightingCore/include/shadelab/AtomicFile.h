@@ -15,6 +15,8 @@
  * never one another live process still holds.
  */
 
+#include "shadelab/Error.h"
+
 #include <cstddef>
 #include <string>
 
@@ -26,7 +28,7 @@ class AtomicOutput
 {
 public:
   /// Removes stale temporary files of @p target, then creates and locks its
-  /// own. Throws std::runtime_error naming @p target and the system's reason
+  /// own. Throws shadelab::Error naming @p target and the system's reason
   /// if its folder is not writable.
   explicit AtomicOutput(std::string target);
   /// Removes the temporary file unless commit() succeeded.
@@ -39,7 +41,7 @@ public:
 
   /// Writes @p size bytes at @p data to the temporary file, syncs it to the
   /// disk, renames it to the target and syncs the folder. Throws
-  /// std::runtime_error "TARGET: cannot write output file: REASON" (REASON is
+  /// shadelab::Error "TARGET: cannot write output file: REASON" (REASON is
   /// the system's, e.g. "No space left on device"); the target is then as
   /// before and the temporary file is removed by the destructor.
   void commit(const char* data, std::size_t size);
@@ -61,7 +63,7 @@ private:
   bool Committed = false;
 };
 
-/// Writes @p bytes to @p path through an AtomicOutput. Throws std::runtime_error.
+/// Writes @p bytes to @p path through an AtomicOutput. Throws shadelab::Error.
 void writeFileAtomically(const std::string& path, const std::string& bytes);
 
 /// The name AtomicOutput gives the temporary files of @p target, as the part

@@ -14,6 +14,8 @@
  * whose integral the sampler reproduces exactly.
  */
 
+#include "shadelab/Error.h"
+
 #include <glm/glm.hpp>
 
 #include <string>
@@ -26,8 +28,9 @@ class EnvironmentMap
 {
 public:
   /// Checks and stores @p rgb (3 floats per texel, row 0 at the bottom).
-  /// Returns "" or a one-line reason (wrong layout, negative or non-finite values).
-  std::string set(int width, int height, std::vector<float> rgb);
+  /// Throws shadelab::Error "NAME: environment map REASON" (wrong layout,
+  /// negative or non-finite values), @p name standing for the image.
+  void set(int width, int height, std::vector<float> rgb, const std::string& name = "environment");
 
   /// A constant map of radiance @p rgb (a small 2:1 map).
   void setConstant(const glm::vec3& rgb);

@@ -11,6 +11,8 @@
  * writes the bytes itself through AtomicOutput, which checks every step.
  */
 
+#include "shadelab/Error.h"
+
 #include <string>
 
 namespace shadelab
@@ -19,7 +21,7 @@ namespace shadelab
 class MemoryFile
 {
 public:
-  /// Creates an empty file in memory. Throws std::runtime_error.
+  /// Creates an empty file in memory. Throws shadelab::Error.
   MemoryFile();
   ~MemoryFile();
   MemoryFile(const MemoryFile&) = delete;
@@ -29,7 +31,7 @@ public:
   /// so a writer must be told its format some other way.
   const std::string& path() const { return this->Path; }
 
-  /// Everything written to it so far. Throws std::runtime_error.
+  /// Everything written to it so far. Throws shadelab::Error.
   std::string contents() const;
 
 private:
