@@ -200,7 +200,7 @@ void slMeshWriter::WriteMesh(vtkPolyData* mesh)
     if (formatOwn(ext, mesh, own))
     {
       output.commit(own.data(), own.size());
-      return true;
+      return;
     }
     const bool ply = ext == ".ply";
     shadelab::MemoryFile memory;

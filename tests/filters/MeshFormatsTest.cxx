@@ -4,6 +4,7 @@
 // what slMeshWriter writes reads back bit for bit, in ShadeLab and in VTK.
 #include "TestFolder.h"
 
+#include "VTKErrors.h"
 #include "slMeshReader.h"
 #include "slMeshWriter.h"
 #include "slOBJFormat.h"
@@ -42,8 +43,7 @@ vtkSmartPointer<vtkPolyData> readShadeLab(const std::string& path)
 {
   vtkNew<slMeshReader> reader;
   reader->SetFileName(path.c_str());
-  reader->Update();
-  EXPECT_STREQ(reader->GetErrorMessage(), "") << path;
+  EXPECT_EQ(updateError(reader), "") << path;
   vtkSmartPointer<vtkPolyData> out = reader->GetOutput();
   return out;
 }
@@ -243,7 +243,7 @@ TEST(MeshFormats, PLYAsVTKReadsIt)
   vtkNew<slMeshWriter> ours;
   ours->SetInputData(mesh);
   ours->SetFileName(folder.path("shadelab.ply").c_str());
-  ASSERT_TRUE(ours->Write()) << ours->GetErrorMessage();
+  ASSERT_EQ(callError(ours, [&] { return ours->Write(); }), "");
   for (const char* name : { "vtk.ply", "shadelab.ply" })
   {
     const std::string bytes = contents(folder.path(name));
@@ -267,7 +267,7 @@ TEST(MeshFormats, WrittenOBJAndPLYReadBackBitForBit)
     vtkNew<slMeshWriter> writer;
     writer->SetInputData(mesh);
     writer->SetFileName(folder.path(name).c_str());
-    ASSERT_TRUE(writer->Write()) << writer->GetErrorMessage();
+    ASSERT_EQ(callError(writer, [&] { return writer->Write(); }), "");
     const std::string bytes = contents(folder.path(name));
     slMeshArrays arrays;
     EXPECT_TRUE(std::string(name) == "m.obj" ? slParseOBJ(bytes.data(), bytes.size(), false, arrays, 1)
