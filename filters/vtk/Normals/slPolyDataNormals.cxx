@@ -1,14 +1,14 @@
 #include "slPolyDataNormals.h"
 
 #include "slConnectivityCheck.h"
-#include "slFaceNormalsCore.h"
-#include "slFeatureSplitCore.h"
+#include "shadelab/slFaceNormalsCore.h"
+#include "shadelab/slFeatureSplitCore.h"
 #include "slNormalsVTKBridge.h"
 #include "slOwnedPolygons.h"
-#include "slOrientationCore.h"
-#include "slPointWeldCore.h"
-#include "slVertexCorners.h"
-#include "slVertexNormalsCore.h"
+#include "shadelab/slOrientationCore.h"
+#include "shadelab/slPointWeldCore.h"
+#include "shadelab/slVertexCorners.h"
+#include "shadelab/slVertexNormalsCore.h"
 
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>

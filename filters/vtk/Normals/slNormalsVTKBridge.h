@@ -7,7 +7,7 @@
  * vtkCellArray, and the NaN check. Internal to ShadeLab::Normals.
  */
 
-#include "slNormalsParallel.h"
+#include "shadelab/slNormalsParallel.h"
 
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>

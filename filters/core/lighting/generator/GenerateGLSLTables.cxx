@@ -2,7 +2,7 @@
 // the SL_MODEL_* and SL_LIGHT_* constants, their counts and
 // slIsNormalizedModel(), the structs slLight and slMaterial; and
 // LightingTablesSource.cxx, the same text as a
-// string for the shaders. Run by the build (filters/LightingCore/CMakeLists.txt).
+// string for the shaders. Run by the build (filters/core/lighting/CMakeLists.txt).
 // slLighting.glsl is compiled after it everywhere: LightingGLSL.h and its
 // batch and double variants include it, lightingShaderSource() prepends it.
 #include "shadelab/LightingTables.h"

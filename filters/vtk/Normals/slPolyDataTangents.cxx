@@ -3,7 +3,7 @@
 #include "slConnectivityCheck.h"
 #include "slNormalsVTKBridge.h"
 #include "slPolyDataNormals.h"
-#include "slTangentFramesCore.h"
+#include "shadelab/slTangentFramesCore.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>

@@ -7,7 +7,7 @@
  * handedness, UV) of a mesh. Internal to ShadeLab::Normals.
  */
 
-#include "slTextureSampling.h"
+#include "shadelab/slTextureSampling.h"
 
 #include <vtkSmartPointer.h>
 
