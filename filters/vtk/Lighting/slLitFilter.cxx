@@ -1,5 +1,5 @@
 #include "slLitFilter.h"
-#include "slAtomicMinimum.h"
+#include "shadelab/slAtomicMinimum.h"
 #include "slConnectivityCheck.h"
 
 #include "slFloat3View.h"

@@ -1,5 +1,5 @@
 #include "slRadianceFilter.h"
-#include "slAtomicMinimum.h"
+#include "shadelab/slAtomicMinimum.h"
 
 #include "slDiffuseColors.h"
 #include "slFloat3View.h"

@@ -1,5 +1,5 @@
 #include "slNormalsVTKBridge.h"
-#include "slAtomicMinimum.h"
+#include "shadelab/slAtomicMinimum.h"
 
 #include <vtkFloatArray.h>
 #include <vtkPoints.h>

@@ -18,7 +18,7 @@
  * VTK owns the memory and frees it with free().
  */
 
-#include "ShadeLabIOModule.h"
+#include "ShadeLabCommonModule.h"
 
 #include <vtkFloatArray.h>
 #include <vtkSmartPointer.h>
@@ -29,7 +29,7 @@ namespace shadelab
 {
 
 /// A float array named @p name with @p components × @p tuples values, uninitialised.
-SHADELABIO_EXPORT vtkSmartPointer<vtkFloatArray> newParallelFillArray(const std::string& name, int components, vtkIdType tuples);
+SHADELABCOMMON_EXPORT vtkSmartPointer<vtkFloatArray> newParallelFillArray(const std::string& name, int components, vtkIdType tuples);
 
 } // namespace shadelab
 

@@ -23,7 +23,7 @@
  * @sa slOutputWindow
  */
 
-#include "ShadeLabIOModule.h"
+#include "ShadeLabCommonModule.h"
 
 #include <vtkCommand.h>
 
@@ -31,7 +31,7 @@
 
 class vtkObject;
 
-class SHADELABIO_EXPORT slErrorCapture : public vtkCommand
+class SHADELABCOMMON_EXPORT slErrorCapture : public vtkCommand
 {
 public:
   static slErrorCapture* New();

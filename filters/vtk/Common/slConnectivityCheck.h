@@ -12,7 +12,7 @@
  * them. C++ only, not wrapped.
  */
 
-#include "ShadeLabIOModule.h"
+#include "ShadeLabCommonModule.h"
 
 #include <string>
 
@@ -22,6 +22,6 @@ class vtkPolyData;
 /// and its offsets are consistent (null and empty meshes pass); otherwise one
 /// line naming the first bad cell, e.g. "polygon 4 names point 9, but the
 /// mesh has 3 points (0 to 2)".
-SHADELABIO_EXPORT std::string slConnectivityProblem(vtkPolyData* mesh);
+SHADELABCOMMON_EXPORT std::string slConnectivityProblem(vtkPolyData* mesh);
 
 #endif

@@ -1,6 +1,6 @@
 #include "slConnectivityCheck.h"
 
-#include "slAtomicMinimum.h"
+#include "shadelab/slAtomicMinimum.h"
 
 #include <vtkCellArray.h>
 #include <vtkPolyData.h>
