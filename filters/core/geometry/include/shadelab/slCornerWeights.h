@@ -3,7 +3,7 @@
 /**
  * @file slCornerWeights.h
  * @brief How much a polygon corner adds to its vertex's normal, for the four
- * weightings. VTK-free. Internal to ShadeLab::Normals.
+ * weightings. VTK-free. Geometry core (ShadeLab::GeometryCore).
  *
  * A vertex normal is the normalised sum, over the polygon corners at the
  * vertex, of weight × unit face normal:

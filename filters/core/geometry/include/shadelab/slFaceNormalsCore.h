@@ -2,8 +2,8 @@
 #define slFaceNormalsCore_h
 /**
  * @file slFaceNormalsCore.h
- * @brief Polygon normals by Newell's method. VTK-free. Internal to
- * ShadeLab::Normals.
+ * @brief Polygon normals by Newell's method. VTK-free. Geometry
+ * core (ShadeLab::GeometryCore).
  *
  * For a triangle the Newell vector equals (P1−P0)×(P2−P0); for a polygon with
  * more than three vertices it is Σ (Pi − C) × (Pi+1 − C) over its edges (C any

@@ -2,8 +2,8 @@
 #define slFeatureSplitCore_h
 /**
  * @file slFeatureSplitCore.h
- * @brief Vertex normals with feature-angle splitting. VTK-free. Internal to
- * ShadeLab::Normals.
+ * @brief Vertex normals with feature-angle splitting. VTK-free. Geometry
+ * core (ShadeLab::GeometryCore).
  *
  * Around each point, the polygons at it are joined into smooth groups: two
  * polygons sharing an edge at the point join when the edge is manifold (no

@@ -3,7 +3,7 @@
 /**
  * @file slNormalsParallel.h
  * @brief The VTK-free normal algorithms' view of a polygon list and of a
- * parallel loop. Internal to ShadeLab::Normals.
+ * parallel loop. Geometry core (ShadeLab::GeometryCore).
  *
  * The algorithms in slFaceNormalsCore.h, slVertexNormalsCore.h,
  * slOrientationCore.h and slFeatureSplitCore.h take no VTK type: polygons are

@@ -3,7 +3,7 @@
 /**
  * @file slOrientationCore.h
  * @brief Consistent polygon orientation across shared edges, and outward
- * orientation of closed surfaces. VTK-free. Internal to ShadeLab::Normals.
+ * orientation of closed surfaces. VTK-free. Geometry core (ShadeLab::GeometryCore).
  *
  * Two polygons sharing a manifold edge (exactly two polygons on it) are
  * consistent when they traverse it in opposite directions. A parallel check

@@ -3,7 +3,7 @@
 /**
  * @file slPointWeldCore.h
  * @brief Maps every point to the first point with exactly the same
- * coordinates. VTK-free. Internal to ShadeLab::Normals.
+ * coordinates. VTK-free. Geometry core (ShadeLab::GeometryCore).
  */
 
 #include <algorithm>

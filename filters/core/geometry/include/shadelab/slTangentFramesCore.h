@@ -3,7 +3,7 @@
 /**
  * @file slTangentFramesCore.h
  * @brief Per-vertex tangent frames from texture coordinates, after
- * MikkTSpace. VTK-free. Internal to ShadeLab::Normals.
+ * MikkTSpace. VTK-free. Geometry core (ShadeLab::GeometryCore).
  *
  * For each polygon (fan-triangulated from its first vertex) the tangent is
  * the direction of increasing u on the surface,

@@ -3,7 +3,7 @@
 /**
  * @file slTextureSampling.h
  * @brief A texture in memory and its bilinear sampling, plus the tangent-space
- * normal of bump mapping. VTK-free. Internal to ShadeLab::Normals. (How a
+ * normal of bump mapping. VTK-free. Geometry core (ShadeLab::GeometryCore). (How a
  * tangent-space normal reaches the surface is glsl/slNormalMapping.glsl,
  * shared with the render pass.)
  *

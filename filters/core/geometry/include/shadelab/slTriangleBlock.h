@@ -4,7 +4,7 @@
  * @file slTriangleBlock.h
  * @brief Newell vectors and corner weights of a run of consecutive triangles
  * at once, laid out structure-of-arrays so that the compiler vectorises
- * them. VTK-free. Internal to ShadeLab::Normals.
+ * them. VTK-free. Geometry core (ShadeLab::GeometryCore).
  *
  * Gathering a triangle's points is a scattered read, but everything after it
  * (edges, Newell vector, square root, division, three corner angles) is the

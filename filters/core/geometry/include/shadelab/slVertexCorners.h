@@ -3,7 +3,7 @@
 /**
  * @file slVertexCorners.h
  * @brief For every point, the polygon corners at it (a compressed sparse row
- * table). VTK-free. Internal to ShadeLab::Normals.
+ * table). VTK-free. Geometry core (ShadeLab::GeometryCore).
  *
  * Corners are positions in the connectivity array, stored as 32-bit integers:
  * meshes with 2^31 or more corners are refused by the callers.

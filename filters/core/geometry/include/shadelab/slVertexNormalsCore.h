@@ -3,7 +3,7 @@
 /**
  * @file slVertexNormalsCore.h
  * @brief Vertex normals without splitting: weighted face normals summed at
- * each vertex. VTK-free. Internal to ShadeLab::Normals.
+ * each vertex. VTK-free. Geometry core (ShadeLab::GeometryCore).
  *
  * Triangles are weighed in vectorised blocks (slTriangleBlock.h). The
  * polygons are cut into as many contiguous chunks as there are threads;
