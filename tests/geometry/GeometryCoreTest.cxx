@@ -1,9 +1,10 @@
 // The VTK-free geometry core against values worked out by hand: face
-// normals, the four corner weightings of vertex normals, orientation repair
-// and point welding, on meshes small enough to check on paper.
+// normals, the four corner weightings of vertex normals, orientation repair,
+// point welding and tangent frames across a mirror seam, on meshes small enough to check on paper.
 #include "shadelab/slFaceNormalsCore.h"
 #include "shadelab/slOrientationCore.h"
 #include "shadelab/slPointWeldCore.h"
+#include "shadelab/slTangentSeamsCore.h"
 #include "shadelab/slVertexCorners.h"
 #include "shadelab/slVertexNormalsCore.h"
 
@@ -163,4 +164,37 @@ TEST(GeometryCore, WeldingMapsCoincidentPointsToTheFirst)
   std::vector<int64_t> canonical;
   EXPECT_EQ(slnormals::weldCoincidentPoints(xyz.data(), 6, canonical), 3);
   EXPECT_EQ(canonical, (std::vector<int64_t>{ 0, 1, 0, 1, 4, 1 }));
+}
+
+TEST(GeometryCore, MirrorSeamPointsAreSplitWithBothFrames)
+{
+  // Two triangles in z = 0 sharing the edge 0-2 (the y axis); the texture
+  // is mirrored across it: u = x on the right one, u = -x on the left one.
+  // Right: tangent +x, w = +1; left: d(u) along +x is -1, so the tangent is
+  // -x with w = -1. Points 0 and 2 carry both and get a copy each.
+  Mesh m;
+  m.xyz = { 0, 0, 0, 1, 0, 0, 0, 1, 0, -1, 0, 0 };
+  m.add({ 0, 1, 2 });
+  m.add({ 0, 2, 3 });
+  const std::vector<glm::dvec3> pos = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { -1, 0, 0 } };
+  const std::vector<glm::dvec2> uv = { { 0, 0 }, { 1, 0 }, { 0, 1 }, { 1, 0 } };
+  const std::vector<glm::dvec3> nrm(4, glm::dvec3(0, 0, 1));
+  Polygons<int64_t> p = m.polygons();
+  const slnormals::SeamTangents t = slnormals::tangentFramesWithSeams(p, 4, pos, uv, nrm, Parallel());
+  EXPECT_EQ(t.numSplitPoints, 2);
+  EXPECT_EQ(t.source, (std::vector<int64_t>{ 0, 1, 2, 3, 0, 2 }));
+  EXPECT_EQ(m.connectivity, (std::vector<int64_t>{ 0, 1, 2, 4, 5, 3 }));
+  const std::vector<float> expected = {
+    1, 0, 0, 1,   // point 0, right side
+    1, 0, 0, 1,   // point 1
+    1, 0, 0, 1,   // point 2, right side
+    -1, 0, 0, -1, // point 3
+    -1, 0, 0, -1, // copy of point 0, left side
+    -1, 0, 0, -1, // copy of point 2, left side
+  };
+  ASSERT_EQ(t.tangents.size(), expected.size());
+  for (size_t i = 0; i < expected.size(); ++i)
+  {
+    EXPECT_NEAR(t.tangents[i], expected[i], 1e-6) << "component " << i;
+  }
 }

@@ -3,7 +3,7 @@
 #include "slConnectivityCheck.h"
 #include "slNormalsVTKBridge.h"
 #include "slPolyDataNormals.h"
-#include "shadelab/slTangentFramesCore.h"
+#include "shadelab/slTangentSeamsCore.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -18,7 +18,7 @@
 #include <vtkPolyData.h>
 #include <vtkSMPTools.h>
 
-#include <array>
+#include <algorithm>
 
 vtkStandardNewMacro(slPolyDataTangents);
 
@@ -93,83 +93,40 @@ int slPolyDataTangents::RequestData(vtkInformation*, vtkInformationVector** inpu
 
   vtkNew<vtkCellArray> polys;
   polys->DeepCopy(mesh->GetPolys());
-  slnormals::TangentSums sums;
-  std::vector<signed char> sign;
+  slnormals::SeamTangents frames;
   slDispatchStorage(polys, [&](auto id) {
     using Id = decltype(id);
     slnormals::Polygons<Id> view = slPolygonsOf<Id>(polys);
-    slnormals::accumulateTangents(
-      view, numPoints, [&](int64_t v) { return pos[static_cast<size_t>(v)]; },
-      [&](int64_t v) { return uv[static_cast<size_t>(v)]; }, [&](int64_t v) { return nrm[static_cast<size_t>(v)]; },
-      sums, sign);
-    // Mirror seams: the mirrored corners of points with both signs go to a copy.
-    std::vector<vtkIdType> copyOf(static_cast<size_t>(numPoints), -1);
-    vtkIdType next = numPoints;
-    for (vtkIdType v = 0; v < numPoints; ++v)
-    {
-      if (sums.used[0][static_cast<size_t>(v)] && sums.used[1][static_cast<size_t>(v)])
-      {
-        copyOf[static_cast<size_t>(v)] = next++;
-      }
-    }
-    const int64_t numCorners = view.numPolygons ? view.end(view.numPolygons - 1) : 0;
-    for (int64_t c = 0; c < numCorners; ++c)
-    {
-      const vtkIdType v = view.connectivity[c];
-      if (sign[static_cast<size_t>(c)] < 0 && copyOf[static_cast<size_t>(v)] >= 0)
-      {
-        view.connectivity[c] = static_cast<Id>(copyOf[static_cast<size_t>(v)]);
-      }
-    }
-    this->NumberOfSplitPoints = next - numPoints;
-
-    vtkNew<vtkIdList> from;
-    from->SetNumberOfIds(next);
-    for (vtkIdType v = 0; v < numPoints; ++v)
-    {
-      from->SetId(v, v);
-      if (copyOf[static_cast<size_t>(v)] >= 0)
-      {
-        from->SetId(copyOf[static_cast<size_t>(v)], v);
-      }
-    }
-    vtkNew<vtkPoints> outPoints;
-    outPoints->SetDataType(points->GetDataType());
-    points->GetPoints(from, outPoints);
-    output->SetPoints(outPoints);
-    vtkNew<vtkIdList> to;
-    to->SetNumberOfIds(next);
-    for (vtkIdType i = 0; i < next; ++i)
-    {
-      to->SetId(i, i);
-    }
-    output->GetPointData()->CopyAllocate(mesh->GetPointData(), next);
-    output->GetPointData()->CopyData(mesh->GetPointData(), from, to);
-
-    vtkNew<vtkFloatArray> tangents;
-    tangents->SetName("Tangents");
-    tangents->SetNumberOfComponents(4);
-    tangents->SetNumberOfTuples(next);
-    vtkSMPTools::For(0, numPoints, 8192, [&](vtkIdType b, vtkIdType e) {
-      for (vtkIdType v = b; v < e; ++v)
-      {
-        const size_t s = static_cast<size_t>(v);
-        const bool plus = sums.used[0][s] || !sums.used[1][s];
-        const glm::dvec3 t = slnormals::finishTangent(sums.sum[plus ? 0 : 1][s], nrm[s]);
-        tangents->SetTypedTuple(v, std::array<float, 4>{ static_cast<float>(t.x), static_cast<float>(t.y),
-                                     static_cast<float>(t.z), plus ? 1.0f : -1.0f }.data());
-        if (copyOf[s] >= 0)
-        {
-          const glm::dvec3 m = slnormals::finishTangent(sums.sum[1][s], nrm[s]);
-          tangents->SetTypedTuple(copyOf[s], std::array<float, 4>{ static_cast<float>(m.x),
-                                               static_cast<float>(m.y), static_cast<float>(m.z), -1.0f }.data());
-        }
-      }
-    });
-    output->GetPointData()->RemoveArray("Tangents");
-    output->GetPointData()->AddArray(tangents);
+    frames = slnormals::tangentFramesWithSeams(view, numPoints, pos, uv, nrm, slSMPParallel());
     return 0;
   });
+  const vtkIdType numOut = static_cast<vtkIdType>(frames.source.size());
+  this->NumberOfSplitPoints = frames.numSplitPoints;
+
+  // Output point i copies input point frames.source[i].
+  vtkNew<vtkIdList> from;
+  from->SetNumberOfIds(numOut);
+  vtkNew<vtkIdList> to;
+  to->SetNumberOfIds(numOut);
+  for (vtkIdType i = 0; i < numOut; ++i)
+  {
+    from->SetId(i, static_cast<vtkIdType>(frames.source[static_cast<size_t>(i)]));
+    to->SetId(i, i);
+  }
+  vtkNew<vtkPoints> outPoints;
+  outPoints->SetDataType(points->GetDataType());
+  points->GetPoints(from, outPoints);
+  output->SetPoints(outPoints);
+  output->GetPointData()->CopyAllocate(mesh->GetPointData(), numOut);
+  output->GetPointData()->CopyData(mesh->GetPointData(), from, to);
+
+  vtkNew<vtkFloatArray> tangents;
+  tangents->SetName("Tangents");
+  tangents->SetNumberOfComponents(4);
+  tangents->SetNumberOfTuples(numOut);
+  std::copy(frames.tangents.begin(), frames.tangents.end(), tangents->GetPointer(0));
+  output->GetPointData()->RemoveArray("Tangents");
+  output->GetPointData()->AddArray(tangents);
   output->SetPolys(polys);
   output->SetVerts(mesh->GetVerts());
   output->SetLines(mesh->GetLines());
