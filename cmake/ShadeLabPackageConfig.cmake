@@ -1,6 +1,7 @@
 # The installed CMake package: find_package(ShadeLab REQUIRED COMPONENTS
 # Normals Lighting ...) gives the imported targets ShadeLab::<Component>
-# (IO, Scene, Normals, Lighting, RenderPasses, LightingCore) and finds VTK
+# (Common, IO, Scene, Normals, Lighting, RenderPasses, Rendering, and the
+# VTK-free CommonCore, LightingCore and GeometryCore) and finds VTK
 # with the modules they use.
 include(CMakePackageConfigHelpers)
 
@@ -23,7 +24,7 @@ if(NOT SHADELAB_PACKAGE_VTK_COMPONENTS)
   message(FATAL_ERROR "no VTK dependencies found for ${SHADELAB_MODULES}")
 endif()
 
-set(SHADELAB_PACKAGE_COMPONENTS LightingCore)
+set(SHADELAB_PACKAGE_COMPONENTS CommonCore LightingCore GeometryCore)
 foreach(module IN LISTS SHADELAB_MODULES)
   string(REPLACE "ShadeLab::" "" component "${module}")
   list(APPEND SHADELAB_PACKAGE_COMPONENTS "${component}")

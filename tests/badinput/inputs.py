@@ -19,7 +19,7 @@ THREE_LIGHTS = json.dumps({"lights": [
 ]}).encode()
 
 
-TABLES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "filters", "LightingCore", "include",
+TABLES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "filters", "core", "lighting", "include",
                       "shadelab", "LightingTables.h")
 
 

@@ -1,6 +1,6 @@
 // slAtomicMinimum: the shared "first bad index" of the parallel searches
 // ends at the smallest candidate whatever order the candidates come in.
-#include "slAtomicMinimum.h"
+#include "shadelab/slAtomicMinimum.h"
 
 #include <vtkSMPTools.h>
 #include <vtkType.h>

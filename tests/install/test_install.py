@@ -49,6 +49,8 @@ class InstalledTree(unittest.TestCase):
         run([CMAKE, "--build", build], env=clean_env())
         r = run([os.path.join(build, "downstream")], env=clean_env())
         self.assertIn("largest normal error", r.stdout)
+        r = run([os.path.join(build, "downstream_core")], env=clean_env())
+        self.assertIn("downstream core: face normal", r.stdout)
 
     def test_unknown_component_is_an_error(self):
         project = os.path.join(self.work, "bad-component")

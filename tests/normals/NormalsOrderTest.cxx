@@ -5,7 +5,7 @@
 #include "NormalsTestMeshes.h"
 
 #include "slPolyDataNormals.h"
-#include "slVertexNormalsCore.h"
+#include "shadelab/slVertexNormalsCore.h"
 
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>

@@ -1,0 +1,402 @@
+#ifndef slFeatureSplitCore_h
+#define slFeatureSplitCore_h
+/**
+ * @file slFeatureSplitCore.h
+ * @brief Vertex normals with feature-angle splitting. VTK-free. Geometry
+ * core (ShadeLab::GeometryCore).
+ *
+ * Around each point, the polygons at it are joined into smooth groups: two
+ * polygons sharing an edge at the point join when the edge is manifold (no
+ * third polygon on it) and the angle between their normals is at most the
+ * feature angle. A degenerate polygon joins any neighbour. Each group becomes
+ * one output point with its own normal (the weighted sum over the group), so
+ * sharp and non-manifold edges stay sharp while smooth edges stay shared.
+ *
+ * When the polygons are given with welded point ids (@p topology) and their
+ * original ids (@p original), an output point is one (original point, group)
+ * pair: normals are computed on the welded surface, but points that differed
+ * in the input (texture seams) stay apart.
+ *
+ * Work is parallel: unit polygon normals; a pass over points that builds
+ * the groups (keeping each corner's group, 16 bits; a point that is one
+ * smooth closed fan is one group without the general grouping work, see
+ * smoothClosedFan); then, without welding,
+ * each corner's output point and a polygon-centric weighted sum as in
+ * slVertexNormalsCore.h; with welding, a second pass over points.
+ */
+
+#include "slCornerWeights.h"
+#include "slFaceNormalsCore.h"
+#include "slNormalsParallel.h"
+#include "slOrientationCore.h"
+#include "slVertexCorners.h"
+#include "slVertexNormalsCore.h"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <memory>
+#include <numeric>
+#include <utility>
+#include <vector>
+
+namespace slnormals
+{
+
+/// Where the split result goes; filled in by allocate(numOutputPoints).
+struct SplitOutput
+{
+  float* normals = nullptr; ///< 3 per output point
+  int64_t* source = nullptr; ///< input point of each output point
+};
+
+namespace detail
+{
+/// Scratch space of one thread, reused from point to point.
+template <typename T>
+struct SplitScratch
+{
+  std::vector<int64_t> prev, next, orig;
+  std::vector<glm::vec<3, T>> normal; ///< unit normal of each corner's polygon
+  std::vector<int> parent;
+  std::vector<std::pair<int64_t, int>> ends; ///< (other point, corner) per edge end, by point
+  std::vector<int> group; ///< per corner, 0..numGroups-1
+  std::vector<int> slot;  ///< per corner, 0..numSlots-1 (welding only)
+  std::vector<std::pair<int64_t, int>> slots; ///< (original id, group) per slot
+  std::vector<glm::vec<3, T>> sums;
+  bool fan = false; ///< the last point was one smooth closed fan
+
+  int find(int i)
+  {
+    while (this->parent[i] != i)
+    {
+      this->parent[i] = this->parent[this->parent[i]];
+      i = this->parent[i];
+    }
+    return i;
+  }
+};
+
+template <typename T>
+inline glm::vec<3, T> unitOf(const glm::vec<3, T>& n, T& len)
+{
+  len = glm::length(n);
+  return len > T(0) ? n / len : glm::vec<3, T>(0);
+}
+
+/// True if two polygons with unit normals @p ni, @p nj (zero if degenerate)
+/// across a manifold edge join one smooth group: a degenerate polygon joins
+/// any neighbour, others when their normals are at most the feature angle apart.
+template <typename T>
+inline bool smoothAcross(const glm::vec<3, T>& ni, const glm::vec<3, T>& nj, T cosFeature)
+{
+  // The usual answer (a smooth edge) first.
+  return glm::dot(ni, nj) >= cosFeature || glm::dot(ni, ni) == T(0) || glm::dot(nj, nj) == T(0);
+}
+
+/// True if the k corners in @p s form one closed fan with only smooth edges,
+/// so that they are all one group. That is most points of a smooth closed
+/// surface, and it is decided by walking the fan once instead of sorting
+/// edge ends.
+///
+/// From corner 0 the walk goes to the only corner j whose previous point is
+/// the current corner's next point (prev[j] == next[i]) and stops at a sharp
+/// edge, a missing or second such corner, or a return to corner 0 before
+/// all k corners are seen. A walk that comes back to corner 0 after exactly
+/// k steps proves that the step i -> j is a k-cycle, so each edge end w
+/// occurs exactly twice among the 2k ends (once as some next, once as some
+/// prev, from two different corners): every edge at the point is manifold,
+/// each joins the two corners the general pass would join, and all are smooth.
+/// Boundaries, non-manifold edges, bowtie points (two fans), polygons
+/// running the wrong way and sharp edges all return false and take the
+/// general pass, so the groups are the same either way.
+template <typename T>
+bool smoothClosedFan(const SplitScratch<T>& s, int k, T cosFeature)
+{
+  int i = 0;
+  for (int step = 1; step <= k; ++step)
+  {
+    // Counted without branches: which prev matches is unpredictable.
+    const int64_t w = s.next[static_cast<size_t>(i)];
+    int j = -1, matches = 0;
+    for (int m = 0; m < k; ++m)
+    {
+      const bool match = s.prev[static_cast<size_t>(m)] == w;
+      matches += match;
+      j = match ? m : j;
+    }
+    if (matches != 1 || !smoothAcross(s.normal[static_cast<size_t>(i)], s.normal[static_cast<size_t>(j)], cosFeature))
+    {
+      return false;
+    }
+    if (j == 0)
+    {
+      return step == k;
+    }
+    i = j;
+  }
+  return false;
+}
+
+/// Builds the groups of point @p v from the polygons' unit normals @p unit
+/// (3 per polygon, zero if degenerate) into s.group (per corner,
+/// 0..groups-1, in order of first corner) and returns the number of groups.
+/// s.fan tells whether the point was one smooth closed fan.
+template <typename T, typename Id>
+int buildGroups(const Polygons<Id>& polys, const Id* original, const T* unit, const VertexCorners<Id>& vc,
+  int64_t v, T cosFeature, SplitScratch<T>& s)
+{
+  const int32_t b = vc.offsets[static_cast<size_t>(v)];
+  const int k = vc.offsets[static_cast<size_t>(v) + 1] - b;
+  s.prev.resize(k);
+  s.next.resize(k);
+  s.orig.resize(k);
+  s.group.resize(k);
+  s.normal.resize(k);
+  for (int i = 0; i < k; ++i)
+  {
+    const int64_t c = vc.corners[static_cast<size_t>(b + i)];
+    const typename VertexCorners<Id>::Around a = vc.around(polys, c);
+    s.next[i] = polys.connectivity[a.next];
+    s.prev[i] = polys.connectivity[a.prev];
+    s.orig[i] = original ? static_cast<int64_t>(original[c]) : v;
+    s.normal[i] = glm::vec<3, T>(unit[3 * a.face], unit[3 * a.face + 1], unit[3 * a.face + 2]);
+  }
+  s.fan = k > 0 && smoothClosedFan(s, k, cosFeature);
+  if (s.fan)
+  {
+    std::fill(s.group.begin(), s.group.end(), 0);
+    return 1;
+  }
+  s.parent.resize(k);
+  std::iota(s.parent.begin(), s.parent.end(), 0);
+  // Join corners i, j across each edge (v, w) that exactly these two share.
+  // The 2k (w, corner) ends of the edges at v, sorted by w (insertion sort:
+  // k is small), put each edge's corners side by side, which costs far less
+  // than comparing every corner's edges with every other corner's.
+  s.ends.resize(static_cast<size_t>(2 * k));
+  for (int e = 0; e < 2 * k; ++e)
+  {
+    std::pair<int64_t, int> end(e % 2 ? s.prev[e / 2] : s.next[e / 2], e / 2);
+    int at = e;
+    for (; at > 0 && s.ends[static_cast<size_t>(at - 1)].first > end.first; --at)
+    {
+      s.ends[static_cast<size_t>(at)] = s.ends[static_cast<size_t>(at - 1)];
+    }
+    s.ends[static_cast<size_t>(at)] = end;
+  }
+  for (int r = 0; r < 2 * k;)
+  {
+    const int64_t w = s.ends[static_cast<size_t>(r)].first;
+    const int i = s.ends[static_cast<size_t>(r)].second;
+    int other = -1;
+    bool manifold = true; // exactly two corners on the edge
+    for (; r < 2 * k && s.ends[static_cast<size_t>(r)].first == w; ++r)
+    {
+      const int j = s.ends[static_cast<size_t>(r)].second;
+      if (j != i && j != other)
+      {
+        manifold = manifold && other < 0;
+        other = j;
+      }
+    }
+    if (!manifold || other < 0)
+    {
+      continue; // non-manifold or boundary edge
+    }
+    if (smoothAcross(s.normal[i], s.normal[other], cosFeature))
+    {
+      s.parent[s.find(i)] = s.find(other);
+    }
+  }
+  // Number the groups in order of first corner.
+  int groups = 0;
+  s.slot.assign(k, -1); // group number of each root
+  for (int i = 0; i < k; ++i)
+  {
+    const int r = s.find(i);
+    if (s.slot[r] < 0)
+    {
+      s.slot[r] = groups++;
+    }
+    s.group[i] = s.slot[r];
+  }
+  return groups;
+}
+
+/// Builds the groups (see buildGroups) and the slots of point @p v and
+/// returns the number of slots. A slot is one output point: a group
+/// without welding (s.slot is then not filled: use s.group), an
+/// (original id, group) pair with welding (s.slot per corner).
+template <typename T, typename Id>
+int groupCorners(const Polygons<Id>& polys, const Id* original, const T* unit, const VertexCorners<Id>& vc,
+  int64_t v, T cosFeature, SplitScratch<T>& s)
+{
+  const int groups = buildGroups(polys, original, unit, vc, v, cosFeature, s);
+  if (!original)
+  {
+    return groups;
+  }
+  const int k = static_cast<int>(s.group.size());
+  s.slot.resize(k);
+  s.slots.clear();
+  for (int i = 0; i < k; ++i)
+  {
+    const std::pair<int64_t, int> key(s.orig[i], s.group[i]);
+    const auto it = std::find(s.slots.begin(), s.slots.end(), key);
+    s.slot[i] = static_cast<int>(it - s.slots.begin());
+    if (it == s.slots.end())
+    {
+      s.slots.push_back(key);
+    }
+  }
+  return static_cast<int>(s.slots.size());
+}
+} // namespace detail
+
+/**
+ * Splits points along feature edges and computes their normals.
+ * @p topology: polygons on welded ids (size numPoints); @p original: the
+ * same polygons' original point ids, or null when not welded; @p vc: the
+ * corner table of @p topology. @p allocate(numOutputPoints) returns where to
+ * write; @p outConnectivity (same size as the connectivity) receives the
+ * output point id of every corner. Returns the number of output points;
+ * points used by no polygon are not output.
+ *
+ * @p inconsistent, when given, asks the pass that builds the groups to look
+ * for polygons running the same way along an edge (hasInconsistentEdge() of
+ * slOrientationCore.h, at no extra pass over the corners: a smooth closed fan
+ * is consistent by construction). If there is one, *@p inconsistent is set,
+ * nothing is allocated or written and -1 is returned: orient the polygons
+ * and call again.
+ *
+ * Memory besides the output: the polygons' unit normals (3 T each), one
+ * 16-bit group number per corner (without welding), and the accumulators of
+ * slVertexNormalsCore.h.
+ */
+template <typename T, typename Id, typename OutId, typename Allocate>
+int64_t splitVertexNormals(const Polygons<Id>& topology, const Id* original, const T* xyz, int64_t numPoints,
+  const VertexCorners<Id>& vc, Weighting weighting, T cosFeature, OutId* outConnectivity, Allocate&& allocate,
+  const Parallel& parallel, bool* inconsistent = nullptr)
+{
+  using V = glm::vec<3, T>;
+  // Scratch arrays below are filled completely by parallel passes: no zero-fill.
+  const std::unique_ptr<T[]> unit = uninitialisedArray<T>(static_cast<size_t>(3 * topology.numPolygons));
+  parallel.forRange(0, topology.numPolygons, 8192, [&](int64_t b, int64_t e) {
+    for (int64_t f = b; f < e; ++f)
+    {
+      T len;
+      const V u = detail::unitOf(newellVector(topology, xyz, f), len);
+      unit[3 * f] = u.x;
+      unit[3 * f + 1] = u.y;
+      unit[3 * f + 2] = u.z;
+    }
+  });
+  constexpr uint16_t recompute = 0xFFFF;
+  std::unique_ptr<uint16_t[]> stored = uninitialisedArray<uint16_t>(original ? 0 : vc.corners.size());
+  const std::unique_ptr<int64_t[]> base = uninitialisedArray<int64_t>(static_cast<size_t>(numPoints + 1));
+  base[0] = 0;
+  std::atomic<bool> overflow{ false }, wrongWay{ false };
+  parallel.forRange(0, numPoints, 4096, [&](int64_t b, int64_t e) {
+    detail::SplitScratch<T> s;
+    // Flags are stored once per range: a shared flag written per point bounces between cores.
+    bool overflows = false, inconsistentHere = false;
+    for (int64_t v = b; v < e && !inconsistentHere; ++v)
+    {
+      const int slots = detail::groupCorners(topology, original, unit.get(), vc, v, cosFeature, s);
+      base[static_cast<size_t>(v + 1)] = slots;
+      inconsistentHere = inconsistent && !s.fan && detail::hasRepeat(s.next.data(), static_cast<int>(s.next.size()));
+      if (!original)
+      {
+        overflows = overflows || slots >= recompute;
+        const int32_t first = vc.offsets[static_cast<size_t>(v)];
+        for (size_t i = 0; i < s.group.size(); ++i)
+        {
+          stored[first + i] = slots < recompute ? static_cast<uint16_t>(s.group[i]) : recompute;
+        }
+      }
+    }
+    if (overflows)
+    {
+      overflow = true;
+    }
+    if (inconsistentHere)
+    {
+      wrongWay = true;
+    }
+  });
+  if (wrongWay)
+  {
+    *inconsistent = true;
+    return -1;
+  }
+  for (int64_t v = 0; v < numPoints; ++v)
+  {
+    base[static_cast<size_t>(v + 1)] += base[static_cast<size_t>(v)];
+  }
+  const int64_t total = base[static_cast<size_t>(numPoints)];
+  SplitOutput out = allocate(total);
+
+  if (!original && !overflow)
+  {
+    // Each corner's output point, then a polygon-centric weighted sum.
+    parallel.forRange(0, numPoints, 8192, [&](int64_t b, int64_t e) {
+      for (int64_t v = b; v < e; ++v)
+      {
+        for (int32_t i = vc.offsets[static_cast<size_t>(v)]; i < vc.offsets[static_cast<size_t>(v) + 1]; ++i)
+        {
+          const int64_t id = base[static_cast<size_t>(v)] + stored[static_cast<size_t>(i)];
+          outConnectivity[vc.corners[static_cast<size_t>(i)]] = static_cast<OutId>(id);
+          out.source[id] = v;
+        }
+      }
+    });
+    stored.reset();
+    accumulateNormals(topology, outConnectivity, xyz, total, weighting, out.normals, parallel);
+    return total;
+  }
+
+  // Welded (or a point with 65535 groups): rebuild the groups point by point.
+  parallel.forRange(0, numPoints, 4096, [&](int64_t b, int64_t e) {
+    detail::SplitScratch<T> s;
+    for (int64_t v = b; v < e; ++v)
+    {
+      const int32_t first = vc.offsets[static_cast<size_t>(v)];
+      const int k = vc.offsets[static_cast<size_t>(v) + 1] - first;
+      if (k == 0)
+      {
+        continue;
+      }
+      detail::groupCorners(topology, original, unit.get(), vc, v, cosFeature, s);
+      s.sums.assign(static_cast<size_t>(k), V(0));
+      const V p = point(xyz, v);
+      for (int i = 0; i < k; ++i)
+      {
+        const int64_t c = vc.corners[static_cast<size_t>(first + i)];
+        const int64_t f = vc.faceOf(c);
+        T len;
+        const V u = detail::unitOf(newellVector(topology, xyz, f), len);
+        s.sums[static_cast<size_t>(s.group[i])] +=
+          cornerContribution(weighting, point(xyz, s.prev[i]), p, point(xyz, s.next[i]), u, len);
+      }
+      for (int i = 0; i < k; ++i)
+      {
+        const int64_t id = base[static_cast<size_t>(v)] + (original ? s.slot[i] : s.group[i]);
+        T len;
+        const V n = detail::unitOf(s.sums[static_cast<size_t>(s.group[i])], len);
+        out.normals[3 * id] = static_cast<float>(n.x);
+        out.normals[3 * id + 1] = static_cast<float>(n.y);
+        out.normals[3 * id + 2] = static_cast<float>(n.z);
+        const int64_t c = vc.corners[static_cast<size_t>(first + i)];
+        out.source[id] = original ? static_cast<int64_t>(original[c]) : v;
+        outConnectivity[c] = static_cast<OutId>(id);
+      }
+    }
+  });
+  return total;
+}
+
+} // namespace slnormals
+
+#endif

@@ -1,0 +1,155 @@
+#ifndef slTriangleBlock_h
+#define slTriangleBlock_h
+/**
+ * @file slTriangleBlock.h
+ * @brief Newell vectors and corner weights of a run of consecutive triangles
+ * at once, laid out structure-of-arrays so that the compiler vectorises
+ * them. VTK-free. Geometry core (ShadeLab::GeometryCore).
+ *
+ * Gathering a triangle's points is a scattered read, but everything after it
+ * (edges, Newell vector, square root, division, three corner angles) is the
+ * same arithmetic for every triangle: done in one loop over contiguous
+ * arrays, it runs four (float) or two (double) triangles per SSE instruction,
+ * eight or four with AVX2. Angle weighting cost about 2.5 times area
+ * weighting when each triangle went through two scalar acos one after the
+ * other.
+ *
+ * The loop vectorises only with -fno-math-errno and -fno-trapping-math, which
+ * the module's CMakeLists.txt sets: they let sqrt and division run on vectors
+ * and change no result. With GCC on x86-64 ELF, weigh() is also compiled for
+ * AVX2 and picked at load time on CPUs that have it. FMA is not enabled, so
+ * both versions round alike and give the same weights.
+ *
+ * A block holds consecutive triangles of the connectivity only (triangle i
+ * starts at start + 3 i), so it stores no per-triangle position. That is also
+ * what keeps GCC 12.2 from miscompiling the scatter loop: with a per-triangle
+ * int64 array next to float arrays, -O2 (ivopts) addressed the int64 array
+ * as a zero-based memory reference, modref took it for a NULL dereference,
+ * concluded the scatter function was pure and deleted its call (all-zero
+ * normals with float points; see docs/normals.md).
+ */
+
+#include "slCornerWeights.h"
+
+#include <cmath>
+#include <cstdint>
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__ELF__)
+#define SL_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define SL_VECTOR_CLONES
+#endif
+
+namespace slnormals
+{
+
+/// Up to Capacity consecutive triangles: their points in, Newell vectors and
+/// corner weights out. Corner k of triangle i adds weight[k][i] × (nx, ny,
+/// nz)[i] to its vertex.
+template <typename T>
+struct TriangleBlock
+{
+  static constexpr int Capacity = 64;
+  int count = 0;
+  int64_t start = 0; ///< connectivity position of the first triangle's first corner
+  T x[3][Capacity], y[3][Capacity], z[3][Capacity];
+  T nx[Capacity], ny[Capacity], nz[Capacity];
+  T weight[3][Capacity];
+
+  /// Whether the triangle at connectivity position @p o can join the block:
+  /// it is empty, or @p o directly follows its last triangle.
+  bool continues(int64_t o) const { return this->count == 0 || o == this->start + 3 * this->count; }
+
+  /// Appends the triangle at connectivity position @p o (continues(o) must hold).
+  template <typename Id>
+  void add(const Id* connectivity, const T* xyz, int64_t o)
+  {
+    if (this->count == 0)
+    {
+      this->start = o;
+    }
+    const int i = this->count++;
+    for (int k = 0; k < 3; ++k)
+    {
+      const T* p = xyz + 3 * static_cast<int64_t>(connectivity[o + k]);
+      this->x[k][i] = p[0];
+      this->y[k][i] = p[1];
+      this->z[k][i] = p[2];
+    }
+  }
+
+  /// Newell vectors and the weights of @p W (see slCornerWeights.h) of the
+  /// count triangles; a degenerate triangle (zero Newell vector) weighs 0.
+  template <Weighting W>
+  SL_VECTOR_CLONES void weigh()
+  {
+    for (int i = 0; i < this->count; ++i)
+    {
+      // Edges p1 - p0, p2 - p1, p0 - p2; corner k lies between edges k-1 and k.
+      const T ax = this->x[1][i] - this->x[0][i], ay = this->y[1][i] - this->y[0][i],
+              az = this->z[1][i] - this->z[0][i];
+      const T bx = this->x[2][i] - this->x[1][i], by = this->y[2][i] - this->y[1][i],
+              bz = this->z[2][i] - this->z[1][i];
+      const T cx = this->x[0][i] - this->x[2][i], cy = this->y[0][i] - this->y[2][i],
+              cz = this->z[0][i] - this->z[2][i];
+      // (p1 - p0) x (p2 - p0) = c x a.
+      const T nx = cy * az - cz * ay, ny = cz * ax - cx * az, nz = cx * ay - cy * ax;
+      this->nx[i] = nx;
+      this->ny[i] = ny;
+      this->nz[i] = nz;
+      const T nn = nx * nx + ny * ny + nz * nz;
+      const bool valid = nn > T(0);
+      // Selects, not branches, so that the loop stays vectorisable and trap-free.
+      const T zeroOr1 = valid ? T(1) : T(0);
+      if (W == Weighting::Area)
+      {
+        this->weight[0][i] = this->weight[1][i] = this->weight[2][i] = zeroOr1;
+        continue;
+      }
+      const T len = std::sqrt(nn);
+      const T inverse = zeroOr1 / (valid ? len : T(1));
+      if (W == Weighting::Uniform)
+      {
+        this->weight[0][i] = this->weight[1][i] = this->weight[2][i] = inverse;
+        continue;
+      }
+      if (W == Weighting::Angle)
+      {
+        // e1 . e2 of each corner's two outgoing edges; |e1 x e2| = len at all three.
+        this->weight[0][i] = cornerAngle(len, -(cx * ax + cy * ay + cz * az)) * inverse;
+        this->weight[1][i] = cornerAngle(len, -(ax * bx + ay * by + az * bz)) * inverse;
+        this->weight[2][i] = cornerAngle(len, -(bx * cx + by * cy + bz * cz)) * inverse;
+        continue;
+      }
+      // Max: sin θ / (|e1| |e2|) times the unit normal = N / (|e1|² |e2|²).
+      const T la = ax * ax + ay * ay + az * az, lb = bx * bx + by * by + bz * bz,
+              lc = cx * cx + cy * cy + cz * cz;
+      const T l0 = lc * la, l1 = la * lb, l2 = lb * lc;
+      this->weight[0][i] = (valid && l0 > T(0) ? T(1) : T(0)) / (l0 > T(0) ? l0 : T(1));
+      this->weight[1][i] = (valid && l1 > T(0) ? T(1) : T(0)) / (l1 > T(0) ? l1 : T(1));
+      this->weight[2][i] = (valid && l2 > T(0) ? T(1) : T(0)) / (l2 > T(0) ? l2 : T(1));
+    }
+  }
+
+  /// Hands every corner's contribution to @p sink: sink.add(entry, x, y, z)
+  /// with the corner's entry of @p accIds (the connectivity's layout).
+  template <typename AccId, typename Sink>
+  void scatter(const AccId* accIds, Sink& sink) const
+  {
+    const AccId* to = accIds + this->start;
+    for (int i = 0; i < this->count; ++i, to += 3)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const T w = this->weight[k][i];
+        sink.add(static_cast<int64_t>(to[k]), this->nx[i] * w, this->ny[i] * w, this->nz[i] * w);
+      }
+    }
+  }
+};
+
+} // namespace slnormals
+
+#undef SL_VECTOR_CLONES
+
+#endif

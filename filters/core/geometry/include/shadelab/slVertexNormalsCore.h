@@ -1,0 +1,426 @@
+#ifndef slVertexNormalsCore_h
+#define slVertexNormalsCore_h
+/**
+ * @file slVertexNormalsCore.h
+ * @brief Vertex normals without splitting: weighted face normals summed at
+ * each vertex. VTK-free. Geometry core (ShadeLab::GeometryCore).
+ *
+ * Triangles are weighed in vectorised blocks (slTriangleBlock.h) and their
+ * corner contributions added into one accumulator, the output itself when
+ * the points are float. The polygons are cut into contiguous chunks, and the
+ * entries (points) into as many ranges: chunk k owns range k. A chunk adds a
+ * contribution in place when the entry lies in its own range and keeps it
+ * in a list for the owner otherwise; then each range adds the lists kept for
+ * it, chunk by chunk, and normalises. No two chunks write the same entry, so
+ * there are no atomics, no per-thread copy of the accumulator and no pass
+ * that sums copies; the sum order is fixed, so the result does not depend on
+ * scheduling.
+ *
+ * The ranges come from the mesh's order: range k starts at the smallest
+ * entry of chunk k's first polygon. In a mesh whose polygons run in the
+ * order of their points (what generators, readers and most exporters
+ * write) a chunk then reaches outside its range only along its borders, and
+ * there are several chunks per thread so that threads that start late still
+ * get a share. When a sample of polygons says the order is random (more
+ * than a quarter of the corners outside their chunk's range), almost every
+ * corner would be kept for another range; then there is one chunk per
+ * thread, each summing into its own copy of all entries (chunk 0 into the
+ * accumulator), and a pass over the points adds the copies in chunk order
+ * and normalises. In random order every point and sum is a cache miss, so
+ * the scatter then also prefetches them ahead of use.
+ */
+
+#include "slCornerWeights.h"
+#include "slFaceNormalsCore.h"
+#include "slNormalsParallel.h"
+#include "slTriangleBlock.h"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <memory>
+#include <type_traits>
+#include <vector>
+
+namespace slnormals
+{
+
+namespace detail
+{
+/// A hint that @p address will be read (or written) soon; nothing else.
+inline void prefetch(const void* address, bool forWriting = false)
+{
+#if defined(__GNUC__)
+  if (forWriting)
+  {
+    __builtin_prefetch(address, 1);
+  }
+  else
+  {
+    __builtin_prefetch(address, 0);
+  }
+#else
+  (void)address;
+  (void)forWriting;
+#endif
+}
+
+/// A contribution a chunk keeps for the owner of its entry: the entry as an
+/// offset from the start of the owner's range (ranges hold fewer than 2^31
+/// entries).
+template <typename T>
+struct Kept
+{
+  uint32_t offset;
+  T x, y, z;
+};
+
+/// Chunk k's way into the accumulator: entries of its range [lo, hi) are
+/// added in place, others kept in kept[owner].
+template <typename T>
+struct ChunkSink
+{
+  T* acc;
+  int64_t lo, hi;
+  const int64_t* bounds; ///< chunks + 1 range starts
+  int64_t chunks;
+  std::vector<Kept<T>>* kept; ///< one list per owner
+
+  /// Asks for the cache line of @p id's sum ahead of add().
+  void prefetch(int64_t id) const
+  {
+    if (id >= this->lo && id < this->hi)
+    {
+      detail::prefetch(this->acc + 3 * id, true);
+    }
+  }
+
+  void add(int64_t id, T x, T y, T z)
+  {
+    if (id >= this->lo && id < this->hi)
+    {
+      T* a = this->acc + 3 * id;
+      a[0] += x;
+      a[1] += y;
+      a[2] += z;
+      return;
+    }
+    const int64_t owner = std::upper_bound(this->bounds + 1, this->bounds + this->chunks + 1, id) - (this->bounds + 1);
+    this->kept[owner].push_back({ static_cast<uint32_t>(id - this->bounds[owner]), x, y, z });
+  }
+};
+
+/// Hands the corner contributions of polygons [b, e) to @p sink at the
+/// corners' entries of @p accIds (same layout as the connectivity). Runs of
+/// consecutive triangles go through TriangleBlock; other polygons one by one.
+template <Weighting W, bool Prefetch, typename T, typename Id, typename AccId, typename Sink>
+void scatter(const Polygons<Id>& polys, const AccId* accIds, const T* xyz, int64_t b, int64_t e, Sink& sink)
+{
+  using V = glm::vec<3, T>;
+  TriangleBlock<T> block;
+  const auto flush = [&]() {
+    block.template weigh<W>();
+    block.scatter(accIds, sink);
+    block.count = 0;
+  };
+  // With Prefetch (a mesh without locality, where every point and sum is a
+  // cache miss), ask for the points of the triangle `ahead` positions on,
+  // and for this triangle's sums, which are written when the block is full.
+  // In an ordered mesh they are in cache already and asking costs time.
+  constexpr int64_t ahead = 16;
+  const int64_t lastCorner = e > b ? polys.end(e - 1) : 0;
+  for (int64_t f = b; f < e; ++f)
+  {
+    const int64_t o = polys.begin(f);
+    const int64_t n = polys.size(f);
+    if (n == 3)
+    {
+      const int64_t later = o + 3 * ahead;
+      if (Prefetch && later + 2 < lastCorner)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          prefetch(xyz + 3 * static_cast<int64_t>(polys.connectivity[later + k]));
+        }
+      }
+      for (int k = 0; Prefetch && k < 3; ++k)
+      {
+        sink.prefetch(static_cast<int64_t>(accIds[o + k]));
+      }
+      if (!block.continues(o))
+      {
+        flush();
+      }
+      block.add(polys.connectivity, xyz, o);
+      if (block.count == TriangleBlock<T>::Capacity)
+      {
+        flush();
+      }
+      continue;
+    }
+    const V nv = newellVector(polys, xyz, f);
+    const T len = glm::length(nv);
+    if (n < 3 || !(len > T(0)))
+    {
+      continue;
+    }
+    const Id* ids = polys.connectivity + o;
+    const AccId* to = accIds + o;
+    const V u = nv / len;
+    for (int64_t i = 0; i < n; ++i)
+    {
+      const V prev = point(xyz, ids[(i + n - 1) % n]);
+      const V next = point(xyz, ids[(i + 1) % n]);
+      const V c = cornerContribution(W, prev, point(xyz, ids[i]), next, u, len);
+      sink.add(static_cast<int64_t>(to[i]), c.x, c.y, c.z);
+    }
+  }
+  if (block.count > 0)
+  {
+    flush();
+  }
+}
+
+/// Chunks of polygons and the entry ranges they own (see the file comment).
+struct Partition
+{
+  int64_t chunks = 1;
+  std::vector<int64_t> bounds; ///< chunks + 1: range k is [bounds[k], bounds[k + 1])
+  double keptShare = 0;        ///< estimated share of corners outside their chunk's range
+  bool randomOrder = false;    ///< the sample found no locality: prefetch
+
+  template <typename Id>
+  int64_t firstPolygon(const Polygons<Id>& polys, int64_t k) const
+  {
+    return polys.numPolygons * k / this->chunks;
+  }
+};
+
+/// Splits @p polys (entries @p accIds, in [0, numEntries)) for @p threads threads.
+template <typename Id, typename AccId>
+Partition partition(const Polygons<Id>& polys, const AccId* accIds, int64_t numEntries, int threads)
+{
+  Partition p;
+  const int64_t maxRange = int64_t(1) << 31;
+  // Ranges of equal size, for @p chunks chunks.
+  const auto evenly = [&](int64_t chunks) {
+    p.chunks = std::max<int64_t>(chunks, 1 + numEntries / maxRange);
+    p.bounds.resize(static_cast<size_t>(p.chunks + 1));
+    for (int64_t k = 0; k <= p.chunks; ++k)
+    {
+      p.bounds[static_cast<size_t>(k)] = numEntries * k / p.chunks;
+    }
+    p.keptShare = static_cast<double>(p.chunks - 1) / static_cast<double>(p.chunks);
+  };
+  if (polys.numPolygons < 65536)
+  {
+    evenly(1);
+    return p;
+  }
+  // In mesh order: range k starts at the smallest entry of chunk k's first
+  // polygon (with at least 16 chunks, also on one thread, for the sample).
+  p.chunks = std::min<int64_t>(8 * std::max(threads, 2), 64);
+  p.bounds.assign(static_cast<size_t>(p.chunks + 1), 0);
+  p.bounds[static_cast<size_t>(p.chunks)] = numEntries;
+  for (int64_t k = 1; k < p.chunks; ++k)
+  {
+    const int64_t f = p.firstPolygon(polys, k);
+    int64_t smallest = numEntries;
+    for (int64_t c = polys.begin(f); c < polys.end(f); ++c)
+    {
+      smallest = std::min<int64_t>(smallest, static_cast<int64_t>(accIds[c]));
+    }
+    p.bounds[static_cast<size_t>(k)] = std::max(p.bounds[static_cast<size_t>(k - 1)], smallest);
+  }
+  // A sample of 16 polygons per chunk: how many corners fall outside the range.
+  int64_t outside = 0, sampled = 0;
+  bool tooLarge = false;
+  for (int64_t k = 0; k < p.chunks; ++k)
+  {
+    const int64_t lo = p.bounds[static_cast<size_t>(k)], hi = p.bounds[static_cast<size_t>(k + 1)];
+    tooLarge = tooLarge || hi - lo >= maxRange;
+    const int64_t b = p.firstPolygon(polys, k), e = p.firstPolygon(polys, k + 1);
+    for (int s = 0; s < 16; ++s)
+    {
+      const int64_t f = b + (e - b) * s / 16;
+      for (int64_t c = polys.begin(f); c < polys.end(f); ++c)
+      {
+        const int64_t id = static_cast<int64_t>(accIds[c]);
+        outside += id < lo || id >= hi;
+        ++sampled;
+      }
+    }
+  }
+  p.keptShare = sampled ? static_cast<double>(outside) / static_cast<double>(sampled) : 0.0;
+  p.randomOrder = p.keptShare > 0.25;
+  if (threads <= 1 || p.randomOrder || tooLarge)
+  {
+    // One thread: one chunk. Random order: one chunk per thread, the
+    // entries split evenly.
+    evenly(std::max(threads, 1));
+  }
+  return p;
+}
+
+/// Where the sums go: the float output itself when the points are float,
+/// else a scratch array of T (null: allocate one).
+template <typename T>
+inline T* inPlaceAccumulator(float* out)
+{
+  if constexpr (std::is_same<T, float>::value)
+  {
+    return out;
+  }
+  else
+  {
+    (void)out;
+    return nullptr;
+  }
+}
+} // namespace detail
+
+/// Normalised sums of corner contributions, indexed by @p accIds (the
+/// connectivity's layout, values in [0, numPoints)), into @p out (3 floats
+/// each). Entries no non-degenerate corner reaches get (0, 0, 0).
+template <typename T, typename Id, typename AccId>
+void accumulateNormals(const Polygons<Id>& polys, const AccId* accIds, const T* xyz, int64_t numPoints,
+  Weighting weighting, float* out, const Parallel& parallel)
+{
+  const detail::Partition part = detail::partition(polys, accIds, numPoints, parallel.threads);
+  const int64_t chunks = part.chunks;
+  const int64_t* bounds = part.bounds.data();
+  std::unique_ptr<T[]> scratch;
+  T* acc = detail::inPlaceAccumulator<T>(out);
+  if (!acc)
+  {
+    scratch = uninitialisedArray<T>(static_cast<size_t>(3 * numPoints));
+    acc = scratch.get();
+  }
+  // Random order: half or more of a chunk's corners would be kept for other
+  // ranges, which cost more than they save; each chunk sums into its own
+  // copy of all entries instead (chunk 0 into acc), added in chunk order.
+  const bool copies = part.randomOrder && chunks > 1;
+  std::vector<std::unique_ptr<T[]>> copy(static_cast<size_t>(copies ? chunks : 0));
+  // kept[k * chunks + j]: what chunk k keeps for range j.
+  std::vector<std::vector<detail::Kept<T>>> kept(static_cast<size_t>(chunks * chunks));
+  parallel.forRange(0, chunks, 1, [&](int64_t kb, int64_t ke) {
+    for (int64_t k = kb; k < ke; ++k)
+    {
+      int64_t lo = bounds[k], hi = bounds[k + 1];
+      T* sums = acc;
+      if (copies)
+      {
+        lo = 0;
+        hi = numPoints;
+        if (k > 0)
+        {
+          copy[static_cast<size_t>(k)] = uninitialisedArray<T>(static_cast<size_t>(3 * numPoints));
+          sums = copy[static_cast<size_t>(k)].get();
+        }
+      }
+      std::fill(sums + 3 * lo, sums + 3 * hi, T(0));
+      const int64_t b = part.firstPolygon(polys, k), e = part.firstPolygon(polys, k + 1);
+      std::vector<detail::Kept<T>>* mine = kept.data() + k * chunks;
+      if (!copies && part.keptShare > 0 && chunks > 1)
+      {
+        const double corners = static_cast<double>(e > b ? polys.begin(e) - polys.begin(b) : 0);
+        const auto expected = static_cast<size_t>(corners * part.keptShare / static_cast<double>(chunks - 1) * 1.05);
+        for (int64_t j = 0; j < chunks; ++j)
+        {
+          if (j != k)
+          {
+            mine[j].reserve(expected);
+          }
+        }
+      }
+      detail::ChunkSink<T> sink{ sums, lo, hi, bounds, chunks, mine };
+      switch (weighting)
+      {
+        case Weighting::Uniform:
+          part.randomOrder ? detail::scatter<Weighting::Uniform, true>(polys, accIds, xyz, b, e, sink)
+                           : detail::scatter<Weighting::Uniform, false>(polys, accIds, xyz, b, e, sink);
+          break;
+        case Weighting::Area:
+          part.randomOrder ? detail::scatter<Weighting::Area, true>(polys, accIds, xyz, b, e, sink)
+                           : detail::scatter<Weighting::Area, false>(polys, accIds, xyz, b, e, sink);
+          break;
+        case Weighting::Angle:
+          part.randomOrder ? detail::scatter<Weighting::Angle, true>(polys, accIds, xyz, b, e, sink)
+                           : detail::scatter<Weighting::Angle, false>(polys, accIds, xyz, b, e, sink);
+          break;
+        case Weighting::Max:
+          part.randomOrder ? detail::scatter<Weighting::Max, true>(polys, accIds, xyz, b, e, sink)
+                           : detail::scatter<Weighting::Max, false>(polys, accIds, xyz, b, e, sink);
+          break;
+      }
+    }
+  });
+  const auto normalise = [&](int64_t v) {
+    glm::vec<3, T> s(acc[3 * v], acc[3 * v + 1], acc[3 * v + 2]);
+    for (int64_t k = 1; copies && k < chunks; ++k)
+    {
+      const T* c = copy[static_cast<size_t>(k)].get() + 3 * v;
+      s += glm::vec<3, T>(c[0], c[1], c[2]);
+    }
+    const T len = glm::length(s);
+    if (len > T(0))
+    {
+      s /= len;
+    }
+    out[3 * v] = static_cast<float>(s.x);
+    out[3 * v + 1] = static_cast<float>(s.y);
+    out[3 * v + 2] = static_cast<float>(s.z);
+  };
+  if (copies)
+  {
+    parallel.forRange(0, numPoints, 16384, [&](int64_t b, int64_t e) {
+      for (int64_t v = b; v < e; ++v)
+      {
+        normalise(v);
+      }
+    });
+    return;
+  }
+  parallel.forRange(0, chunks, 1, [&](int64_t jb, int64_t je) {
+    for (int64_t j = jb; j < je; ++j)
+    {
+      const int64_t lo = bounds[j], hi = bounds[j + 1];
+      T* base = acc + 3 * lo;
+      for (int64_t k = 0; k < chunks; ++k)
+      {
+        const std::vector<detail::Kept<T>>& list = kept[static_cast<size_t>(k * chunks + j)];
+        for (size_t i = 0; i < list.size(); ++i)
+        {
+          if (i + 16 < list.size())
+          {
+            detail::prefetch(base + 3 * static_cast<int64_t>(list[i + 16].offset), true);
+          }
+          const detail::Kept<T>& c = list[i];
+          T* a = base + 3 * static_cast<int64_t>(c.offset);
+          a[0] += c.x;
+          a[1] += c.y;
+          a[2] += c.z;
+        }
+        std::vector<detail::Kept<T>>().swap(kept[static_cast<size_t>(k * chunks + j)]);
+      }
+      for (int64_t v = lo; v < hi; ++v)
+      {
+        normalise(v);
+      }
+    }
+  });
+}
+
+/// Unit vertex normals of points [0, numPoints) into @p out (3 floats each).
+/// Points used by no non-degenerate polygon get (0, 0, 0).
+template <typename T, typename Id>
+void computeVertexNormals(const Polygons<Id>& polys, const T* xyz, int64_t numPoints, Weighting weighting,
+  float* out, const Parallel& parallel)
+{
+  accumulateNormals(polys, polys.connectivity, xyz, numPoints, weighting, out, parallel);
+}
+
+} // namespace slnormals
+
+#endif

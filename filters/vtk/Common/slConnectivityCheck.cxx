@@ -1,0 +1,122 @@
+#include "slConnectivityCheck.h"
+
+#include "shadelab/slAtomicMinimum.h"
+
+#include <vtkCellArray.h>
+#include <vtkPolyData.h>
+#include <vtkSMPTools.h>
+#include <vtkTypeInt32Array.h>
+#include <vtkTypeInt64Array.h>
+
+#include <algorithm>
+#include <atomic>
+
+namespace
+{
+/// The problem with one cell array whose ids are of type Id, or "".
+template <typename Id>
+std::string cellsProblem(const Id* offsets, vtkIdType numOffsets, const Id* ids, vtkIdType numIds,
+  vtkIdType numPoints, const char* kind)
+{
+  if (numOffsets == 0)
+  {
+    return numIds == 0 ? std::string() : std::string(kind) + " cells: point ids without offsets";
+  }
+  // Offsets start at 0, never decrease and end at the number of ids.
+  if (offsets[0] != 0 || offsets[numOffsets - 1] != numIds)
+  {
+    return std::string(kind) + " cells: offsets do not span their " + std::to_string(numIds) + " point ids";
+  }
+  // The first decrease, found in parallel like the ids below.
+  std::atomic<vtkIdType> firstDecrease(numOffsets);
+  vtkSMPTools::For(1, numOffsets, 65536, [&](vtkIdType begin, vtkIdType end) {
+    bool bad = false;
+    for (vtkIdType c = begin; c < end; ++c)
+    {
+      bad |= offsets[c] < offsets[c - 1];
+    }
+    for (vtkIdType c = begin; bad && c < end; ++c)
+    {
+      if (offsets[c] < offsets[c - 1])
+      {
+        slAtomicMinimum(firstDecrease, c);
+        return;
+      }
+    }
+  });
+  if (firstDecrease.load() < numOffsets)
+  {
+    return std::string(kind) + " " + std::to_string(firstDecrease.load() - 1) + ": its offset decreases";
+  }
+  // The first id outside [0, numPoints), found in parallel: the common case
+  // (none) is one branch-free pass.
+  std::atomic<vtkIdType> firstBad(numIds);
+  vtkSMPTools::For(0, numIds, 65536, [&](vtkIdType begin, vtkIdType end) {
+    bool bad = false;
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      bad |= ids[i] < 0 || ids[i] >= numPoints;
+    }
+    for (vtkIdType i = begin; bad && i < end; ++i)
+    {
+      if (ids[i] < 0 || ids[i] >= numPoints)
+      {
+        slAtomicMinimum(firstBad, i);
+        return;
+      }
+    }
+  });
+  const vtkIdType at = firstBad.load();
+  if (at == numIds)
+  {
+    return std::string();
+  }
+  // The cell holding id number `at`: the last offset <= at.
+  const vtkIdType cell = static_cast<vtkIdType>(std::upper_bound(offsets, offsets + numOffsets, static_cast<Id>(at)) - offsets) - 1;
+  return std::string(kind) + " " + std::to_string(cell) + " names point " + std::to_string(ids[at]) +
+    ", but the mesh has " + std::to_string(numPoints) + " points" +
+    (numPoints > 0 ? " (0 to " + std::to_string(numPoints - 1) + ")" : std::string());
+}
+
+std::string arrayProblem(vtkCellArray* cells, vtkIdType numPoints, const char* kind)
+{
+  if (!cells)
+  {
+    return std::string();
+  }
+  if (cells->IsStorage64Bit())
+  {
+    vtkTypeInt64Array* offsets = cells->GetOffsetsArray64();
+    vtkTypeInt64Array* ids = cells->GetConnectivityArray64();
+    return cellsProblem(offsets->GetPointer(0), offsets->GetNumberOfValues(), ids->GetPointer(0),
+      ids->GetNumberOfValues(), numPoints, kind);
+  }
+  vtkTypeInt32Array* offsets = cells->GetOffsetsArray32();
+  vtkTypeInt32Array* ids = cells->GetConnectivityArray32();
+  return cellsProblem(offsets->GetPointer(0), offsets->GetNumberOfValues(), ids->GetPointer(0),
+    ids->GetNumberOfValues(), numPoints, kind);
+}
+} // namespace
+
+std::string slConnectivityProblem(vtkPolyData* mesh)
+{
+  if (!mesh)
+  {
+    return std::string();
+  }
+  const vtkIdType numPoints = mesh->GetNumberOfPoints();
+  std::string problem = arrayProblem(mesh->GetPolys(), numPoints, "polygon");
+  if (problem.empty())
+  {
+    problem = arrayProblem(mesh->GetStrips(), numPoints, "strip");
+  }
+  if (problem.empty())
+  {
+    problem = arrayProblem(mesh->GetLines(), numPoints, "line");
+  }
+  if (problem.empty())
+  {
+    problem = arrayProblem(mesh->GetVerts(), numPoints, "vertex cell");
+  }
+  return problem;
+}

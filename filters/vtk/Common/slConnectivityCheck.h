@@ -1,0 +1,27 @@
+#ifndef slConnectivityCheck_h
+#define slConnectivityCheck_h
+/**
+ * @file slConnectivityCheck.h
+ * @brief The check every ShadeLab filter makes before it follows a cell's
+ * point ids: each id of each vertex, line, polygon and strip cell names a
+ * point of the mesh, and each cell array's offsets are consistent.
+ *
+ * A vtkPolyData built in memory (or read by a reader that copies indices
+ * unchecked) can name points that do not exist; the algorithms index
+ * per-point arrays by these ids, so one bad id would read or write outside
+ * them. C++ only, not wrapped.
+ */
+
+#include "ShadeLabCommonModule.h"
+
+#include <string>
+
+class vtkPolyData;
+
+/// "" when every cell of @p mesh names only points in [0, number of points)
+/// and its offsets are consistent (null and empty meshes pass); otherwise one
+/// line naming the first bad cell, e.g. "polygon 4 names point 9, but the
+/// mesh has 3 points (0 to 2)".
+SHADELABCOMMON_EXPORT std::string slConnectivityProblem(vtkPolyData* mesh);
+
+#endif

@@ -1,0 +1,156 @@
+#include "slRadianceFilter.h"
+#include "shadelab/slAtomicMinimum.h"
+#include "slCoreBoundary.h"
+
+#include "slDiffuseColors.h"
+#include "slFloat3View.h"
+#include "slImageReader.h"
+#include "slLightingSetup.h"
+#include "slParallelFillArray.h"
+#include "slRadianceKernel.h"
+#include "slUpdateOrThrow.h"
+
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkSMPTools.h>
+#include <vtkSmartPointer.h>
+
+#include <atomic>
+#include <vector>
+
+vtkStandardNewMacro(slRadianceFilter);
+vtkCxxSetObjectMacro(slRadianceFilter, DiffuseTexture, vtkImageData);
+
+namespace
+{
+/// An RGB output array; the kernel writes every value once, in parallel.
+vtkSmartPointer<vtkFloatArray> rgbArray(const std::string& name, vtkIdType n)
+{
+  return shadelab::newParallelFillArray(name, 3, n);
+}
+} // namespace
+
+slRadianceFilter::slRadianceFilter() = default;
+
+slRadianceFilter::~slRadianceFilter()
+{
+  this->SetDiffuseColorArrayName(nullptr);
+  this->SetDiffuseTexture(nullptr);
+  this->SetDiffuseTextureFileName(nullptr);
+}
+
+vtkMTimeType slRadianceFilter::GetMTime()
+{
+  vtkMTimeType t = this->Superclass::GetMTime();
+  if (this->DiffuseTexture && this->DiffuseTexture->GetMTime() > t)
+  {
+    t = this->DiffuseTexture->GetMTime();
+  }
+  return t;
+}
+
+int slRadianceFilter::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  using namespace shadelab;
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  LightingSetup setup;
+  // The kernel finds normals without a direction as it shades (one pass over
+  // them, not two).
+  if (!this->PrepareLighting(input, output, true, setup, false))
+  {
+    return 0;
+  }
+  std::vector<glm::vec3> base; // base colour per point: multiplies k_a and k_d
+  const bool haveBase = slRunCore(this, output, [&] {
+    if (this->DiffuseColorArrayName && *this->DiffuseColorArrayName)
+    {
+      diffuseFromArray(input, this->DiffuseColorArrayName, base);
+    }
+    else if (this->DiffuseTextureFileName && *this->DiffuseTextureFileName)
+    {
+      vtkNew<slImageReader> reader;
+      reader->SetFileName(this->DiffuseTextureFileName);
+      slUpdateOrThrow(reader);
+      diffuseFromTexture(input, reader->GetOutput(), base);
+    }
+    else if (this->DiffuseTexture)
+    {
+      diffuseFromTexture(input, this->DiffuseTexture, base);
+    }
+  });
+  if (!haveBase)
+  {
+    return 0;
+  }
+
+  output->ShallowCopy(input);
+  const vtkIdType n = input->GetNumberOfPoints();
+  const Float3View points(input->GetPoints()->GetData());
+  const Float3View normals(input->GetPointData()->GetNormals());
+  auto ambient = rgbArray("Ambient", n), diffuseOut = rgbArray("Diffuse", n), specular = rgbArray("Specular", n),
+       emission = rgbArray("Emission", n), radiance = rgbArray("Radiance", n);
+  std::vector<vtkSmartPointer<vtkFloatArray>> perLight;
+  RadianceKernelOutput out;
+  if (this->PerLightArrays)
+  {
+    for (size_t l = 0; l < setup.lights.size(); ++l)
+    {
+      perLight.push_back(rgbArray("Radiance_" + std::to_string(l), n));
+      out.perLight.push_back(perLight.back()->GetPointer(0));
+    }
+  }
+  out.ambient = ambient->GetPointer(0);
+  out.diffuse = diffuseOut->GetPointer(0);
+  out.specular = specular->GetPointer(0);
+  out.emission = emission->GetPointer(0);
+  out.radiance = radiance->GetPointer(0);
+  RadianceKernelInput in;
+  in.points = points.data();
+  in.normals = normals.data();
+  in.baseColour = base.empty() ? nullptr : &base[0].x;
+  in.lights = setup.lights;
+  in.material = setup.material;
+  in.model = static_cast<ShadingModel>(setup.model);
+  in.eye = setup.eye;
+  std::atomic<vtkIdType> firstWithoutNormal(n);
+  vtkSMPTools::For(0, n, 1024, [&](vtkIdType begin, vtkIdType end) {
+    const vtkIdType first = shadeRange(in, out, begin, end);
+    if (first < end) // else none in this range
+    {
+      slAtomicMinimum(firstWithoutNormal, first);
+    }
+  });
+  if (this->ZeroNormalsAreErrors && firstWithoutNormal.load() < n)
+  {
+    return this->FailOnZeroNormal(output, firstWithoutNormal.load(), n);
+  }
+
+  vtkPointData* pd = output->GetPointData();
+  for (vtkFloatArray* a : { ambient.Get(), diffuseOut.Get(), specular.Get(), emission.Get(), radiance.Get() })
+  {
+    pd->AddArray(a);
+  }
+  for (const auto& a : perLight)
+  {
+    pd->AddArray(a);
+  }
+  return 1;
+}
+
+void slRadianceFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "PerLightArrays: " << this->PerLightArrays << "\n";
+  os << indent << "DiffuseColorArrayName: " << (this->DiffuseColorArrayName ? this->DiffuseColorArrayName : "(none)")
+     << "\n";
+  os << indent << "DiffuseTexture: " << this->DiffuseTexture << "\n";
+  os << indent << "DiffuseTextureFileName: "
+     << (this->DiffuseTextureFileName ? this->DiffuseTextureFileName : "(none)") << "\n";
+}

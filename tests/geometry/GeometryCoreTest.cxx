@@ -1,0 +1,200 @@
+// The VTK-free geometry core against values worked out by hand: face
+// normals, the four corner weightings of vertex normals, orientation repair,
+// point welding and tangent frames across a mirror seam, on meshes small enough to check on paper.
+#include "shadelab/slFaceNormalsCore.h"
+#include "shadelab/slOrientationCore.h"
+#include "shadelab/slPointWeldCore.h"
+#include "shadelab/slTangentSeamsCore.h"
+#include "shadelab/slVertexCorners.h"
+#include "shadelab/slVertexNormalsCore.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace
+{
+using slnormals::Parallel;
+using slnormals::Polygons;
+using slnormals::Weighting;
+
+/// A polygon list over its own arrays (VTK 9's layout: offsets + connectivity).
+struct Mesh
+{
+  std::vector<double> xyz;
+  std::vector<int64_t> offsets{ 0 };
+  std::vector<int64_t> connectivity;
+
+  void add(std::initializer_list<int64_t> ids)
+  {
+    this->connectivity.insert(this->connectivity.end(), ids);
+    this->offsets.push_back(static_cast<int64_t>(this->connectivity.size()));
+  }
+  Polygons<int64_t> polygons()
+  {
+    Polygons<int64_t> p;
+    p.offsets = this->offsets.data();
+    p.connectivity = this->connectivity.data();
+    p.numPolygons = static_cast<int64_t>(this->offsets.size()) - 1;
+    return p;
+  }
+  int64_t numPoints() const { return static_cast<int64_t>(this->xyz.size() / 3); }
+};
+
+void expectUnit(const float* n, double x, double y, double z)
+{
+  const double length = std::sqrt(x * x + y * y + z * z);
+  EXPECT_NEAR(n[0], x / length, 1e-6);
+  EXPECT_NEAR(n[1], y / length, 1e-6);
+  EXPECT_NEAR(n[2], z / length, 1e-6);
+}
+
+/// Two triangles meeting at point 0 (the origin): A in the plane z = 0
+/// (normal +z, area 2, a right angle at 0, edges of length 2 there) and B in
+/// the plane y = 0 (normal +y, area 1/2, 45 degrees at 0, edges 1 and sqrt 2).
+Mesh twoTriangles()
+{
+  Mesh m;
+  m.xyz = { 0, 0, 0, 2, 0, 0, 0, 2, 0, 0, 0, 1, 1, 0, 1 };
+  m.add({ 0, 1, 2 });
+  m.add({ 0, 3, 4 });
+  return m;
+}
+
+std::vector<float> vertexNormals(Mesh& m, Weighting w)
+{
+  std::vector<float> out(static_cast<size_t>(3 * m.numPoints()));
+  slnormals::computeVertexNormals(m.polygons(), m.xyz.data(), m.numPoints(), w, out.data(), Parallel());
+  return out;
+}
+} // namespace
+
+TEST(GeometryCore, FaceNormalsAreUnitNewellNormals)
+{
+  Mesh m;
+  // A triangle in z = 0, a quad in the plane x + y + z = 1 and a degenerate
+  // triangle (three points on a line).
+  m.xyz = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0.5, 0, 0.5, 2, 0, 0 };
+  m.add({ 0, 1, 2 });
+  m.add({ 3, 4, 5, 6 });
+  m.add({ 0, 1, 7 });
+  std::vector<float> n(9);
+  slnormals::computeUnitFaceNormals(m.polygons(), m.xyz.data(), n.data(), Parallel());
+  expectUnit(&n[0], 0, 0, 1);
+  expectUnit(&n[3], 1, 1, 1);
+  EXPECT_EQ(n[6], 0.0f);
+  EXPECT_EQ(n[7], 0.0f);
+  EXPECT_EQ(n[8], 0.0f);
+}
+
+TEST(GeometryCore, VertexNormalWeightings)
+{
+  Mesh m = twoTriangles();
+  // Sum of weight * face normal at point 0, with A's normal +z and B's +y:
+  expectUnit(&vertexNormals(m, Weighting::Uniform)[0], 0, 1, 1);       // 1 and 1
+  expectUnit(&vertexNormals(m, Weighting::Area)[0], 0, 1, 4);          // twice the areas: 1 and 4
+  expectUnit(&vertexNormals(m, Weighting::Angle)[0], 0, 1, 2);         // pi/4 and pi/2
+  expectUnit(&vertexNormals(m, Weighting::Max)[0], 0, 2, 1);           // sin/(|e1||e2|): 1/2 and 1/4
+  // A point of one triangle only takes that triangle's normal.
+  expectUnit(&vertexNormals(m, Weighting::Angle)[3], 0, 0, 1);
+}
+
+TEST(GeometryCore, UnusedPointGetsAZeroNormal)
+{
+  Mesh m = twoTriangles();
+  m.xyz.insert(m.xyz.end(), { 5, 5, 5 });
+  const std::vector<float> n = vertexNormals(m, Weighting::Angle);
+  EXPECT_EQ(n[15], 0.0f);
+  EXPECT_EQ(n[16], 0.0f);
+  EXPECT_EQ(n[17], 0.0f);
+}
+
+TEST(GeometryCore, OrientationRepairsAFlippedNeighbour)
+{
+  // The unit square as two triangles sharing the edge 0-2; the second one
+  // is listed clockwise, so both traverse the edge from 0 to 2.
+  Mesh m;
+  m.xyz = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0 };
+  m.add({ 0, 1, 2 });
+  m.add({ 0, 2, 3 });
+  m.connectivity = { 0, 1, 2, 2, 0, 3 };
+  Polygons<int64_t> p = m.polygons();
+  slnormals::VertexCorners<int64_t> vc;
+  vc.build(p, m.numPoints(), Parallel());
+  EXPECT_TRUE(slnormals::hasInconsistentEdge(p, vc, Parallel()));
+  std::vector<char> flipped;
+  EXPECT_EQ(slnormals::orientPolygons(p, m.xyz.data(), vc, false, &flipped), 1);
+  EXPECT_EQ(flipped[0] + flipped[1], 1);
+  vc.build(p, m.numPoints(), Parallel());
+  EXPECT_FALSE(slnormals::hasInconsistentEdge(p, vc, Parallel()));
+  // Both faces now point the same way.
+  std::vector<float> n(6);
+  slnormals::computeUnitFaceNormals(p, m.xyz.data(), n.data(), Parallel());
+  EXPECT_EQ(n[2], n[5]);
+  EXPECT_NEAR(std::abs(n[2]), 1.0f, 1e-6);
+}
+
+TEST(GeometryCore, OrientationTurnsAClosedSurfaceOutward)
+{
+  // A tetrahedron with every face listed inward (normals toward the centre).
+  Mesh m;
+  m.xyz = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+  m.add({ 0, 1, 2 }); // normal +z, inward for the face at z = 0
+  m.add({ 0, 3, 1 }); // +y, inward at y = 0
+  m.add({ 0, 2, 3 }); // +x, inward at x = 0
+  m.add({ 1, 3, 2 }); // -(1,1,1), inward for the slanted face
+  Polygons<int64_t> p = m.polygons();
+  slnormals::VertexCorners<int64_t> vc;
+  vc.build(p, m.numPoints(), Parallel());
+  EXPECT_FALSE(slnormals::hasInconsistentEdge(p, vc, Parallel()));
+  EXPECT_EQ(slnormals::orientPolygons(p, m.xyz.data(), vc, true), 4);
+  std::vector<float> n(12);
+  slnormals::computeUnitFaceNormals(p, m.xyz.data(), n.data(), Parallel());
+  expectUnit(&n[0], 0, 0, -1);
+  expectUnit(&n[3], 0, -1, 0);
+  expectUnit(&n[6], -1, 0, 0);
+  expectUnit(&n[9], 1, 1, 1);
+}
+
+TEST(GeometryCore, WeldingMapsCoincidentPointsToTheFirst)
+{
+  const std::vector<float> xyz = { 0, 0, 0, 1, 0, 0, 0, 0, 0, 1, 0, 0, 2, 0, 0, 1, 0, 0 };
+  std::vector<int64_t> canonical;
+  EXPECT_EQ(slnormals::weldCoincidentPoints(xyz.data(), 6, canonical), 3);
+  EXPECT_EQ(canonical, (std::vector<int64_t>{ 0, 1, 0, 1, 4, 1 }));
+}
+
+TEST(GeometryCore, MirrorSeamPointsAreSplitWithBothFrames)
+{
+  // Two triangles in z = 0 sharing the edge 0-2 (the y axis); the texture
+  // is mirrored across it: u = x on the right one, u = -x on the left one.
+  // Right: tangent +x, w = +1; left: d(u) along +x is -1, so the tangent is
+  // -x with w = -1. Points 0 and 2 carry both and get a copy each.
+  Mesh m;
+  m.xyz = { 0, 0, 0, 1, 0, 0, 0, 1, 0, -1, 0, 0 };
+  m.add({ 0, 1, 2 });
+  m.add({ 0, 2, 3 });
+  const std::vector<glm::dvec3> pos = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { -1, 0, 0 } };
+  const std::vector<glm::dvec2> uv = { { 0, 0 }, { 1, 0 }, { 0, 1 }, { 1, 0 } };
+  const std::vector<glm::dvec3> nrm(4, glm::dvec3(0, 0, 1));
+  Polygons<int64_t> p = m.polygons();
+  const slnormals::SeamTangents t = slnormals::tangentFramesWithSeams(p, 4, pos, uv, nrm, Parallel());
+  EXPECT_EQ(t.numSplitPoints, 2);
+  EXPECT_EQ(t.source, (std::vector<int64_t>{ 0, 1, 2, 3, 0, 2 }));
+  EXPECT_EQ(m.connectivity, (std::vector<int64_t>{ 0, 1, 2, 4, 5, 3 }));
+  const std::vector<float> expected = {
+    1, 0, 0, 1,   // point 0, right side
+    1, 0, 0, 1,   // point 1
+    1, 0, 0, 1,   // point 2, right side
+    -1, 0, 0, -1, // point 3
+    -1, 0, 0, -1, // copy of point 0, left side
+    -1, 0, 0, -1, // copy of point 2, left side
+  };
+  ASSERT_EQ(t.tangents.size(), expected.size());
+  for (size_t i = 0; i < expected.size(); ++i)
+  {
+    EXPECT_NEAR(t.tangents[i], expected[i], 1e-6) << "component " << i;
+  }
+}
