@@ -1,15 +1,18 @@
 // The VTK-free geometry core against values worked out by hand: face
 // normals, the four corner weightings of vertex normals, orientation repair,
-// point welding and tangent frames across a mirror seam, on meshes small enough to check on paper.
+// point welding, tangent frames across a mirror seam, and the composed
+// computation of slPolyDataNormals, on meshes small enough to check on paper.
 #include "shadelab/slFaceNormalsCore.h"
 #include "shadelab/slOrientationCore.h"
 #include "shadelab/slPointWeldCore.h"
+#include "shadelab/slPolygonNormalsCore.h"
 #include "shadelab/slTangentSeamsCore.h"
 #include "shadelab/slVertexCorners.h"
 #include "shadelab/slVertexNormalsCore.h"
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -196,5 +199,127 @@ TEST(GeometryCore, MirrorSeamPointsAreSplitWithBothFrames)
   for (size_t i = 0; i < expected.size(); ++i)
   {
     EXPECT_NEAR(t.tangents[i], expected[i], 1e-6) << "component " << i;
+  }
+}
+
+namespace
+{
+/// The unit cube as 12 triangles, each face's normal pointing out.
+Mesh cube()
+{
+  Mesh m;
+  m.xyz = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1 };
+  for (auto q : std::vector<std::array<int64_t, 4>>{ { 0, 3, 2, 1 }, { 4, 5, 6, 7 }, { 0, 1, 5, 4 },
+         { 2, 3, 7, 6 }, { 1, 2, 6, 5 }, { 0, 4, 7, 3 } })
+  {
+    m.add({ q[0], q[1], q[2] });
+    m.add({ q[0], q[2], q[3] });
+  }
+  return m;
+}
+
+/// computePolygonNormals() with its callbacks on plain vectors.
+struct Computed
+{
+  std::vector<float> normals;
+  std::vector<int32_t> splitConnectivity;
+  Mesh copy;
+  int copies = 0;
+  slnormals::PolygonNormals<int64_t> result;
+
+  Computed(const slnormals::PolygonNormalsSettings& s, Mesh& m)
+  {
+    this->result.allocateNormals = [&](int64_t n) {
+      this->normals.assign(static_cast<size_t>(3 * n), -7.0f);
+      return this->normals.data();
+    };
+    this->result.allocateSplitConnectivity = [&](int64_t n) {
+      this->splitConnectivity.assign(static_cast<size_t>(n), -1);
+      return this->splitConnectivity.data();
+    };
+    this->result.copyPolygons = [&] {
+      ++this->copies;
+      this->copy = m;
+      return this->copy.polygons();
+    };
+    slnormals::computePolygonNormals(s, m.polygons(), false, m.xyz.data(), m.numPoints(), Parallel(), this->result);
+  }
+};
+} // namespace
+
+TEST(GeometryCore, CubeSplitsIntoThreePointsPerCornerWithFaceNormals)
+{
+  // Every cube edge is 90 degrees, sharper than 30: each corner becomes one
+  // point per face around it (8 x 3 = 24), each with its face's normal, and
+  // no polygon needs reversing.
+  Mesh m = cube();
+  slnormals::PolygonNormalsSettings s;
+  s.featureAngleDegrees = 30;
+  const Computed c(s, m);
+  EXPECT_EQ(c.result.flipped, 0);
+  EXPECT_EQ(c.copies, 0);
+  ASSERT_EQ(c.result.source.size(), 24u);
+  ASSERT_EQ(c.result.pointMap.size(), 8u);
+  ASSERT_EQ(c.splitConnectivity.size(), 36u);
+  for (int64_t f = 0; f < 12; ++f)
+  {
+    // The face normal of triangle f, from the cube's own corners.
+    const double* a = &m.xyz[static_cast<size_t>(3 * m.connectivity[static_cast<size_t>(3 * f)])];
+    const double* b = &m.xyz[static_cast<size_t>(3 * m.connectivity[static_cast<size_t>(3 * f + 1)])];
+    const double* d = &m.xyz[static_cast<size_t>(3 * m.connectivity[static_cast<size_t>(3 * f + 2)])];
+    const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] }, v[3] = { d[0] - a[0], d[1] - a[1], d[2] - a[2] };
+    const double n[3] = { u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0] };
+    for (int k = 0; k < 3; ++k)
+    {
+      const int32_t out = c.splitConnectivity[static_cast<size_t>(3 * f + k)];
+      ASSERT_GE(out, 0);
+      ASSERT_LT(out, 24);
+      // The split point stands where its input point is, with the face's normal.
+      EXPECT_EQ(c.result.source[static_cast<size_t>(out)], m.connectivity[static_cast<size_t>(3 * f + k)]);
+      expectUnit(&c.normals[static_cast<size_t>(3 * out)], n[0], n[1], n[2]);
+    }
+  }
+}
+
+TEST(GeometryCore, ASmoothCubeKeepsItsPointsWithDiagonalNormals)
+{
+  // Without splitting, angle weighting gives each corner (1,1,1)/sqrt(3)
+  // pointing away from the centre: each face meets a corner at 90 degrees
+  // in total, whatever its triangulation.
+  Mesh m = cube();
+  slnormals::PolygonNormalsSettings s;
+  s.split = false;
+  const Computed c(s, m);
+  EXPECT_TRUE(c.result.source.empty());
+  ASSERT_EQ(c.normals.size(), 24u);
+  for (int64_t p = 0; p < 8; ++p)
+  {
+    const double* x = &m.xyz[static_cast<size_t>(3 * p)];
+    expectUnit(&c.normals[static_cast<size_t>(3 * p)], x[0] - 0.5, x[1] - 0.5, x[2] - 0.5);
+  }
+}
+
+TEST(GeometryCore, InwardSurfaceIsTurnedOutInACopyOfThePolygons)
+{
+  // The cube with every triangle listed backwards: AutoOrient reverses all
+  // 12 in a copy (asked for once), leaving the caller's polygons as given.
+  Mesh m = cube();
+  for (size_t f = 0; f < 12; ++f)
+  {
+    std::swap(m.connectivity[3 * f + 1], m.connectivity[3 * f + 2]);
+  }
+  const std::vector<int64_t> given = m.connectivity;
+  slnormals::PolygonNormalsSettings s;
+  s.split = false;
+  s.outward = true;
+  const Computed c(s, m);
+  EXPECT_EQ(c.result.flipped, 12);
+  EXPECT_EQ(c.copies, 1);
+  EXPECT_EQ(m.connectivity, given);
+  EXPECT_EQ(c.result.polygons.connectivity, c.copy.connectivity.data());
+  for (int64_t p = 0; p < 8; ++p)
+  {
+    const double* x = &m.xyz[static_cast<size_t>(3 * p)];
+    expectUnit(&c.normals[static_cast<size_t>(3 * p)], x[0] - 0.5, x[1] - 0.5, x[2] - 0.5);
   }
 }
