@@ -24,7 +24,8 @@ import sys
 import tempfile
 import time
 
-import machine
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+import bench_common  # noqa: E402  (bench/common)
 
 SCRIPT = """import sys
 {imports}
@@ -50,27 +51,18 @@ JOBS = {  # subcommand: (imports, filter, formats) of the script that does the s
 def sphere(folder, millions, formats):
     """A sphere of about @millions million triangles with point normals,
     written by VTK's writers in each of @formats; returns its triangles."""
-    from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
-    from vtkmodules.vtkFiltersSources import vtkSphereSource
     from vtkmodules.vtkIOGeometry import vtkOBJWriter
     from vtkmodules.vtkIOPLY import vtkPLYWriter
     from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
-    resolution = int(round((millions * 1e6 / 2) ** 0.5))
-    source = vtkSphereSource()
-    source.SetThetaResolution(resolution)
-    source.SetPhiResolution(resolution + 2)
-    normals = vtkPolyDataNormals()
-    normals.SetInputConnection(source.GetOutputPort())
-    normals.SplittingOff()
-    normals.Update()
+    mesh = bench_common.sphere_with_normals(millions * 1e6)
     for ext in formats:
         writer = {"vtp": vtkXMLPolyDataWriter, "ply": vtkPLYWriter, "obj": vtkOBJWriter}[ext]()
         if ext == "ply":
             writer.SetFileTypeToBinary()
-        writer.SetInputData(normals.GetOutput())
+        writer.SetInputData(mesh)
         writer.SetFileName(os.path.join(folder, "in." + ext))
         writer.Write()
-    return normals.GetOutput().GetNumberOfCells()
+    return mesh.GetNumberOfCells()
 
 
 def timed(command):
@@ -89,10 +81,10 @@ def main():
     parser.add_argument("--triangles", type=float, nargs="+", default=[2, 8], help="sizes in millions (default 2 8)")
     parser.add_argument("--formats", nargs="+", default=list(FORMATS), choices=list(FORMATS),
                         help="formats in and out (default: all)")
-    machine.add_arguments(parser, runs=5)
+    bench_common.add_arguments(parser, runs=5)
     args = parser.parse_args()
-    machine.apply_threads(args)
-    machine.print_machine(args)
+    bench_common.apply_threads(args)
+    bench_common.print_machine(args, args.threads)
     print("%d runs each, shadelab and the script interleaved\n" % args.runs)
     print("| job | format | triangles | shadelab | VTK script | ratio | output: shadelab / script |")
     print("|---|---|---|---|---|---|---|", flush=True)

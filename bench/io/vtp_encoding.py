@@ -15,9 +15,11 @@ import argparse
 import os
 import statistics
 import tempfile
+import sys
 import time
 
-import machine
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+import bench_common  # noqa: E402  (bench/common)
 
 # name, a writer for it
 ENCODINGS = [
@@ -43,9 +45,9 @@ def shadelab_writer(compression):
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--resolution", type=int, default=1000)
-    machine.add_arguments(parser, runs=5)
+    bench_common.add_arguments(parser, runs=5)
     args = parser.parse_args()
-    machine.apply_threads(args)
+    bench_common.apply_threads(args)
     from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
     from vtkmodules.vtkFiltersSources import vtkSphereSource
     from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
@@ -57,7 +59,7 @@ def main():
     normals.SplittingOff()
     normals.Update()
     mesh = normals.GetOutput()
-    machine.print_machine(args)
+    bench_common.print_machine(args, args.threads)
     print("%d triangles, %d runs each\n" % (mesh.GetNumberOfCells(), args.runs))
     print("| encoding | write: median (range) | read: median (range) | size |")
     print("|---|---|---|---|")

@@ -20,6 +20,8 @@ import sys
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "common"))
+import bench_common  # noqa: E402  (bench/common)
 
 
 def arguments():
@@ -31,6 +33,7 @@ def arguments():
     parser.add_argument("--threads", type=positive, help="llvmpipe threads, LP_NUM_THREADS (default one per core)")
     parser.add_argument("--triangles", type=positive, default=2000000, help="about this many (default 2000000)")
     parser.add_argument("--size", type=positive, default=1024, help="window width and height (default 1024)")
+    bench_common.add_machine_argument(parser)
     return parser.parse_args()
 
 
@@ -42,34 +45,6 @@ def _positive(parser, text):
     if value < 1:
         parser.error(f"'{text}' is not a whole number of at least 1")
     return value
-
-
-def machine():
-    """CPU model, cores and load average, as /proc tells them."""
-    model = "unknown"
-    with open("/proc/cpuinfo") as cpuinfo:
-        for line in cpuinfo:
-            if line.startswith("model name"):
-                model = line.split(":", 1)[1].strip()
-                break
-    with open("/proc/meminfo") as meminfo:
-        memory = int(meminfo.readline().split()[1]) / 2**20
-    with open("/proc/loadavg") as loadavg:
-        load = " ".join(loadavg.read().split()[:3])
-    return f"{model}, {os.cpu_count()} logical cores, {memory:.1f} GiB; load average {load}"
-
-
-def bandwidth():
-    """GB/s of the best of 5 copies of 256 MiB (bytes read + written), one thread."""
-    import numpy
-    source = numpy.ones(2**28, dtype=numpy.uint8)
-    target = numpy.zeros_like(source)
-    best = 0.0
-    for _ in range(5):
-        start = time.perf_counter()
-        numpy.copyto(target, source)
-        best = max(best, 2 * source.nbytes / (time.perf_counter() - start) / 1e9)
-    return best
 
 
 def lights(vtk):
@@ -105,19 +80,9 @@ def main():
         sys.path.insert(0, os.path.join(HERE, "..", "..", "build", "lib", "python3", "dist-packages"))
     import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL render window)
     import vtkmodules.vtkRenderingCore as vtk
-    from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
-    from vtkmodules.vtkFiltersSources import vtkSphereSource
     import shadelab
 
-    resolution = max(3, round((args.triangles / 2) ** 0.5))
-    sphere = vtkSphereSource()
-    sphere.SetThetaResolution(resolution)
-    sphere.SetPhiResolution(resolution + 2)
-    normals = vtkPolyDataNormals()
-    normals.SetInputConnection(sphere.GetOutputPort())
-    normals.SplittingOff()
-    normals.Update()
-    mesh = normals.GetOutput()
+    mesh = bench_common.sphere_with_normals(args.triangles)
 
     windows, actors = [], []
     for use_pass in (False, True):
@@ -166,8 +131,7 @@ def main():
         frame(1)
     gl = next((line.split(":", 1)[1].strip() for line in windows[0].ReportCapabilities().splitlines()
                if line.startswith("OpenGL renderer string")), "unknown")
-    print(f"machine: {machine()}")
-    print(f"memory bandwidth (256 MiB copy, read + write, best of 5): {bandwidth():.1f} GB/s on 1 thread")
+    bench_common.print_machine(args)
     print(f"OpenGL: {gl}; llvmpipe threads: {os.environ.get('LP_NUM_THREADS', 'one per core (LP_NUM_THREADS unset)')}")
     print(f"mesh: {mesh.GetNumberOfPolys()} triangles, window {args.size} x {args.size}, 3 vtkLights "
           f"(directional, point, spot); {args.runs} runs of {args.frames} frames each, interleaved\n")
