@@ -18,7 +18,25 @@ struct Counts
   long long v = 0, vt = 0, vn = 0;
 };
 
-/// Reads one logical line: a trailing backslash continues it, as in vtkOBJReader.
+/// Whether vtkOBJReader reads the line after @p part as part of the logical
+/// line that starts with @p head: only an f, l or p line continues, when its
+/// last token is a lone backslash right before the newline ("\\\n"; not
+/// "\\\r\n"). A backslash ending any other line, a comment included, is
+/// text, and the next line is a line of its own.
+bool continues(const std::string& head, const std::string& part)
+{
+  std::istringstream words(head);
+  std::string command;
+  words >> command;
+  if (command != "f" && command != "l" && command != "p")
+  {
+    return false;
+  }
+  const size_t n = part.size();
+  return n >= 1 && part[n - 1] == '\\' && (n == 1 || part[n - 2] == ' ' || part[n - 2] == '\t');
+}
+
+/// Reads one logical line as vtkOBJReader does (see continues()).
 bool nextLine(std::istream& in, std::string& line, long& lineNumber)
 {
   line.clear();
@@ -28,11 +46,12 @@ bool nextLine(std::istream& in, std::string& line, long& lineNumber)
   {
     ++lineNumber;
     any = true;
-    if (!part.empty() && part.back() == '\r')
+    const bool crlf = !part.empty() && part.back() == '\r';
+    if (crlf)
     {
       part.pop_back();
     }
-    if (!part.empty() && part.back() == '\\')
+    if (!crlf && continues(line.empty() ? part : line, part))
     {
       part.back() = ' ';
       line += part;
