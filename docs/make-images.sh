@@ -31,6 +31,8 @@ run reference "$spot" --scene "$scene" -o "$tmp/reference.vtp" --image "$out/fie
 run compare "$spot" --scene "$scene" --diff --size 300x225 -o "$out/compare-frequencies.png"
 run lobe "$spot" --scene "$scene" --points 24 --scale 0.12 -o "$out/lobes-on-spot.png"
 run lobe --models phong,blinn-phong,phong-normalized,blinn-phong-normalized --incidence 50 -o "$out/lobes-four-models.png"
+run lobe --models phong-normalized --shininess 50 --brdf data/brdf/blinn-phong-normalized.brdf --param kd=0 --param ks=1 \
+  --brdf data/brdf/ward-anisotropic.brdf --incidence 40 -o "$out/lobes-brdf-files.png"
 run render "$spot" --scene data/scenes/glow.json -o "$out/tutorial-glow.png"
 run render "$spot" --scene data/scenes/glow.json --component emission -o "$out/tutorial-glow-emission.png"
 rm -rf "$tmp"

@@ -7,7 +7,7 @@
 #
 #   bash scripts/fuzz.sh [SECONDS_PER_TARGET [TARGET ...]]
 #
-# SECONDS_PER_TARGET defaults to 15 (14 targets: about 4 minutes of fuzzing
+# SECONDS_PER_TARGET defaults to 15 (15 targets: about 4 minutes of fuzzing
 # after the build). Every target runs unless some are named.
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -52,6 +52,7 @@ CommandLine::CommandLine(const std::vector<std::string>& args, const std::vector
         throw UsageError("option --" + spec->name + " takes no value");
       }
       this->Values[spec->name] = "1";
+      this->Ordered.emplace_back(spec->name, "1");
       continue;
     }
     if (!hasInlineValue)
@@ -73,6 +74,7 @@ CommandLine::CommandLine(const std::vector<std::string>& args, const std::vector
       throw UsageError("option --" + spec->name + ": unknown value \"" + inlineValue + "\" (" + names + ")");
     }
     this->Values[spec->name] = inlineValue;
+    this->Ordered.emplace_back(spec->name, inlineValue);
   }
 }
 

@@ -13,6 +13,7 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace shadelab
@@ -54,6 +55,9 @@ public:
   /// the option otherwise ("0.5" is not taken as 0).
   int getIndex(const std::string& name, int fallback, int lo, int hi) const;
   const std::vector<std::string>& positional() const { return this->Positional; }
+  /// Every option given, in command-line order, as (name, value): a repeated
+  /// option appears each time (get() gives its last value); a flag's value is "1".
+  const std::vector<std::pair<std::string, std::string>>& ordered() const { return this->Ordered; }
 
   /// The single MESH argument of a job that also needs -o/--output. Throws
   /// UsageError ("expected one MESH argument, got N", "missing -o/--output FILE").
@@ -70,6 +74,7 @@ public:
 private:
   std::map<std::string, std::string> Values;
   std::vector<std::string> Positional;
+  std::vector<std::pair<std::string, std::string>> Ordered;
 };
 
 } // namespace app

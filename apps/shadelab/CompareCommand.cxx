@@ -50,6 +50,10 @@ int runCompare(const std::vector<std::string>& args)
   const double amplify = cl.getNumber("amplify", 8.0, 1.0, 1000.0);
   vtkSmartPointer<slScene> scene = loadScene(cl.get("scene"));
   vtkSmartPointer<vtkPolyData> mesh = loadMesh(meshPath);
+  if (!cl.has("models")) // the frequency panels draw the scene's model
+  {
+    checkTangentsFor(scene, mesh, meshPath);
+  }
 
   vtkNew<slComparisonRenderer> comparison;
   comparison->SetScene(scene);

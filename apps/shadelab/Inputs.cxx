@@ -1,6 +1,7 @@
 #include "Inputs.h"
 
 #include "CommandLine.h"
+#include "MaterialOptions.h"
 
 #include "shadelab/DefaultScene.h"
 #include "shadelab/Scene.h"
@@ -8,6 +9,7 @@
 #include "slMeshReader.h"
 #include "slMeshWriter.h"
 #include "slScene.h"
+#include "slTangentsCheck.h"
 #include "slUpdateOrThrow.h"
 
 #include <vtkImageData.h>
@@ -87,6 +89,22 @@ void applySceneOverrides(const CommandLine& cl, slScene* scene)
   if (cl.has("frequency") && !scene->SetFrequencyName(cl.get("frequency").c_str()))
   {
     throw UsageError("--frequency: \"" + cl.get("frequency") + "\" is not one of flat, gouraud, phong");
+  }
+  Scene values = scene->GetScene();
+  applyMaterialOptions(cl, values.material);
+  scene->SetScene(values);
+}
+
+void checkTangentsFor(slScene* scene, vtkPolyData* mesh, const std::string& path)
+{
+  if (!scene->GetScene().brdf.file.empty())
+  {
+    return; // the .brdf file's BRDF is drawn, not the model
+  }
+  const std::string problem = slTangentsProblem(mesh, static_cast<int>(scene->GetScene().model));
+  if (!problem.empty())
+  {
+    throw Error(path + ": " + problem);
   }
 }
 

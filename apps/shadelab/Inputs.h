@@ -40,8 +40,16 @@ std::string modelOptionHelp();
 /// valid names otherwise.
 ShadingModel parseModelOption(const std::string& option, const std::string& value);
 
-/// Applies --model and --frequency. Throws UsageError for unknown names.
+/// Applies --model, --frequency and the material numbers (MaterialOptions.h)
+/// given on @p cl. Throws UsageError for unknown names and values out of range.
 void applySceneOverrides(const CommandLine& cl, slScene* scene);
+
+/// Before drawing @p mesh (read from @p path) with @p scene's model through
+/// the lighting pass, which would draw an anisotropic model in a made-up
+/// frame: throws shadelab::Error ("PATH: the ward model is anisotropic and
+/// needs tangents ...") if the model needs tangents @p mesh does not have
+/// (a scene with a .brdf file draws that BRDF instead: no check).
+void checkTangentsFor(slScene* scene, vtkPolyData* mesh, const std::string& path);
 
 /// Parses "WxH" (16..8192 each). Throws UsageError.
 void parseSize(const std::string& text, int& width, int& height);

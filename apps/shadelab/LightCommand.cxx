@@ -4,6 +4,7 @@
 #include "Inputs.h"
 #include "MeshJobs.h"
 #include "LightingOptions.h"
+#include "MaterialOptions.h"
 #include "OutputFormats.h"
 #include "slScene.h"
 #include "slUpdateOrThrow.h"
@@ -26,7 +27,7 @@ namespace
 {
 int runLight(const std::vector<std::string>& args)
 {
-  std::vector<OptionSpec> specs = litOptions();
+  std::vector<OptionSpec> specs = withMaterialOptions(litOptions(), "default: the scene's");
   specs.push_back({ "per-light", "", "", "also write Radiance_<i> for every light i" });
   specs.push_back({ "diffuse-array", "", "NAME", "an RGB(A) point array of MESH: a base colour multiplying k_a and k_d (as in render)" });
   specs.push_back({ "diffuse-texture", "", "FILE", "an image: a base colour multiplying k_a and k_d at the texture coordinates" });

@@ -1,13 +1,18 @@
-// shadelab lobe: a BRDF lobe and its polar slice, lobes on a mesh, or the albedo table.
+// shadelab lobe: a BRDF lobe and its polar slice, lobes on a mesh, or the
+// albedo table; built-in models and BRDF Explorer .brdf files.
+#include "BrdfOptions.h"
 #include "CommandLine.h"
 #include "Commands.h"
 #include "Inputs.h"
 #include "LightingOptions.h"
+#include "MaterialOptions.h"
 #include "OutputFormats.h"
 
 #include "shadelab/AtomicFile.h"
+#include "shadelab/BrdfFile.h"
 #include "shadelab/Scene.h"
 #include "slAlbedoTable.h"
+#include "slBRDFFileEvaluator.h"
 #include "slBRDFLobeSource.h"
 #include "slLobeImageRenderer.h"
 #include "slLobesOnMesh.h"
@@ -16,6 +21,7 @@
 #include "slUpdateOrThrow.h"
 
 #include <vtkAbstractArray.h>
+#include <vtkDoubleArray.h>
 #include <vtkIdList.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
@@ -23,6 +29,7 @@
 
 #include <iostream>
 #include <cctype>
+#include <memory>
 #include <sstream>
 
 namespace shadelab
@@ -37,10 +44,11 @@ int modelNumber(const CommandLine& cl)
   return static_cast<int>(cl.has("model") ? parseModelOption("model", cl.get("model")) : ShadingModel::Phong);
 }
 
-/// --shininess, --incidence, --kd, --ks and --cosine onto a lobe source.
+/// The material numbers, --incidence, --kd, --ks and --cosine onto a lobe
+/// source; the numbers not given keep the source's defaults.
 void applyLobeOptions(const CommandLine& cl, slBRDFLobeSource* lobe)
 {
-  lobe->SetShininess(cl.getNumber("shininess", 20.0, 0.0, 1e4));
+  applyMaterialOptionsByKey(cl, lobe);
   lobe->SetIncidenceAngle(cl.getNumber("incidence", 45.0, 0.0, 90.0));
   lobe->SetDiffuseWeight(cl.getNumber("kd", 0.0, 0.0, 1e3));
   lobe->SetSpecularWeight(cl.getNumber("ks", 1.0, 0.0, 1e3));
@@ -68,10 +76,33 @@ void writeTable(vtkTable* table, const std::string& path)
   writeFileAtomically(path, csv.str());
 }
 
+/// Reads each --brdf file with its --param values and compiles its shader:
+/// a bad file or value is an error before any output is made.
+std::vector<std::unique_ptr<slBRDFFileEvaluator>> loadBrdfFiles(const std::vector<BrdfChoice>& choices)
+{
+  std::vector<std::unique_ptr<slBRDFFileEvaluator>> evaluators;
+  for (const BrdfChoice& choice : choices)
+  {
+    const BrdfFile file = readBrdfFile(choice.path);
+    const std::vector<glm::vec3> values = brdfParameterValues(file, choice.overrides);
+    evaluators.emplace_back(new slBRDFFileEvaluator(file, values));
+  }
+  return evaluators;
+}
+
+/// Prints each file's directional albedo at @p degrees of incidence.
+void printAlbedos(const std::vector<std::string>& names, const std::vector<double>& albedos, double degrees)
+{
+  for (size_t i = 0; i < names.size() && i < albedos.size(); ++i)
+  {
+    std::cout << "albedo of " << names[i] << " at " << degrees << " degrees: " << albedos[i] << "\n";
+  }
+}
+
 std::vector<OptionSpec> lobeOptions()
 {
-  std::vector<OptionSpec> specs = litOptions();
-  specs.push_back({ "shininess", "n", "N", "shininess n (single lobe and albedo table; default 20)" });
+  std::vector<OptionSpec> specs =
+    withMaterialOptions(litOptions(), "default: the scene's with MESH, else shininess 20 and the default scene's others");
   specs.push_back({ "incidence", "", "DEG", "angle of incidence from the normal (single lobe; default 45)" });
   specs.push_back({ "kd", "", "X", "k_d (single lobe; default 0)" });
   specs.push_back({ "ks", "", "X", "k_s (single lobe; default 1)" });
@@ -82,6 +113,10 @@ std::vector<OptionSpec> lobeOptions()
   specs.push_back({ "scale", "", "X", "lobes on MESH: largest lobe / bounding-box diagonal (default 0.1)" });
   specs.push_back({ "albedo-table", "", "", "write the directional albedo table of every model (CSV)" });
   specs.push_back({ "models", "", "A,B,...", "single lobe as an image: overlay these models (default: --model)" });
+  for (const OptionSpec& spec : brdfOptionSpecs())
+  {
+    specs.push_back(spec);
+  }
   return specs;
 }
 } // namespace
@@ -94,13 +129,16 @@ int runLobe(const std::vector<std::string>& args)
   const CommandLine cl(args, specs);
   if (cl.has("help"))
   {
-    std::cout << "usage: shadelab lobe [--model M] [--incidence DEG] -o LOBE.vtp [--slice SLICE.vtp]\n"
-                 "       shadelab lobe [--models A,B,...] [--incidence DEG] -o LOBE.png   (3D lobe, polar plot, albedo)\n"
+    std::cout << "usage: shadelab lobe [--model M | --brdf F.brdf [--param N=V ...]] [--incidence DEG] -o LOBE.vtp\n"
+                 "           [--slice SLICE.vtp]\n"
+                 "       shadelab lobe [--models A,B,...] [--brdf F.brdf [--param N=V ...] ...] [--incidence DEG]\n"
+                 "           -o LOBE.png   (3D lobes, polar plot, albedo; at most six BRDFs)\n"
                  "       shadelab lobe MESH [--scene S.json] [--points N] -o LOBES.vtp|LOBES.png\n"
-                 "       shadelab lobe --albedo-table [--shininess N] -o TABLE.csv\n\n"
+                 "       shadelab lobe --albedo-table [--shininess N] [--roughness X ...] [--brdf F.brdf ...] -o TABLE.csv\n\n"
                  "A BRDF lobe r(w_o) = f_r(w_i, w_o) (optionally x cos theta_o) around +z, lobes on a\n"
                  "mesh in each point's normal frame lit by the scene's light, or the directional albedo\n"
-                 "of every model against the angle of incidence.\n\noptions:\n"
+                 "of every model against the angle of incidence. A BRDF Explorer .brdf file's BRDF is\n"
+                 "evaluated on the GPU; its albedo is printed.\n\noptions:\n"
               << CommandLine::describe(specs);
     return 0;
   }
@@ -113,35 +151,101 @@ int runLobe(const std::vector<std::string>& args)
   const OutputKind kind = cl.has("albedo-table") ? checkOutputName(output, { OutputKind::Table })
                                                  : checkOutputName(output, { OutputKind::Mesh, OutputKind::Image });
   checkOutputOption(cl, "slice", { OutputKind::Mesh });
+  const std::vector<BrdfChoice> brdfs = brdfChoices(cl);
+  std::vector<std::string> brdfNames;
+  for (const BrdfChoice& choice : brdfs)
+  {
+    brdfNames.push_back(brdfDisplayName(choice.path));
+  }
+  const bool imageOfLobes = cl.positional().empty() && kind == OutputKind::Image && !cl.has("albedo-table");
+  if (!cl.positional().empty() && !brdfs.empty())
+  {
+    throw UsageError("--brdf: lobes on a mesh take the scene's model; a .brdf file's lobe is drawn alone");
+  }
+  const bool lobeMesh = cl.positional().empty() && !cl.has("albedo-table") && !imageOfLobes;
+  if (lobeMesh && brdfs.size() > 1)
+  {
+    throw UsageError("--brdf: a lobe mesh takes one .brdf file; an image (-o LOBE.png) overlays several");
+  }
+  // Every file is read and compiled before anything is written.
+  std::vector<std::unique_ptr<slBRDFFileEvaluator>> evaluators = loadBrdfFiles(brdfs);
   if (cl.has("albedo-table"))
   {
     vtkNew<slAlbedoTable> table;
-    table->SetShininess(cl.getNumber("shininess", 20.0, 0.0, 1e4));
+    applyMaterialOptionsByKey(cl, table.GetPointer());
     slUpdateOrThrow(table);
-    writeTable(table->GetOutput(), output);
+    vtkTable* out = table->GetOutput();
+    vtkAbstractArray* degrees = out->GetColumnByName("IncidenceDegrees");
+    for (size_t i = 0; i < evaluators.size(); ++i)
+    {
+      // The same file twice (other --param values): numbered columns, as a
+      // table's column of an existing name would replace it.
+      std::string name = brdfNames[i];
+      for (int copy = 2; out->GetColumnByName(name.c_str()); ++copy)
+      {
+        name = brdfNames[i] + " (" + std::to_string(copy) + ")";
+      }
+      vtkNew<vtkDoubleArray> column;
+      column->SetName(name.c_str());
+      for (vtkIdType row = 0; row < degrees->GetNumberOfTuples(); ++row)
+      {
+        column->InsertNextValue(evaluators[i]->AlbedoAtIncidence(degrees->GetVariantValue(row).ToDouble()));
+      }
+      out->AddColumn(column);
+    }
+    writeTable(out, output);
   }
-  else if (cl.positional().empty() && kind == OutputKind::Image)
+  else if (imageOfLobes)
   {
     // One image: the 3D lobes, the polar slice and the albedo curves.
     vtkNew<slLobeImageRenderer> image;
-    std::istringstream names(cl.get("models", modelName(static_cast<ShadingModel>(modelNumber(cl)))));
-    for (std::string name; std::getline(names, name, ',');)
+    if (cl.has("models") || cl.has("model") || brdfs.empty())
     {
-      if (!image->AddModel(modelName(parseModelOption("models", name))))
+      std::istringstream names(cl.get("models", modelName(static_cast<ShadingModel>(modelNumber(cl)))));
+      for (std::string name; std::getline(names, name, ',');)
       {
-        throw UsageError("--models: at most six models can be overlaid");
+        if (!image->AddModel(modelName(parseModelOption("models", name))))
+        {
+          throw UsageError("--models: at most six BRDFs (models and .brdf files) can be overlaid");
+        }
+      }
+    }
+    for (const BrdfChoice& choice : brdfs)
+    {
+      if (!image->AddBRDFFile(choice.path.c_str()))
+      {
+        throw UsageError("--brdf: at most six BRDFs (models and .brdf files) can be overlaid");
+      }
+      for (const std::string& o : choice.overrides)
+      {
+        image->AddBRDFFileParameter(o.c_str());
       }
     }
     applyLobeOptions(cl, image->GetLobeParameters());
     slCallOrThrow(image, [&] { return image->Render(); }, output + ": ");
     writeImage(image->GetImage(), output);
+    std::vector<double> albedos;
+    for (int i = 0; i < image->GetNumberOfBRDFFiles(); ++i)
+    {
+      albedos.push_back(image->GetBRDFFileAlbedo(i));
+    }
+    printAlbedos(brdfNames, albedos, image->GetLobeParameters()->GetIncidenceAngle());
   }
   else if (cl.positional().empty())
   {
     vtkNew<slBRDFLobeSource> lobe;
     lobe->SetModel(modelNumber(cl));
     applyLobeOptions(cl, lobe);
+    if (!evaluators.empty())
+    {
+      evaluators[0]->SetLobeValues(lobe);
+    }
     slUpdateOrThrow(lobe);
+    if (!evaluators.empty())
+    {
+      printAlbedos(brdfNames, { evaluators[0]->AlbedoAtIncidence(lobe->GetIncidenceAngle()) },
+        lobe->GetIncidenceAngle());
+    }
     writeMesh(lobe->GetOutput(0), output, cl);
     if (cl.has("slice"))
     {

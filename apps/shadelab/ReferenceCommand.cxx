@@ -3,6 +3,7 @@
 #include "Commands.h"
 #include "Inputs.h"
 #include "LightingOptions.h"
+#include "MaterialOptions.h"
 #include "OutputFormats.h"
 
 #include "slRadianceReference.h"
@@ -50,7 +51,7 @@ void printSummary(vtkPolyData* out)
 
 int runReference(const std::vector<std::string>& args)
 {
-  std::vector<OptionSpec> specs = litOptions();
+  std::vector<OptionSpec> specs = withMaterialOptions(litOptions(), "default: the scene's");
   specs.push_back({ "envmap", "e", "FILE", "equirectangular HDR environment map (.hdr, .exr)" });
   specs.push_back({ "envmap-scale", "", "X", "multiply the environment's radiance (default 1)" });
   specs.push_back({ "no-lights", "", "", "do not use the scene's lights (environment only)" });

@@ -2,6 +2,7 @@
 #include "CommandLine.h"
 #include "Commands.h"
 #include "Inputs.h"
+#include "MaterialOptions.h"
 #include "OutputFormats.h"
 
 #include "slImageWriter.h"
@@ -10,9 +11,12 @@
 #include "slSceneRenderer.h"
 #include "slUpdateOrThrow.h"
 
+#include "shadelab/BrdfFile.h"
+
 #include <vtkNew.h>
 #include <vtkPolyData.h>
 
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 
@@ -23,6 +27,47 @@ namespace app
 
 namespace
 {
+/// --brdf and --param into the scene: --brdf replaces the scene's .brdf file
+/// (its parameters then start from the file's defaults), --param sets values
+/// on top of the scene's.
+void applyBrdfOptions(const CommandLine& cl, slScene* scene)
+{
+  if (!cl.has("brdf") && !cl.has("param"))
+  {
+    return;
+  }
+  if (cl.has("vtk-lighting"))
+  {
+    throw UsageError("--brdf and --param need ShadeLab's pass: leave out --vtk-lighting");
+  }
+  shadelab::Scene s = scene->GetScene();
+  if (cl.has("brdf"))
+  {
+    if (cl.get("brdf").empty())
+    {
+      throw UsageError("--brdf: needs a .brdf file");
+    }
+    // Relative to the working directory, not to a scene file's folder.
+    s.brdf.file = s.sourceFile.empty() ? cl.get("brdf") : std::filesystem::absolute(cl.get("brdf")).string();
+    s.brdf.parameters.clear();
+  }
+  else if (s.brdf.file.empty())
+  {
+    throw UsageError("--param: needs --brdf FILE (or a scene with a \"brdf\")");
+  }
+  for (const auto& option : cl.ordered())
+  {
+    if (option.first == "param")
+    {
+      s.brdf.parameters.push_back(option.second);
+    }
+  }
+  // Read now, so that a bad file or value fails before anything is rendered.
+  const shadelab::BrdfFile file = shadelab::readBrdfFile(cl.has("brdf") ? s.brdf.file : scene->GetBrdfFilePath());
+  shadelab::brdfParameterValues(file, s.brdf.parameters);
+  scene->SetScene(s);
+}
+
 void applyComponentOptions(const CommandLine& cl, slLightingPass* pass)
 {
   static const char* const names[] = { "total", "ambient", "diffuse", "specular", "emission", "cos" };
@@ -49,7 +94,7 @@ void applyComponentOptions(const CommandLine& cl, slLightingPass* pass)
 
 int runRender(const std::vector<std::string>& args)
 {
-  const std::vector<OptionSpec> specs{
+  const std::vector<OptionSpec> specs = withMaterialOptions({
     { "scene", "s", "FILE", "JSON scene (default: ShadeLab's built-in two-light scene)" },
     { "output", "o", "FILE", outputHelp("image to write", OutputKind::Image) },
     { "size", "", "WxH", "image size in pixels (default: the scene's imageSize)" },
@@ -58,12 +103,14 @@ int runRender(const std::vector<std::string>& args)
     { "component", "", "NAME", "show only: ambient, diffuse, specular, emission or cos (N.L)" },
     { "light", "", "K", "with --component: only light K (0-based; cos uses light 0 by default)" },
     { "false-color", "", "", "with --component: false colour instead of grey/RGB" },
+    { "brdf", "", "FILE", "shade with a BRDF Explorer .brdf file's BRDF instead of the model's (replaces the scene's brdf)" },
+    { "param", "", "NAME=VALUE", "a .brdf parameter's value (float, bool true/false/0/1, colour r,g,b); repeat for more" },
     { "vtk-lighting", "", "", "use VTK's built-in lighting instead of ShadeLab's pass (prints what it lacks)" },
     { "quiet", "q", "", "with --vtk-lighting: do not print what VTK's lighting cannot show" },
     { "help", "h", "", "show this help" },
-  };
+  }, "default: the scene's");
   const CommandLine cl(args, specs);
-  if (cl.printHelpIfAsked("shadelab render MESH [--scene S.json] -o OUT.png",
+  if (cl.printHelpIfAsked("shadelab render MESH [--scene S.json] [--brdf F.brdf [--param NAME=VALUE ...]] -o OUT.png",
         std::string("Renders MESH (") + meshFormatsText() +
           ") offscreen with ShadeLab's lighting pass (the scene's model, lights\n"
           "and shading frequency) and writes the image through OpenImageIO.\n"
@@ -77,6 +124,7 @@ int runRender(const std::vector<std::string>& args)
 
   vtkSmartPointer<slScene> scene = loadScene(cl.get("scene"));
   applySceneOverrides(cl, scene);
+  applyBrdfOptions(cl, scene);
   // As cosine and lobe do: a light the scene does not have is an error, not
   // a background-only image.
   if (cl.has("light") && cl.getIndex("light", 0, 0, slLightingPass::GetMaximumNumberOfLights() - 1) >=
@@ -91,6 +139,10 @@ int runRender(const std::vector<std::string>& args)
     parseSize(cl.get("size"), width, height);
   }
   vtkSmartPointer<vtkPolyData> mesh = loadMesh(meshPath);
+  if (!cl.has("vtk-lighting"))
+  {
+    checkTangentsFor(scene, mesh, meshPath);
+  }
 
   vtkNew<slSceneRenderer> renderer;
   renderer->SetUseShadeLabLighting(!cl.has("vtk-lighting"));

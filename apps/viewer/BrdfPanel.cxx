@@ -10,6 +10,7 @@
 #include "slUpdateOrThrow.h"
 
 #include "shadelab/LightingGLSL.h"
+#include "shadelab/SceneKeys.h"
 
 #include <vtkCamera.h>
 #include <vtkIdList.h>
@@ -23,6 +24,7 @@
 #include <QPixmap>
 #include <QPushButton>
 #include <QSpinBox>
+#include <QStringList>
 #include <QTimer>
 #include <QVBoxLayout>
 
@@ -91,11 +93,14 @@ BrdfPanel::BrdfPanel(ViewerDocument* document, SceneView* view, QWidget* parent)
       this->Pending->start();
     }
   });
-  connect(document, &ViewerDocument::meshChanged, this, [this] {
+  // Tangents may split points at mirror seams: the picked index is stale too.
+  const auto forgetPoint = [this] {
     this->Point = -1;
     this->Info->setText(tr("No point picked."));
     this->Picture->clear();
-  });
+  };
+  connect(document, &ViewerDocument::meshChanged, this, forgetPoint);
+  connect(document, &ViewerDocument::tangentsChanged, this, forgetPoint);
 }
 
 void BrdfPanel::showLobeAt(double x, double y, double z)
@@ -168,17 +173,30 @@ void BrdfPanel::update()
     this->Picture->clear();
     return;
   }
-  this->Info->setText(tr("Point %1: N.L = %2, incidence %3\u00b0, %4, n = %5")
+  // The numbers the model reads, from the material table.
+  QStringList numbers;
+  vtkNew<slLobeImageRenderer> picture;
+  picture->AddModel(modelName(scene.model));
+  slBRDFLobeSource* parameters = picture->GetLobeParameters();
+  for (const SceneKey<SceneMaterial>& key : materialKeys())
+  {
+    if (key.number)
+    {
+      const float value = scene.material.*(key.number);
+      parameters->SetMaterialParameter(key.name, value);
+      if (modelInfo(scene.model).reads & key.materialParameter)
+      {
+        numbers << QString("%1 = %2").arg(QString::fromUtf8(key.name)).arg(value);
+      }
+    }
+  }
+  this->Info->setText(tr("Point %1: N.L = %2, incidence %3\u00b0, %4 %5")
                         .arg(this->Point)
                         .arg(cosTheta, 0, 'f', 3)
                         .arg(this->Incidence, 0, 'f', 1)
                         .arg(modelName(scene.model))
-                        .arg(scene.material.shininess));
+                        .arg(numbers.join(", ")));
 
-  vtkNew<slLobeImageRenderer> picture;
-  picture->AddModel(modelName(scene.model));
-  slBRDFLobeSource* parameters = picture->GetLobeParameters();
-  parameters->SetShininess(scene.material.shininess);
   parameters->SetIncidenceAngle(this->Incidence);
   parameters->SetDiffuseWeight(glsl::slLuminance(scene.material.diffuse));
   parameters->SetSpecularWeight(glsl::slLuminance(scene.material.specular));

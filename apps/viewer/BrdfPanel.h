@@ -5,8 +5,11 @@
  * @brief   The BRDF lobe at a point picked on the mesh: drawn on the mesh in
  *          the point's normal frame (slLobesOnMesh), and as slLobeImageRenderer's
  *          three-part picture (3D lobe, polar plot of the plane of incidence,
- *          albedo against incidence) for the scene's model, shininess and the
- *          incidence angle of the chosen light at that point.
+ *          albedo against incidence) for the scene's model, the material's
+ *          numbers (shininess, roughness, ...) and the incidence angle of the
+ *          chosen light at that point. The picture's frame has the tangent
+ *          in the plane of incidence; the lobe on the mesh uses the mesh's
+ *          own tangents (anisotropic models need them).
  */
 
 #include <vtkType.h>
@@ -38,6 +41,8 @@ public:
   vtkIdType pickedPoint() const { return this->Point; }
   /// The incidence angle in degrees at the picked point (NaN if below the horizon).
   double incidenceDegrees() const { return this->Incidence; }
+  /// What the panel says about the point: its incidence, the model and the numbers it reads.
+  QLabel* infoLabel() const { return this->Info; }
   /// The three-part picture currently shown.
   QLabel* pictureLabel() const { return this->Picture; }
 

@@ -1,5 +1,6 @@
 #include "MainWindow.h"
 
+#include "BrdfFilePanel.h"
 #include "BrdfPanel.h"
 #include "FieldsPanel.h"
 #include "LightPanel.h"
@@ -40,6 +41,11 @@ bool isScene(const QString& path)
   return QFileInfo(path).suffix().compare("json", Qt::CaseInsensitive) == 0;
 }
 
+bool isBrdf(const QString& path)
+{
+  return QFileInfo(path).suffix().compare("brdf", Qt::CaseInsensitive) == 0;
+}
+
 QString meshFilter()
 {
   QStringList patterns;
@@ -47,7 +53,7 @@ QString meshFilter()
   {
     patterns << "*" + ext;
   }
-  return QObject::tr("Meshes (%1);;Scenes (*.json);;All files (*)").arg(patterns.join(' '));
+  return QObject::tr("Meshes (%1);;Scenes (*.json);;BRDF Explorer BRDFs (*.brdf);;All files (*)").arg(patterns.join(' '));
 }
 
 bool fail(const QString& message, QString* error)
@@ -72,10 +78,11 @@ MainWindow::MainWindow(QWidget* parent)
   this->Normals = new NormalsPanel(this->Document, this->View);
   this->Fields = new FieldsPanel(this->Document, this->View);
   this->Brdf = new BrdfPanel(this->Document, this->View);
+  this->BrdfFileEditor = new BrdfFilePanel(this->Document);
 
   const std::pair<QString, QWidget*> panels[] = { { tr("Shading"), this->Shading },
     { tr("Material"), this->Material }, { tr("Lights"), this->Lights }, { tr("Normals"), this->Normals },
-    { tr("Fields"), this->Fields }, { tr("BRDF"), this->Brdf } };
+    { tr("Fields"), this->Fields }, { tr("BRDF"), this->Brdf }, { tr("BRDF file"), this->BrdfFileEditor } };
   QDockWidget* previous = nullptr;
   for (const auto& panel : panels)
   {
@@ -98,6 +105,11 @@ MainWindow::MainWindow(QWidget* parent)
   connect(this->View, &SceneView::problem, this, &MainWindow::showProblem);
   connect(this->Fields, &FieldsPanel::problem, this, &MainWindow::showProblem);
   connect(this->Brdf, &BrdfPanel::problem, this, &MainWindow::showProblem);
+  connect(this->BrdfFileEditor, &BrdfFilePanel::problem, this, &MainWindow::showProblem);
+  connect(this->Shading, &ShadingPanel::problem, this, &MainWindow::showProblem);
+  connect(this->Shading, &ShadingPanel::notice, this, [this](const QString& line) {
+    this->statusBar()->showMessage(line);
+  });
   connect(this->Document, &ViewerDocument::meshChanged, this, &MainWindow::updateTitle);
   connect(this->Document, &ViewerDocument::sceneChanged, this, &MainWindow::updateTitle);
   this->setAcceptDrops(true);
@@ -140,7 +152,9 @@ void MainWindow::buildMenus()
 bool MainWindow::openFile(const QString& path, QString* error)
 {
   QString problem;
-  const bool ok = isScene(path) ? this->Document->openScene(path, problem) : this->Document->openMesh(path, problem);
+  const bool ok = isScene(path) ? this->Document->openScene(path, problem)
+    : isBrdf(path)              ? this->Document->openBrdf(path, problem)
+                                : this->Document->openMesh(path, problem);
   if (!ok)
   {
     this->showProblem(problem);

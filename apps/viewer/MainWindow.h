@@ -19,6 +19,7 @@ namespace shadelab
 {
 namespace viewer
 {
+class BrdfFilePanel;
 class BrdfPanel;
 class FieldsPanel;
 class LightPanel;
@@ -56,6 +57,7 @@ public:
   NormalsPanel* normalsPanel() const { return this->Normals; }
   FieldsPanel* fieldsPanel() const { return this->Fields; }
   BrdfPanel* brdfPanel() const { return this->Brdf; }
+  BrdfFilePanel* brdfFilePanel() const { return this->BrdfFileEditor; }
 
 protected:
   void dragEnterEvent(QDragEnterEvent* event) override;
@@ -74,6 +76,7 @@ private:
   NormalsPanel* Normals;
   FieldsPanel* Fields;
   BrdfPanel* Brdf;
+  BrdfFilePanel* BrdfFileEditor;
   bool Quiet = false;
 };
 

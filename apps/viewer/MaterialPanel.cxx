@@ -1,99 +1,128 @@
 #include "MaterialPanel.h"
 
 #include "ColorButton.h"
+#include "NumberControl.h"
 #include "ViewerDocument.h"
 
-#include <QDoubleSpinBox>
-#include <QFormLayout>
-#include <QHBoxLayout>
-#include <QSignalBlocker>
-#include <QSlider>
+#include "shadelab/SceneKeys.h"
 
-#include <cmath>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QLabel>
+#include <QVBoxLayout>
 
 namespace shadelab
 {
 namespace viewer
 {
 
-namespace
-{
-constexpr double kMaxShininess = 4096.0;
-constexpr int kSteps = 1000;
-
-glm::vec3& coefficient(SceneMaterial& m, int k)
-{
-  glm::vec3* all[4] = { &m.ambient, &m.diffuse, &m.specular, &m.emission };
-  return *all[k];
-}
-} // namespace
-
-double MaterialPanel::shininessAt(int sliderValue)
-{
-  return std::pow(kMaxShininess, static_cast<double>(sliderValue) / kSteps);
-}
-
-int MaterialPanel::sliderAt(double shininess)
-{
-  return static_cast<int>(std::lround(kSteps * std::log(std::max(1.0, shininess)) / std::log(kMaxShininess)));
-}
-
 MaterialPanel::MaterialPanel(ViewerDocument* document, QWidget* parent)
   : QWidget(parent)
   , Document(document)
-  , ShininessSlider(new QSlider(Qt::Horizontal, this))
-  , ShininessBox(new QDoubleSpinBox(this))
 {
-  auto* form = new QFormLayout(this);
-  const char* const names[4] = { "Ambient k_a", "Diffuse k_d", "Specular k_s", "Emission k_e" };
-  for (int k = 0; k < 4; ++k)
+  auto* layout = new QVBoxLayout(this);
+  auto* builtIn = new QGroupBox(tr("Parameters of the model"), this);
+  this->Form = new QFormLayout(builtIn);
+  layout->addWidget(builtIn);
+  layout->addStretch(1);
+
+  const auto& keys = materialKeys();
+  for (int index = 0; index < static_cast<int>(keys.size()); ++index)
   {
-    this->Coefficients[k] = new ColorButton(this);
-    form->addRow(tr(names[k]), this->Coefficients[k]);
-    connect(this->Coefficients[k], &ColorButton::valueChanged, this, [this, k](const glm::vec3& value) {
-      Scene scene = this->Document->scene();
-      coefficient(scene.material, k) = value;
-      this->Document->setScene(scene, MaterialChange);
-    });
+    const SceneKey<SceneMaterial>& key = keys[static_cast<size_t>(index)];
+    Row row;
+    row.key = QString::fromUtf8(key.name);
+    row.bit = key.materialParameter;
+    row.index = index;
+    if (key.vector)
+    {
+      row.colour = new ColorButton(builtIn);
+      row.editor = row.colour;
+      connect(row.colour, &ColorButton::valueChanged, this, [this, index](const glm::vec3& value) {
+        Scene scene = this->Document->scene();
+        scene.material.*(materialKeys()[static_cast<size_t>(index)].vector) = value;
+        this->Document->setScene(scene, MaterialChange);
+      });
+    }
+    else if (key.number)
+    {
+      row.number = new NumberControl(key.lo, key.hi, builtIn);
+      row.editor = row.number;
+      connect(row.number, &NumberControl::valueChanged, this, [this, index](double value) {
+        Scene scene = this->Document->scene();
+        scene.material.*(materialKeys()[static_cast<size_t>(index)].number) = static_cast<float>(value);
+        this->Document->setScene(scene, MaterialChange);
+      });
+    }
+    else
+    {
+      continue; // the diffuse texture is the scene file's
+    }
+    row.editor->setToolTip(QString::fromUtf8(key.what));
+    this->Form->addRow(row.key, row.editor);
+    this->Form->labelForField(row.editor)->setToolTip(QString::fromUtf8(key.what));
+    this->Rows.push_back(row);
   }
-  this->ShininessSlider->setRange(0, kSteps);
-  this->ShininessBox->setRange(0.0, 10000.0);
-  this->ShininessBox->setDecimals(1);
-  auto* row = new QHBoxLayout;
-  row->addWidget(this->ShininessSlider, 1);
-  row->addWidget(this->ShininessBox);
-  form->addRow(tr("Shininess n"), row);
-  connect(this->ShininessSlider, &QSlider::valueChanged, this,
-    [this](int value) { this->setShininess(shininessAt(value)); });
-  connect(this->ShininessBox, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
-    &MaterialPanel::setShininess);
   connect(document, &ViewerDocument::sceneChanged, this, &MaterialPanel::showScene);
   this->showScene();
 }
 
-void MaterialPanel::setShininess(double shininess)
+NumberControl* MaterialPanel::numberControl(const QString& key) const
 {
-  Scene scene = this->Document->scene();
-  if (scene.material.shininess == static_cast<float>(shininess))
+  for (const Row& row : this->Rows)
   {
-    return;
+    if (row.key == key)
+    {
+      return row.number;
+    }
   }
-  scene.material.shininess = static_cast<float>(shininess);
-  this->Document->setScene(scene, MaterialChange);
+  return nullptr;
+}
+
+ColorButton* MaterialPanel::colourControl(const QString& key) const
+{
+  for (const Row& row : this->Rows)
+  {
+    if (row.key == key)
+    {
+      return row.colour;
+    }
+  }
+  return nullptr;
+}
+
+QStringList MaterialPanel::shownKeys() const
+{
+  QStringList keys;
+  for (const Row& row : this->Rows)
+  {
+    if (!row.editor->isHidden())
+    {
+      keys << row.key;
+    }
+  }
+  return keys;
 }
 
 void MaterialPanel::showScene()
 {
-  const SceneMaterial& m = this->Document->scene().material;
-  SceneMaterial copy = m;
-  for (int k = 0; k < 4; ++k)
+  const Scene& scene = this->Document->scene();
+  const unsigned reads = modelInfo(scene.model).reads;
+  for (const Row& row : this->Rows)
   {
-    this->Coefficients[k]->setValue(coefficient(copy, k));
+    const SceneKey<SceneMaterial>& key = materialKeys()[static_cast<size_t>(row.index)];
+    if (row.colour)
+    {
+      row.colour->setValue(scene.material.*(key.vector));
+    }
+    else
+    {
+      row.number->setValue(scene.material.*(key.number));
+    }
+    const bool shown = (reads & row.bit) != 0;
+    row.editor->setVisible(shown);
+    this->Form->labelForField(row.editor)->setVisible(shown);
   }
-  const QSignalBlocker blockSlider(this->ShininessSlider);
-  const QSignalBlocker blockBox(this->ShininessBox);
-  this->ShininessSlider->setValue(sliderAt(m.shininess));
-  this->ShininessBox->setValue(m.shininess);
 }
 
 } // namespace viewer

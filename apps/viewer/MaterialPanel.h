@@ -2,23 +2,35 @@
 #define shadelab_viewer_MaterialPanel_h
 /**
  * @class   MaterialPanel
- * @brief   Edits the scene's material live: k_a, k_d, k_s, k_e (ColorButton
- *          each) and the shininess n on a logarithmic slider from 1 to 4096.
+ * @brief   Edits the scene's material live: one control per colour and number
+ *          key of the material (shadelab::materialKeys(), the rows of
+ *          SHADELAB_MATERIAL_PARAMETERS), of those the scene's model reads.
  *
- * Every change goes to the document at once as a MaterialChange, which the
- * view turns into uniforms: dragging a slider re-renders without rebuilding.
+ * Each row is built from its key: the key's name as the label, what it
+ * means as the tooltip, a ColorButton for a colour, a NumberControl over the
+ * key's range for a number. A row whose parameter the current model does
+ * not read (its bit is not in the model row's `reads`) is hidden, so a new
+ * material parameter or model needs no edit here. Every change goes to the
+ * document at once as a MaterialChange, which the view turns into uniforms:
+ * dragging a slider re-renders without rebuilding.
+ *
+ * The built-in parameters sit in one group box of a vertical layout, so
+ * other sections (another kind of material) can be added below it.
  */
 
+#include <QString>
 #include <QWidget>
 
-class QDoubleSpinBox;
-class QSlider;
+#include <vector>
+
+class QFormLayout;
 
 namespace shadelab
 {
 namespace viewer
 {
 class ColorButton;
+class NumberControl;
 class ViewerDocument;
 
 class MaterialPanel : public QWidget
@@ -27,19 +39,28 @@ class MaterialPanel : public QWidget
 public:
   explicit MaterialPanel(ViewerDocument* document, QWidget* parent = nullptr);
 
-  /// The shininess slider: position s in 0..1000 means n = 4096^(s/1000).
-  QSlider* shininessSlider() const { return this->ShininessSlider; }
-  static double shininessAt(int sliderValue);
-  static int sliderAt(double shininess);
+  /// The control of material key @p key ("shininess", "roughness", ...), or
+  /// null if the key is not a number (colour).
+  NumberControl* numberControl(const QString& key) const;
+  ColorButton* colourControl(const QString& key) const;
+  /// The keys whose rows are shown for the scene's model, in table order.
+  QStringList shownKeys() const;
 
 private:
+  struct Row
+  {
+    QString key;
+    unsigned bit = 0;        ///< MaterialParameterBit
+    int index = 0;           ///< in shadelab::materialKeys()
+    QWidget* editor = nullptr;
+    ColorButton* colour = nullptr;
+    NumberControl* number = nullptr;
+  };
   void showScene();
-  void setShininess(double shininess);
 
   ViewerDocument* Document;
-  ColorButton* Coefficients[4]; ///< ambient, diffuse, specular, emission
-  QSlider* ShininessSlider;
-  QDoubleSpinBox* ShininessBox;
+  QFormLayout* Form;
+  std::vector<Row> Rows;
 };
 
 } // namespace viewer

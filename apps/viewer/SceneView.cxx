@@ -92,11 +92,14 @@ SceneView::SceneView(ViewerDocument* document, QWidget* parent)
     }
     this->rebuild(false);
   });
-  connect(document, &ViewerDocument::normalsChanged, this, [this] {
+  // New normals or tangents: the same mesh, rebuilt in the same view.
+  const auto remesh = [this] {
     this->MeshWithNormals = nullptr;
     this->RenderedMesh = nullptr;
     this->rebuild(true);
-  });
+  };
+  connect(document, &ViewerDocument::normalsChanged, this, remesh);
+  connect(document, &ViewerDocument::tangentsChanged, this, remesh);
   connect(document, &ViewerDocument::sceneChanged, this, &SceneView::onSceneChanged);
   this->rebuild(false);
 }
@@ -176,9 +179,26 @@ vtkPolyData* SceneView::meshWithNormals()
   return this->MeshWithNormals;
 }
 
+slLightingPass* SceneView::lightingPass(int i) const
+{
+  return i >= 0 && i < static_cast<int>(this->Panels.size()) ? this->Panels[static_cast<size_t>(i)]->GetLightingPass()
+                                                              : nullptr;
+}
+
 void SceneView::renderNow()
 {
   this->renderWindow()->Render();
+  // A .brdf file's GLSL is compiled when its shaders are built, in Render().
+  std::string brdfProblem;
+  for (auto& panel : this->Panels)
+  {
+    brdfProblem = *panel->GetLightingPass()->GetBrdfError() ? panel->GetLightingPass()->GetBrdfError() : brdfProblem;
+  }
+  if (!brdfProblem.empty() && brdfProblem != this->LastBrdfProblem)
+  {
+    this->report(QString::fromStdString(brdfProblem));
+  }
+  this->LastBrdfProblem = brdfProblem;
 }
 
 vtkSmartPointer<vtkImageData> SceneView::grabImage()

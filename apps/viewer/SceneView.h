@@ -27,10 +27,13 @@
 
 #include <QString>
 
+#include <string>
+
 #include <memory>
 #include <vector>
 
 class slScene;
+class slLightingPass;
 class slSceneRenderer;
 class vtkActor;
 class vtkCamera;
@@ -62,6 +65,9 @@ public:
 
   void setMode(Mode mode);
   Mode mode() const { return this->CurrentMode; }
+
+  /// The lighting pass of lit panel @p i, or null (for tests: its shader builds).
+  slLightingPass* lightingPass(int i = 0) const;
 
   /// Field mode shows point (or cell) array @p arrayName of @p mesh.
   void setField(vtkPolyData* mesh, const QString& arrayName);
@@ -121,6 +127,7 @@ private:
   vtkSmartPointer<vtkPolyData> MeshWithNormals; ///< cache of meshWithNormals()
   vtkSmartPointer<vtkPolyData> FieldMesh;
   QString FieldName;
+  std::string LastBrdfProblem; ///< the .brdf problem last reported, so that it is said once
   vtkSmartPointer<vtkPolyData> Lobe;
   bool ShowNormals = false;
   bool Picking = false;

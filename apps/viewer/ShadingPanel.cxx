@@ -7,6 +7,8 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFormLayout>
+#include <QLabel>
+#include <QPushButton>
 #include <QSignalBlocker>
 
 namespace shadelab
@@ -21,6 +23,8 @@ ShadingPanel::ShadingPanel(ViewerDocument* document, SceneView* view, QWidget* p
   , Frequency(new QComboBox(this))
   , Split(new QCheckBox(tr("flat | Gouraud | Phong side by side"), this))
   , Background(new ColorButton(this))
+  , Tangents(new QLabel(this))
+  , ComputeTangents(new QPushButton(tr("Compute tangents"), this))
 {
   for (const std::string& name : modelNames())
   {
@@ -32,6 +36,9 @@ ShadingPanel::ShadingPanel(ViewerDocument* document, SceneView* view, QWidget* p
   }
   auto* form = new QFormLayout(this);
   form->addRow(tr("Model"), this->Model);
+  this->Tangents->setWordWrap(true);
+  form->addRow(this->Tangents);
+  form->addRow(this->ComputeTangents);
   form->addRow(tr("Frequency"), this->Frequency);
   form->addRow(tr("Split view"), this->Split);
   form->addRow(tr("Background"), this->Background);
@@ -53,8 +60,35 @@ ShadingPanel::ShadingPanel(ViewerDocument* document, SceneView* view, QWidget* p
     scene.background = value;
     this->Document->setScene(scene, BackgroundChange);
   });
+  connect(this->ComputeTangents, &QPushButton::clicked, this, [this] {
+    QString error;
+    if (this->Document->computeTangents(error))
+    {
+      emit notice(tr("Computed the mesh's tangents from its texture coordinates"));
+    }
+    else
+    {
+      emit problem(error);
+    }
+  });
   connect(document, &ViewerDocument::sceneChanged, this, &ShadingPanel::showScene);
+  connect(document, &ViewerDocument::meshChanged, this, &ShadingPanel::showTangents);
+  connect(document, &ViewerDocument::tangentsChanged, this, &ShadingPanel::showTangents);
   this->showScene();
+}
+
+void ShadingPanel::showTangents()
+{
+  const QString line = this->Document->tangentsProblem();
+  const bool changed = line != this->Tangents->text();
+  this->Tangents->setText(line);
+  this->Tangents->setVisible(!line.isEmpty());
+  this->ComputeTangents->setVisible(!line.isEmpty());
+  this->ComputeTangents->setEnabled(this->Document->canComputeTangents());
+  if (changed && !line.isEmpty())
+  {
+    emit notice(line);
+  }
 }
 
 void ShadingPanel::showScene()
@@ -65,6 +99,7 @@ void ShadingPanel::showScene()
   this->Model->setCurrentIndex(static_cast<int>(scene.model));
   this->Frequency->setCurrentIndex(static_cast<int>(scene.frequency));
   this->Background->setValue(scene.background);
+  this->showTangents();
 }
 
 } // namespace viewer

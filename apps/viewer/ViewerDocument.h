@@ -59,6 +59,10 @@ public:
   bool openMesh(const QString& path, QString& error);
   /// Reads a JSON scene. False with @p error (file: key: problem) if invalid.
   bool openScene(const QString& path, QString& error);
+  /// Reads a BRDF Explorer .brdf file and makes it the scene's BRDF, its
+  /// parameters at their defaults (a ShadingChange). False with the
+  /// reader's one-line @p error (FILE:LINE: reason) if it cannot.
+  bool openBrdf(const QString& path, QString& error);
   /// Writes the scene as JSON, all or nothing.
   bool saveScene(const QString& path, QString& error);
 
@@ -78,8 +82,24 @@ public:
   const NormalsSettings& normals() const { return this->Normals; }
   void setNormals(const NormalsSettings& settings);
 
+  /// One line saying what the scene's model needs that the mesh lacks, or ""
+  /// when nothing: an anisotropic model (modelNeedsTangents()) on a mesh
+  /// without "Tangents" (slLitFilter::HasTangents()), which the render pass
+  /// draws in a fixed frame around the normal. It says whether
+  /// computeTangents() can help.
+  QString tangentsProblem() const;
+  /// Whether computeTangents() can run: there is a mesh and it has texture coordinates.
+  bool canComputeTangents() const;
+  /// Adds MikkTSpace-style tangents (slPolyDataTangents, from the texture
+  /// coordinates) to the mesh, which keeps its own normals or none (the
+  /// normals settings still decide them). False with the filter's one-line
+  /// @p error if it cannot; the mesh stays.
+  bool computeTangents(QString& error);
+
 signals:
   void meshChanged();
+  /// The mesh gained tangents (same geometry; mirror seams may split points).
+  void tangentsChanged();
   void sceneChanged(int changes);
   void normalsChanged();
 

@@ -4,6 +4,9 @@
 #include "slModelCheck.h"
 #include "slScene.h"
 
+#include "shadelab/BrdfAssignment.h"
+#include "shadelab/BrdfFile.h"
+#include "shadelab/Error.h"
 #include "shadelab/LightingGLSL.h"
 #include "shadelab/Scene.h"
 
@@ -23,8 +26,10 @@
 #include <vtkRenderState.h>
 #include <vtkRenderStepsPass.h>
 #include <vtkRenderer.h>
+#include <vtkShader.h>
 #include <vtkShaderProgram.h>
 
+#include <map>
 #include <set>
 #include <vector>
 
@@ -83,10 +88,11 @@ void setLightUniforms(vtkShaderProgram* program, const LightUniformNames& names,
 #undef SHADELAB_UPLOAD
 }
 
-/// The material of an actor's vtkProperty, as VTK's own lighting reads it.
+/// The material of an actor's vtkProperty, as VTK's own lighting reads it;
+/// the numbers VTK has no place for (roughness, ...) at their defaults.
 shadelab::glsl::slMaterial materialOf(vtkProperty* p)
 {
-  shadelab::glsl::slMaterial m;
+  shadelab::glsl::slMaterial m = shadelab::toEvaluationMaterial(shadelab::SceneMaterial());
   m.ambient = static_cast<float>(p->GetAmbient()) * toVec3(p->GetAmbientColor());
   m.diffuse = static_cast<float>(p->GetDiffuse()) * toVec3(p->GetDiffuseColor());
   m.specular = static_cast<float>(p->GetSpecular()) * toVec3(p->GetSpecularColor());
@@ -124,7 +130,21 @@ struct slLightingPass::Internals
   bool Parallel = false;
   bool WarnedTooManyLights = false;
   bool WarnedNoNormals = false;
+  bool WarnedNoTangents = false;
   std::set<vtkMapper*> TangentMappers; // mappers given the slTangentMC attribute
+
+  // The .brdf file, if any: its GLSL as the shaders hold it, its parameter
+  // values (uniforms), and what compiling its GLSL on its own gave.
+  std::unique_ptr<shadelab::BrdfFile> Brdf;
+  std::string BrdfSource;
+  std::vector<glm::vec3> BrdfValues;
+  // What compiling each (file, text) gave: "" or its one-line error. VTK
+  // keeps built variants, so a text already checked is not seen again.
+  std::map<std::string, std::string> BrdfChecked;
+
+  std::string BrdfKey() const { return this->Brdf->path + '\n' + this->BrdfSource; }
+  std::string BrdfError;
+  int ShaderBuilds = 0;
 
   std::vector<int> LightTypes() const
   {
@@ -178,8 +198,32 @@ void slLightingPass::SetScene(slScene* scene)
   {
     this->SetModel(static_cast<int>(scene->GetScene().model));
     this->SetFrequency(static_cast<int>(scene->GetScene().frequency));
+    this->SetBrdfFromScene();
   }
   this->Modified();
+}
+
+void slLightingPass::SetBrdfFromScene()
+{
+  const shadelab::SceneBrdf& brdf = this->Scene->GetScene().brdf;
+  if (brdf.file.empty())
+  {
+    this->RemoveBrdf();
+    return;
+  }
+  // Read each time: the file may have been edited since.
+  try
+  {
+    const shadelab::BrdfFile file = shadelab::readBrdfFile(this->Scene->GetBrdfFilePath());
+    this->SetBrdf(file, shadelab::brdfParameterValues(file, brdf.parameters));
+  }
+  catch (const shadelab::Error& e)
+  {
+    const std::string& source = this->Scene->GetScene().sourceFile;
+    this->RemoveBrdf();
+    this->Internal->BrdfError = e.what() + (source.empty() ? std::string() : " (brdf of " + source + ")");
+    vtkErrorMacro(<< this->Internal->BrdfError);
+  }
 }
 
 slScene* slLightingPass::GetScene()
@@ -242,6 +286,220 @@ bool slLightingPass::SetFrequencyName(const char* name)
   }
   this->SetFrequency(static_cast<int>(frequency));
   return true;
+}
+
+void slLightingPass::SetBrdf(const shadelab::BrdfFile& file, const std::vector<glm::vec3>& values)
+{
+  Internals& in = *this->Internal;
+  const std::string source = shaders::brdfSource(shadelab::brdfUniformDeclarations(file), file.shader);
+  if (source != in.BrdfSource)
+  {
+    this->ShaderStageTime.Modified(); // the BRDF's text is compiled into the shaders
+  }
+  in.Brdf.reset(new shadelab::BrdfFile(file));
+  in.BrdfSource = source;
+  in.BrdfValues = values;
+  in.BrdfValues.resize(file.parameters.size());
+  const auto checked = in.BrdfChecked.find(in.BrdfKey());
+  in.BrdfError = checked == in.BrdfChecked.end() ? std::string() : checked->second;
+  this->Modified();
+}
+
+bool slLightingPass::LoadBrdfFile(const char* path)
+{
+  try
+  {
+    const shadelab::BrdfFile file = shadelab::readBrdfFile(path ? path : "");
+    this->SetBrdf(file, shadelab::brdfParameterValues(file, {}));
+    return true;
+  }
+  catch (const shadelab::Error& e)
+  {
+    vtkErrorMacro(<< e.what());
+    return false;
+  }
+}
+
+bool slLightingPass::SetBrdfText(const char* text, const char* path)
+{
+  try
+  {
+    const shadelab::BrdfFile file = shadelab::parseBrdfText(text ? text : "", path ? path : "(text)");
+    this->SetBrdf(file, shadelab::brdfParameterValues(file, {}));
+    return true;
+  }
+  catch (const shadelab::Error& e)
+  {
+    vtkErrorMacro(<< e.what());
+    return false;
+  }
+}
+
+void slLightingPass::RemoveBrdf()
+{
+  Internals& in = *this->Internal;
+  if (in.Brdf)
+  {
+    in.Brdf.reset();
+    in.BrdfSource.clear();
+    in.BrdfValues.clear();
+    in.BrdfError.clear();
+    this->ShaderStageTime.Modified();
+    this->Modified();
+  }
+}
+
+bool slLightingPass::HasBrdf() const
+{
+  return this->Internal->Brdf != nullptr;
+}
+
+const char* slLightingPass::GetBrdfFileName() const
+{
+  return this->Internal->Brdf ? this->Internal->Brdf->path.c_str() : "";
+}
+
+int slLightingPass::GetNumberOfBrdfParameters() const
+{
+  return this->Internal->Brdf ? static_cast<int>(this->Internal->Brdf->parameters.size()) : 0;
+}
+
+namespace
+{
+/// Parameter @p i of @p file, or null (after a warning) when out of range.
+const shadelab::BrdfParameter* parameterAt(const shadelab::BrdfFile* file, int i)
+{
+  if (!file || i < 0 || i >= static_cast<int>(file->parameters.size()))
+  {
+    return nullptr;
+  }
+  return &file->parameters[static_cast<size_t>(i)];
+}
+
+void copyTo(const glm::vec3& v, double out[3])
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    out[c] = static_cast<double>(v[c]);
+  }
+}
+} // namespace
+
+const char* slLightingPass::GetBrdfParameterName(int i) const
+{
+  const shadelab::BrdfParameter* p = parameterAt(this->Internal->Brdf.get(), i);
+  return p ? p->name.c_str() : nullptr;
+}
+
+int slLightingPass::GetBrdfParameterKind(int i) const
+{
+  const shadelab::BrdfParameter* p = parameterAt(this->Internal->Brdf.get(), i);
+  return p ? static_cast<int>(p->kind) : -1;
+}
+
+double slLightingPass::GetBrdfParameterMinimum(int i) const
+{
+  const shadelab::BrdfParameter* p = parameterAt(this->Internal->Brdf.get(), i);
+  return p ? static_cast<double>(p->minimum) : 0.0;
+}
+
+double slLightingPass::GetBrdfParameterMaximum(int i) const
+{
+  const shadelab::BrdfParameter* p = parameterAt(this->Internal->Brdf.get(), i);
+  return p ? static_cast<double>(p->maximum) : 0.0;
+}
+
+void slLightingPass::GetBrdfParameterDefault(int i, double value[3]) const
+{
+  const shadelab::BrdfParameter* p = parameterAt(this->Internal->Brdf.get(), i);
+  copyTo(p ? p->defaultValue : glm::vec3(0.0f), value);
+}
+
+void slLightingPass::GetBrdfParameterValue(int i, double value[3]) const
+{
+  const shadelab::BrdfParameter* p = parameterAt(this->Internal->Brdf.get(), i);
+  copyTo(p ? this->Internal->BrdfValues[static_cast<size_t>(i)] : glm::vec3(0.0f), value);
+}
+
+bool slLightingPass::SetBrdfValues(const std::vector<std::string>& assignments)
+{
+  Internals& in = *this->Internal;
+  if (!in.Brdf)
+  {
+    vtkErrorMacro(<< "no .brdf file to set parameters of");
+    return false;
+  }
+  try
+  {
+    // The current values first (as assignments), then the new ones: the
+    // core parses and checks every value, as it does for --param.
+    std::vector<std::string> all;
+    for (size_t i = 0; i < in.Brdf->parameters.size(); ++i)
+    {
+      all.push_back(shadelab::brdfAssignment(in.Brdf->parameters[i], in.BrdfValues[i]));
+    }
+    all.insert(all.end(), assignments.begin(), assignments.end());
+    in.BrdfValues = shadelab::brdfParameterValues(*in.Brdf, all);
+  }
+  catch (const shadelab::Error& e)
+  {
+    vtkErrorMacro(<< e.what());
+    return false;
+  }
+  this->Modified(); // a uniform: the shaders stay as they are
+  return true;
+}
+
+bool slLightingPass::SetBrdfParameter(const char* assignment)
+{
+  return this->SetBrdfValues({ assignment ? assignment : "" });
+}
+
+bool slLightingPass::SetBrdfParameter(const char* name, double value)
+{
+  return this->SetBrdfValues({ std::string(name ? name : "") + "=" + shadelab::brdfNumberText(value) });
+}
+
+bool slLightingPass::SetBrdfParameter(const char* name, double r, double g, double b)
+{
+  return this->SetBrdfValues(
+    { std::string(name ? name : "") + "=" + shadelab::brdfNumberText(r) + "," + shadelab::brdfNumberText(g) + "," + shadelab::brdfNumberText(b) });
+}
+
+const char* slLightingPass::GetBrdfError() const
+{
+  return this->Internal->BrdfError.c_str();
+}
+
+int slLightingPass::GetNumberOfShaderBuilds() const
+{
+  return this->Internal->ShaderBuilds;
+}
+
+bool slLightingPass::CheckBrdf(const std::string& checkShader)
+{
+  Internals& in = *this->Internal;
+  const auto checked = in.BrdfChecked.find(in.BrdfKey());
+  if (checked != in.BrdfChecked.end())
+  {
+    in.BrdfError = checked->second;
+    return in.BrdfError.empty();
+  }
+  vtkNew<vtkShader> shader;
+  shader->SetType(vtkShader::Fragment);
+  shader->SetSource(checkShader);
+  const bool compiled = shader->Compile();
+  const std::string log = shader->GetError();
+  shader->Cleanup();
+  in.BrdfError = compiled ? std::string()
+                          : shadelab::brdfCompileError(*in.Brdf, log,
+                              shaders::brdfShaderFirstLine(checkShader, static_cast<int>(in.Brdf->parameters.size())));
+  in.BrdfChecked[in.BrdfKey()] = in.BrdfError;
+  if (!compiled)
+  {
+    vtkErrorMacro(<< in.BrdfError);
+  }
+  return compiled;
 }
 
 vtkMTimeType slLightingPass::GetShaderStageMTime()
@@ -436,30 +694,57 @@ bool slLightingPass::PostReplaceShaderValues(std::string& vertexShader, std::str
     }
     frequency = shaders::Flat;
   }
+  ++this->Internal->ShaderBuilds;
   shaders::Variant variant;
   variant.frequency = frequency;
   variant.lightTypes = this->Internal->LightTypes();
   variant.model = this->Model;
   variant.componentView = this->Component != TOTAL;
+  variant.brdf = this->Internal->BrdfSource;
+  // A BRDF whose GLSL does not compile is reported once, in one line
+  // (GetBrdfError()); the mesh is drawn with the model meanwhile, so that
+  // VTK's compile of the whole shader does not fail as well.
+  if (!variant.brdf.empty() && !this->CheckBrdf(shaders::brdfCheckShader(variant)))
+  {
+    variant.brdf.clear();
+  }
   shaders::FragmentInputs inputs;
   inputs.scalarColors = contains(fragmentShader, "vertexColorVSOutput") || contains(fragmentShader, "textureC");
   inputs.texture = contains(fragmentShader, "actortexture") && contains(fragmentShader, "tcoordVCVSOutput");
   inputs.mapperFaceNormal = !vertexNormals && contains(fragmentShader, "normalVCVSOutput");
   // VTK maps normals itself only for 3-component tangents; 4-component
   // (MikkTSpace) ones reach the shader as slTangentMC, mapped in Render().
+  const bool meshTangents = contains(vertexShader, "//SL::Tangent");
   inputs.tangentNormalMap = frequency == shaders::Phong && contains(fragmentShader, "sampler2D normalTex") &&
-    contains(fragmentShader, "tcoordVCVSOutput") && !contains(fragmentShader, "tangentVCVSOutput") &&
-    contains(vertexShader, "//SL::Tangent");
-  if (inputs.tangentNormalMap)
+    contains(fragmentShader, "tcoordVCVSOutput") && !contains(fragmentShader, "tangentVCVSOutput") && meshTangents;
+  const bool anisotropic = shadelab::modelNeedsTangents(static_cast<shadelab::ShadingModel>(this->Model));
+  // A .brdf file's BRDF frame takes the mesh's tangents too (without them, a
+  // frame built from the normal, as for an anisotropic model).
+  const bool brdf = !variant.brdf.empty();
+  inputs.surfaceTangent = meshTangents && (inputs.tangentNormalMap || anisotropic || brdf);
+  if (anisotropic && !brdf && !meshTangents && !this->Internal->WarnedNoTangents)
   {
-    vtkShaderProgram::Substitute(vertexShader, "//SL::Tangent::Dec", shaders::tangentVertexDeclarations(), false);
+    vtkErrorMacro(<< "the " << shadelab::modelName(static_cast<shadelab::ShadingModel>(this->Model))
+                  << " model is anisotropic and needs the mesh's tangents (a 4-component point array \"Tangents\", "
+                     "from slPolyDataTangents); without them it is drawn in a fixed frame around the normal");
+    this->Internal->WarnedNoTangents = true;
+  }
+  if (inputs.surfaceTangent)
+  {
+    // VTK declares normalMatrix only with vertex normals, which flat shading
+    // goes without; the tangents need it (VTK sets it whenever it is used).
+    const std::string normalMatrix =
+      contains(vertexShader, "uniform mat3 normalMatrix") ? "" : "uniform mat3 normalMatrix;\n";
+    vtkShaderProgram::Substitute(
+      vertexShader, "//SL::Tangent::Dec", normalMatrix + shaders::tangentVertexDeclarations(frequency), false);
     vtkShaderProgram::Substitute(vertexShader, "//SL::Tangent::Impl", shaders::tangentVertexImplementation(), false);
   }
 
   vtkShaderProgram::Substitute(vertexShader, kDeclarationTag, shaders::vertexDeclarations(variant), false);
+  vtkShaderProgram::Substitute(vertexShader, "//VTK::Light::Impl",
+    shaders::vertexImplementation(frequency, inputs.surfaceTangent) + "//VTK::Light::Impl", false);
   vtkShaderProgram::Substitute(
-    vertexShader, "//VTK::Light::Impl", shaders::vertexImplementation(frequency) + "//VTK::Light::Impl", false);
-  vtkShaderProgram::Substitute(fragmentShader, kDeclarationTag, shaders::fragmentDeclarations(variant, inputs.tangentNormalMap), false);
+    fragmentShader, kDeclarationTag, shaders::fragmentDeclarations(variant, inputs), false);
   vtkShaderProgram::Substitute(fragmentShader, kLightTag, shaders::fragmentImplementation(frequency, inputs), false);
   vtkShaderProgram::Substitute(fragmentShader, kTextureTag, "", false);
   return true;
@@ -484,12 +769,37 @@ bool slLightingPass::SetShaderParameters(
   }
   // Each light with this actor's k_a, k_d, k_s folded in (slFoldLight), as
   // the CPU kernel folds them; the shader shades with slUnitMaterial(slMat).
-  const std::vector<shadelab::glsl::slLight>& lights = this->Internal->LightsVC;
+  // A .brdf file's BRDF takes k_d's place: the lights are folded with k_d = 1.
+  const Internals& in = *this->Internal;
+  const bool brdf = in.Brdf && in.BrdfError.empty();
+  shadelab::glsl::slMaterial folding = m;
+  if (brdf)
+  {
+    folding.diffuse = glm::vec3(1.0f);
+    for (size_t i = 0; i < in.Brdf->parameters.size(); ++i)
+    {
+      const shadelab::BrdfParameter& p = in.Brdf->parameters[i];
+      const glm::vec3& v = in.BrdfValues[i];
+      switch (p.kind)
+      {
+        case shadelab::BrdfParameter::Kind::Float:
+          program->SetUniformf(p.name.c_str(), v.x);
+          break;
+        case shadelab::BrdfParameter::Kind::Bool:
+          program->SetUniformi(p.name.c_str(), v.x != 0.0f ? 1 : 0);
+          break;
+        case shadelab::BrdfParameter::Kind::Color:
+          program->SetUniform3f(p.name.c_str(), &v[0]);
+          break;
+      }
+    }
+  }
+  const std::vector<shadelab::glsl::slLight>& lights = in.LightsVC;
   for (size_t i = 0; i < lights.size(); ++i)
   {
-    setLightUniforms(program, this->Internal->Names[i], shadelab::glsl::slFoldLight(lights[i], m));
+    setLightUniforms(program, in.Names[i], shadelab::glsl::slFoldLight(lights[i], folding));
   }
-#define SHADELAB_UPLOAD(type, field, bit, what) setUniform(program, "slMat." #field, m.field);
+#define SHADELAB_UPLOAD(type, field, ...) setUniform(program, "slMat." #field, m.field);
   SHADELAB_MATERIAL_PARAMETERS(SHADELAB_UPLOAD)
 #undef SHADELAB_UPLOAD
   program->SetUniformi("slComponent", this->Component);
@@ -509,6 +819,7 @@ void slLightingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UseSceneMaterial: " << this->UseSceneMaterial << "\n";
   os << indent << "Component: " << this->Component << " (light " << this->ComponentLight << ")\n";
   os << indent << "FalseColor: " << this->FalseColor << "\n";
+  os << indent << "Brdf: " << (this->Internal->Brdf ? this->Internal->Brdf->path : "(none: the model)") << "\n";
   os << indent << "Scene: " << (this->Scene ? "set" : "(none: the renderer's lights)") << "\n";
   os << indent << "DelegatePass: " << this->DelegatePass.GetPointer() << "\n";
 }

@@ -33,13 +33,27 @@
  *   which honours w.
  * - Component views show only the ambient, diffuse, specular or emission term
  *   (of all lights or of light k), or N.L of light k, in grey or false colour.
+ * - BRDF Explorer .brdf files (LoadBrdfFile, SetBrdfText): the file's GLSL
+ *   function BRDF(L, V, N, X, Y) shades in place of the model's diffuse and
+ *   specular factors, at every frequency. Each light gives BRDF times its
+ *   diffuse colour (times intensity) times its reach (attenuation, spot
+ *   factor) times max(N.L, 0), computed by the same slLighting.glsl
+ *   functions; ambient and emission are the model's. The reflection is the
+ *   diffuse term: the diffuse component view shows it, the specular view is
+ *   black, and scalar colours and the texture multiply it as they multiply
+ *   k_d. X, Y are the mesh's 4-component Tangents made orthogonal to N with
+ *   Y = w (N x X) (slTangentX, slBitangentY of slLighting.glsl); without
+ *   them, the frame slTangentX builds from N alone, in view coordinates.
+ *   The file's parameters are uniforms.
  *
  * The frequency, the model, the number and types of the lights and whether a
  * component view is shown are compiled into the shaders (loops unroll, model
  * and type tests fold away, the total carries no component-view code: Mesa's
  * llvmpipe runs both sides of every branch); changing one of them builds a
  * shader variant once, and VTK's shader cache keeps earlier variants, so
- * switching back is cheap. Everything else (light positions, directions,
+ * switching back is cheap. A .brdf file's shader text is compiled in the same
+ * way (one variant per text); its parameter values, like everything else
+ * (light positions, ...), are uniforms. Everything else (light positions, directions,
  * colours, attenuation, spot angles, the material, which component and light
  * a view shows, false colour) is a uniform: changing it costs no shader rebuild.
  *
@@ -50,7 +64,11 @@
  * Gouraud and Phong. Gouraud and Phong need point normals. Only the actor's
  * own texture (vtkActor::SetTexture) is used as base colour. Translucent
  * actors keep VTK's lighting; actors whose property has lighting off are
- * drawn unlit, as VTK draws them.
+ * drawn unlit, as VTK draws them. A .brdf file's GLSL is compiled once on
+ * its own (with ShadeLab's declarations) before it goes into VTK's shaders:
+ * a compile error is one line, GetBrdfError(), and the meshes are drawn
+ * with the built-in model instead; a clash with a name of VTK's own shader
+ * code (a parameter called "opacity", say) is reported by VTK.
  *
  * @sa vtkOpenGLRenderPass vtkRenderStepsPass slScene slSceneRenderer
  */
@@ -62,7 +80,16 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
+#ifndef __VTK_WRAP__
+#include <glm/vec3.hpp>
+#endif
+
+namespace shadelab
+{
+struct BrdfFile;
+}
 class slScene;
 class vtkRenderer;
 
@@ -100,7 +127,10 @@ public:
 
   ///@{
   /// Lights (and, with UseSceneMaterial, the material) come from this scene.
-  /// Setting a scene also copies its model and frequency into the pass.
+  /// Setting a scene also copies its model, its frequency and its .brdf file
+  /// (brdf.file and brdf.parameters, or none) into the pass; a .brdf file
+  /// that cannot be read or a bad parameter value is an error
+  /// (vtkErrorMacro, GetBrdfError()) and leaves the pass with the model.
   /// Without a scene the renderer's vtkLights are used.
   void SetScene(slScene* scene);
   slScene* GetScene();
@@ -153,6 +183,68 @@ public:
   vtkBooleanMacro(FalseColor, bool);
   ///@}
 
+  ///@{
+  /// A BRDF Explorer .brdf file shading in place of the model's diffuse and
+  /// specular factors, its parameters at their defaults. False, after
+  /// vtkErrorMacro ("FILE:LINE: reason"), for a file that cannot be read or
+  /// parsed; the pass then keeps its BRDF. SetBrdfText() parses @p text as
+  /// a file named @p path (for messages). RemoveBrdf(): the model again.
+  bool LoadBrdfFile(const char* path);
+  bool SetBrdfText(const char* text, const char* path);
+  void RemoveBrdf();
+  bool HasBrdf() const;
+  /// The .brdf file's path ("" without one).
+  const char* GetBrdfFileName() const;
+  ///@}
+
+  /// Kinds of .brdf parameters.
+  enum BrdfParameterKind
+  {
+    BRDF_FLOAT = 0,
+    BRDF_BOOL = 1,
+    BRDF_COLOR = 2
+  };
+
+  ///@{
+  /// The .brdf file's parameters, in the file's order: name, kind, range
+  /// (floats), default and current value (floats and bools in the first
+  /// component, 0 or 1 for bools; colours RGB).
+  int GetNumberOfBrdfParameters() const;
+  const char* GetBrdfParameterName(int i) const;
+  int GetBrdfParameterKind(int i) const;
+  double GetBrdfParameterMinimum(int i) const;
+  double GetBrdfParameterMaximum(int i) const;
+  void GetBrdfParameterDefault(int i, double value[3]) const;
+  void GetBrdfParameterValue(int i, double value[3]) const;
+  ///@}
+
+  ///@{
+  /// Sets parameters as `shadelab render --param` does: "name=value", a
+  /// bool true/false/0/1, a colour "r,g,b", a float within its range.
+  /// False, after vtkErrorMacro, for an unknown name or a bad value (the
+  /// values are then unchanged). A uniform: no shader is rebuilt.
+  bool SetBrdfParameter(const char* assignment);
+  /// The same for a float or bool (0 or 1) @p name.
+  bool SetBrdfParameter(const char* name, double value);
+  /// The same for a colour @p name.
+  bool SetBrdfParameter(const char* name, double r, double g, double b);
+  ///@}
+
+  /// The one-line problem of the .brdf BRDF: its GLSL's compile error
+  /// ("FILE:LINE: driver message"), or why the scene's .brdf file could not
+  /// be used; "" when there is none (or the BRDF was not yet drawn).
+  const char* GetBrdfError() const;
+
+  /// How many times the pass has written its code into a mapper's shaders
+  /// (shader variants built); uniform changes leave it alone.
+  int GetNumberOfShaderBuilds() const;
+
+#ifndef __VTK_WRAP__
+  /// The C++ form of LoadBrdfFile(): @p file as read by shadelab::readBrdfFile
+  /// and the values of its parameters (shadelab::brdfParameterValues).
+  void SetBrdf(const shadelab::BrdfFile& file, const std::vector<glm::vec3>& values);
+#endif
+
   /// The most lights the shaders hold.
   static int GetMaximumNumberOfLights();
 
@@ -181,6 +273,9 @@ private:
   void PrepareLights(vtkRenderer* renderer);
   void MatchInterpolation(const vtkRenderState* s);
   void MapTangents(const vtkRenderState* s);
+  bool SetBrdfValues(const std::vector<std::string>& assignments);
+  void SetBrdfFromScene();
+  bool CheckBrdf(const std::string& brdfSource);
 
   vtkSmartPointer<vtkRenderPass> DelegatePass;
   vtkSmartPointer<slScene> Scene;

@@ -2,6 +2,8 @@
 
 #include "shadelab/LightingShaderSource.h"
 
+#include <algorithm>
+
 namespace slLightingPassShaders
 {
 
@@ -18,13 +20,64 @@ std::string lightTypeFunction(const std::vector<int>& types)
   }
   return "int slLightTypeOf(int i)\n{\n  return " + body + ";\n}\n";
 }
+
+const char* const kBrdfMarker = "// ---- BRDF of a .brdf file: its parameters, then its shader ----\n";
+
+/// GLSL of one light shaded with a .brdf file's BRDF.
+std::string brdfFunctions()
+{
+  return "// One light shaded with the file's BRDF at unit normal n with frame X, Y:\n"
+         "// the lighting core weighs the light as for the Lambert model, whose\n"
+         "// diffuse weight is the light's reach (attenuation, spot factor) times\n"
+         "// max(N.L, 0) and whose ambient weight is every model's; the BRDF then\n"
+         "// multiplies the diffuse term in place of k_d (the light arrives folded\n"
+         "// with k_d = 1). Where N.L <= 0 the BRDF is not called: it may divide by N.L.\n"
+         "slTerms slShadeBrdf(slLight light, slMaterial unit, vec3 P, vec3 n, vec3 v, vec3 X, vec3 Y)\n"
+         "{\n"
+         "  slTerms t = slWeightedTerms(slLightWeightsAt(light, unit, SL_MODEL_LAMBERT, P, n, X, v), light, unit);\n"
+         "  vec3 L = slIncidenceAt(light, P).L;\n"
+         "  if (light.type != SL_LIGHT_AMBIENT && dot(n, L) > 0.0f)\n"
+         "  {\n"
+         "    t.diffuse = t.diffuse * BRDF(L, v, n, X, Y);\n"
+         "  }\n"
+         "  return t;\n"
+         "}\n";
+}
 } // namespace
+
+std::string tangentExpression(bool surfaceTangent)
+{
+  return surfaceTangent ? "slTangentVC" : "vec4(0.0f)";
+}
+
+std::string brdfSource(const std::string& uniformDeclarations, const std::string& shader)
+{
+  std::string text = kBrdfMarker + uniformDeclarations + shader;
+  if (!text.empty() && text.back() != '\n')
+  {
+    text += '\n';
+  }
+  return text;
+}
+
+int brdfShaderFirstLine(const std::string& source, int numberOfParameters)
+{
+  const size_t at = source.find(kBrdfMarker);
+  if (at == std::string::npos)
+  {
+    return 0;
+  }
+  const auto linesBefore = std::count(source.begin(), source.begin() + static_cast<std::ptrdiff_t>(at), '\n');
+  // The marker's line, then one uniform line per parameter.
+  return static_cast<int>(linesBefore) + 2 + numberOfParameters;
+}
 
 std::string declarations(const Variant& variant)
 {
   const std::vector<int>& lightTypes = variant.lightTypes;
+  const bool brdf = !variant.brdf.empty();
   return "// ---- ShadeLab lighting (slLighting.glsl, the lighting core's single copy) ----\n" +
-    shadelab::lightingShaderSource() +
+    shadelab::lightingShaderSource() + variant.brdf + (brdf ? brdfFunctions() : std::string()) +
     "// ---- ShadeLab lighting pass ----\n"
     "const int SL_MAX_LIGHTS = " +
     std::to_string(MaximumLights) +
@@ -51,22 +104,29 @@ std::string declarations(const Variant& variant)
     "  return slParallel == 1 ? P + vec3(0.0f, 0.0f, 1.0f) : vec3(0.0f);\n"
     "}\n"
     "\n"
-    "// All lights (or the chosen one) at P. The lights arrive with k_a, k_d, k_s\n"
-    "// folded in (slFoldLight), so the base colour (scalars, texture) multiplies\n"
-    "// the sum afterwards (slWithBaseColour).\n"
-    "slTerms slLightAll(vec3 P, vec3 N)\n"
+    "// All lights (or the chosen one) at P with normal N and tangent T (xyz,\n"
+    "// MikkTSpace handedness w; 0 without one). The lights arrive with k_a, k_d,\n"
+    "// k_s folded in (slFoldLight), so the base colour (scalars, texture)\n"
+    "// multiplies the sum afterwards (slWithBaseColour).\n"
+    "slTerms slLightAll(vec3 P, vec3 N, vec4 T)\n"
     "{\n"
     "  slMaterial unit = slUnitMaterial(slMat);\n"
     "  vec3 n = slSafeNormalize(N);\n"
-    "  vec3 v = slSafeNormalize(slEye(P) - P);\n"
+    "  vec3 v = slSafeNormalize(slEye(P) - P);\n" +
+    std::string(brdf ? "  // The .brdf frame: the lighting core's tangent X (the frame built from\n"
+                       "  // n where T gives none) and Y = w (n x X).\n"
+                       "  vec3 X = slTangentX(n, T.xyz);\n"
+                       "  vec3 Y = (T.w < 0.0f ? -1.0f : 1.0f) * slBitangentY(n, X);\n"
+                     : "") +
     "  slTerms t = slZeroTerms();\n"
     "  for (int i = 0; i < slLightCount; ++i)\n"
     "  {\n"
     "    if (!slComponentView || slComponentLight < 0 || i == slComponentLight)\n"
     "    {\n"
     "      slLight light = slLights[i];\n"
-    "      light.type = slLightTypeOf(i);\n"
-    "      t = slAddTerms(t, slShadeLightUnit(light, unit, slModel, P, n, v));\n"
+    "      light.type = slLightTypeOf(i);\n" +
+    std::string(brdf ? "      t = slAddTerms(t, slShadeBrdf(light, unit, P, n, v, X, Y));\n"
+                     : "      t = slAddTerms(t, slShadeLightUnit(light, unit, slModel, P, n, T.xyz, v));\n") +
     "    }\n"
     "  }\n"
     "  return t;\n"
@@ -81,6 +141,16 @@ std::string declarations(const Variant& variant)
     "  slLight light = slLights[k];\n"
     "  light.type = slLightTypeOf(k);\n"
     "  return slCosTheta(light, P, N);\n"
+    "}\n";
+}
+
+std::string brdfCheckShader(const Variant& variant)
+{
+  return "#version 150\n" + declarations(variant) +
+    "out vec4 slCheckOutput;\n"
+    "void main()\n"
+    "{\n"
+    "  slCheckOutput = vec4(slLightAll(vec3(0.0f), vec3(0.0f, 0.0f, 1.0f), vec4(0.0f)).diffuse, 1.0f);\n"
     "}\n";
 }
 
@@ -100,8 +170,9 @@ std::string vertexDeclarations(const Variant& variant)
   return std::string();
 }
 
-std::string vertexImplementation(Frequency frequency)
+std::string vertexImplementation(Frequency frequency, bool surfaceTangent)
 {
+  const std::string T = tangentExpression(surfaceTangent);
   switch (frequency)
   {
     case Flat:
@@ -111,8 +182,8 @@ std::string vertexImplementation(Frequency frequency)
       return "  {\n"
              "    vec3 slP = vertexVCVSOutput.xyz;\n"
              "    vec3 slN = normalVCVSOutput;\n"
-             "    slTerms slFront = slLightAll(slP, slN);\n"
-             "    slTerms slBack = slLightAll(slP, -slN);\n"
+             "    slTerms slFront = slLightAll(slP, slN, " + T + ");\n"
+             "    slTerms slBack = slLightAll(slP, -slN, " + T + ");\n"
              "    slAmbientVS = slFront.ambient;\n"
              "    slDiffuseVS = slFront.diffuse;\n"
              "    slSpecularVS = slFront.specular;\n"
@@ -127,24 +198,32 @@ std::string vertexImplementation(Frequency frequency)
   return std::string();
 }
 
-std::string tangentVertexDeclarations()
+std::string tangentVertexDeclarations(Frequency frequency)
 {
-  return "in vec4 slTangentMC;\nout vec4 slTangentVC;\n";
+  // Flat: the provoking vertex's tangent, as its position, lights the face.
+  return std::string("in vec4 slTangentMC;\n") + (frequency == Flat ? "flat " : "") + "out vec4 slTangentVC;\n";
 }
 
 std::string tangentVertexImplementation()
 {
-  return "  slTangentVC = vec4(normalMatrix * slTangentMC.xyz, slTangentMC.w);\n";
+  // A tangent lies in the surface: it goes to view coordinates as a
+  // direction (the model-view matrix; normals take its inverse transpose).
+  // MCVCMatrix is in every lit vertex shader, normalMatrix not in flat ones.
+  return "  slTangentVC = vec4(mat3(MCVCMatrix) * slTangentMC.xyz, slTangentMC.w);\n";
 }
 
-std::string fragmentDeclarations(const Variant& variant, bool tangentNormalMap)
+std::string fragmentDeclarations(const Variant& variant, const FragmentInputs& inputs)
 {
   const Frequency frequency = variant.frequency;
   std::string out = declarations(variant);
-  if (tangentNormalMap)
+  if (inputs.surfaceTangent && frequency != Gouraud)
+  {
+    out += std::string(frequency == Flat ? "flat " : "") + "in vec4 slTangentVC;\n";
+  }
+  if (inputs.tangentNormalMap)
   {
     out += shadelab::normalMappingShaderSource();
-    out += "in vec4 slTangentVC;\nuniform float slNormalScale;\n";
+    out += "uniform float slNormalScale;\n";
   }
   if (frequency == Flat)
   {
@@ -183,6 +262,7 @@ std::string fragmentDeclarations(const Variant& variant, bool tangentNormalMap)
 
 std::string fragmentImplementation(Frequency frequency, const FragmentInputs& inputs)
 {
+  const std::string T = tangentExpression(inputs.surfaceTangent);
   std::string out = "  {\n    vec3 slBase = vec3(1.0f);\n";
   if (inputs.scalarColors)
   {
@@ -205,7 +285,7 @@ std::string fragmentImplementation(Frequency frequency, const FragmentInputs& in
         out += "    vec3 slN = cross(dFdx(vertexVC.xyz), dFdy(vertexVC.xyz));\n"
                "    if (dot(slN, slEye(vertexVC.xyz) - vertexVC.xyz) < 0.0f) { slN = -slN; }\n";
       }
-      out += "    slT = slLightAll(slFlatVertexVC.xyz, slN);\n"
+      out += "    slT = slLightAll(slFlatVertexVC.xyz, slN, " + T + ");\n"
              "    slCos = slComponentView && slComponent == 5 ? slChosenCosTheta(slFlatVertexVC.xyz, slN) : 0.0f;\n";
       break;
     case Gouraud:
@@ -223,7 +303,7 @@ std::string fragmentImplementation(Frequency frequency, const FragmentInputs& in
         out += "    normalVCVSOutput = slTangentToSurface(slDecodeNormal(texture(normalTex, tcoordVCVSOutput).rgb, 1.0f,"
                " slNormalScale), normalVCVSOutput, slTangentVC.xyz, slTangentVC.w);\n";
       }
-      out += "    slT = slLightAll(vertexVC.xyz, normalVCVSOutput);\n"
+      out += "    slT = slLightAll(vertexVC.xyz, normalVCVSOutput, " + T + ");\n"
              "    slCos = slComponentView && slComponent == 5 ? slChosenCosTheta(vertexVC.xyz, normalVCVSOutput) : 0.0f;\n";
       break;
   }

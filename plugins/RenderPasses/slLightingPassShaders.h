@@ -35,7 +35,24 @@ struct Variant
   std::vector<int> lightTypes; ///< SL_LIGHT_* of each light
   int model = 0;               ///< SL_MODEL_*
   bool componentView = false;  ///< a component view, not the total
+  /// A .brdf file's BRDF (brdfSource()) shading in place of the model's
+  /// diffuse and specular factors; empty: the model's.
+  std::string brdf;
 };
+
+/// The GLSL of a .brdf file's BRDF as the shaders hold it: its parameters'
+/// uniform declarations followed, line for line, by its shader text.
+/// @p uniformDeclarations is brdfUniformDeclarations() of the file.
+std::string brdfSource(const std::string& uniformDeclarations, const std::string& shader);
+
+/// The line (1-based) of @p source on which the .brdf shader text of
+/// brdfSource() starts, for brdfCompileError(); 0 if @p source holds none.
+int brdfShaderFirstLine(const std::string& source, int numberOfParameters);
+
+/// A fragment shader of the variant's declarations alone whose main() calls
+/// BRDF(): compiling it checks a .brdf file's GLSL before it goes into
+/// VTK's shaders, whose compile errors come with the whole source.
+std::string brdfCheckShader(const Variant& variant);
 
 /// What the fragment shader has to work with, as found in VTK's shaders.
 struct FragmentInputs
@@ -44,12 +61,22 @@ struct FragmentInputs
   bool texture = false;         ///< actortexture and tcoordVCVSOutput exist
   bool mapperFaceNormal = false; ///< normalVCVSOutput is already per face (flat interpolation)
   bool tangentNormalMap = false; ///< normalTex + 4-component Tangents: ShadeLab maps the normal
+  /// The mesh's 4-component Tangents reach the shaders as slTangentVC (for
+  /// a normal map, an anisotropic model or a .brdf file's frame).
+  bool surfaceTangent = false;
 };
 
 /// Vertex-shader declarations and code passing 4-component tangents
-/// (xyz, handedness w) to the fragment shader as slTangentVC.
-std::string tangentVertexDeclarations();
+/// (xyz, handedness w) to the fragment shader as slTangentVC (per face,
+/// from the provoking vertex, for @p frequency Flat).
+std::string tangentVertexDeclarations(Frequency frequency);
 std::string tangentVertexImplementation();
+
+/// The GLSL expression of the lighting site's tangent (xyz, handedness w)
+/// passed to slLightAll(): slTangentVC when the shaders carry the mesh's
+/// 4-component Tangents, else vec4(0), which makes the BRDF frame one built
+/// from the normal alone.
+std::string tangentExpression(bool surfaceTangent);
 
 /// Declarations for either stage: the lighting core, the uniforms, helpers,
 /// for the variant's lights and model.
@@ -57,10 +84,11 @@ std::string declarations(const Variant& variant);
 
 /// Vertex-shader declarations and code for a frequency ("" if none needed).
 std::string vertexDeclarations(const Variant& variant);
-std::string vertexImplementation(Frequency frequency);
+/// @p surfaceTangent: slTangentVC holds the mesh's tangents (Gouraud lights with them).
+std::string vertexImplementation(Frequency frequency, bool surfaceTangent);
 
 /// Fragment-shader declarations and the code that writes gl_FragData[0].
-std::string fragmentDeclarations(const Variant& variant, bool tangentNormalMap);
+std::string fragmentDeclarations(const Variant& variant, const FragmentInputs& inputs);
 std::string fragmentImplementation(Frequency frequency, const FragmentInputs& inputs);
 
 } // namespace slLightingPassShaders

@@ -1,13 +1,16 @@
 #include "slLobeImageRenderer.h"
 
 #include "slAlbedoTable.h"
+#include "slBRDFFileEvaluator.h"
 #include "slBRDFLobeSource.h"
 #include "slCoreBoundary.h"
+#include "slMaterialNumbers.h"
 #include "slOffscreen.h"
 #include "slUpdateOrThrow.h"
 
 #include "shadelab/Scene.h"
 
+#include <vtkAbstractArray.h>
 #include <vtkActor.h>
 #include <vtkAxis.h>
 #include <vtkCamera.h>
@@ -36,6 +39,7 @@ VTK_MODULE_INIT(vtkRenderingFreeType);
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 vtkStandardNewMacro(slLobeImageRenderer);
 
@@ -101,32 +105,103 @@ slLobeImageRenderer::~slLobeImageRenderer() = default;
 bool slLobeImageRenderer::AddModel(const char* name)
 {
   shadelab::ShadingModel model;
-  if (!name || !shadelab::parseModelName(name, model) || this->Models.size() >= 6)
+  if (!name || !shadelab::parseModelName(name, model) || this->Entries.size() >= 6)
   {
     return false;
   }
-  this->Models.push_back(static_cast<int>(model));
+  Entry entry;
+  entry.Model = static_cast<int>(model);
+  this->Entries.push_back(entry);
   this->Modified();
   return true;
 }
 
+bool slLobeImageRenderer::AddBRDFFile(const char* path)
+{
+  if (!path || this->Entries.size() >= 6)
+  {
+    return false;
+  }
+  Entry entry;
+  entry.Path = path;
+  this->Entries.push_back(entry);
+  this->Modified();
+  return true;
+}
+
+void slLobeImageRenderer::AddBRDFFileParameter(const char* nameValue)
+{
+  if (nameValue && !this->Entries.empty() && this->Entries.back().Model < 0)
+  {
+    this->Entries.back().Overrides.emplace_back(nameValue);
+    this->Modified();
+  }
+}
+
+void slLobeImageRenderer::GetColor(int index, unsigned char rgb[3])
+{
+  const unsigned char* c = kPalette[std::clamp(index, 0, 5)];
+  std::copy(c, c + 3, rgb);
+}
+
 void slLobeImageRenderer::RemoveAllModels()
 {
-  this->Models.clear();
+  this->Entries.clear();
   this->Modified();
+}
+
+int slLobeImageRenderer::GetNumberOfBRDFFiles()
+{
+  return static_cast<int>(this->FileAlbedos.size());
+}
+
+double slLobeImageRenderer::GetBRDFFileAlbedo(int index)
+{
+  return index >= 0 && index < this->GetNumberOfBRDFFiles() ? this->FileAlbedos[static_cast<size_t>(index)] : 0.0;
+}
+
+std::string slLobeImageRenderer::GetBRDFFileName(int index)
+{
+  int file = 0;
+  for (const Entry& entry : this->Entries)
+  {
+    if (entry.Model < 0 && file++ == index)
+    {
+      return shadelab::brdfDisplayName(entry.Path);
+    }
+  }
+  return std::string();
 }
 
 bool slLobeImageRenderer::Render()
 {
-  if (this->Models.empty())
+  if (this->Entries.empty())
   {
-    vtkErrorMacro(<< "slLobeImageRenderer needs at least one model");
+    vtkErrorMacro(<< "slLobeImageRenderer needs at least one model or .brdf file");
     return false;
   }
   const std::string displayProblem = slDisplayProblem();
   if (!displayProblem.empty())
   {
     vtkErrorMacro(<< displayProblem);
+    return false;
+  }
+  // The .brdf files first: a file that cannot be read or compiled stops
+  // here, before anything is drawn.
+  std::vector<std::unique_ptr<slBRDFFileEvaluator>> evaluators;
+  const bool filesReady = slRunCore(this, [&] {
+    for (const Entry& entry : this->Entries)
+    {
+      if (entry.Model < 0)
+      {
+        const shadelab::BrdfFile file = shadelab::readBrdfFile(entry.Path);
+        evaluators.emplace_back(
+          new slBRDFFileEvaluator(file, shadelab::brdfParameterValues(file, entry.Overrides)));
+      }
+    }
+  });
+  if (!filesReady)
+  {
     return false;
   }
   vtkSmartPointer<vtkRenderWindow> window = slOffscreenWindow(3 * this->PanelWidth, this->PanelHeight);
@@ -140,23 +215,54 @@ bool slLobeImageRenderer::Render()
     makeChart("directional albedo", "incidence (degrees)", "albedo");
 
   vtkNew<slAlbedoTable> albedoTable;
-  albedoTable->SetShininess(this->LobeParameters->GetShininess());
+  slCopyMaterialNumbers(this->LobeParameters.Get(), albedoTable.Get());
   albedoTable->Update();
   vtkTable* curves = albedoTable->GetOutput();
+  vtkAbstractArray* degrees = curves->GetColumnByName("IncidenceDegrees");
 
+  std::vector<double> fileAlbedos;
   double extent = 0.0;
-  for (size_t i = 0; i < this->Models.size(); ++i)
+  size_t fileIndex = 0;
+  for (size_t i = 0; i < this->Entries.size(); ++i)
   {
+    const Entry& entry = this->Entries[i];
     const unsigned char* rgb = kPalette[i];
-    const char* name = shadelab::modelName(static_cast<shadelab::ShadingModel>(this->Models[i]));
+    const std::string name = entry.Model >= 0
+      ? std::string(shadelab::modelName(static_cast<shadelab::ShadingModel>(entry.Model)))
+      : shadelab::brdfDisplayName(entry.Path);
     vtkNew<slBRDFLobeSource> lobe;
-    lobe->SetModel(this->Models[i]);
     slBRDFLobeSource* p = this->LobeParameters;
-    lobe->SetShininess(p->GetShininess());
+    lobe->SetModel(entry.Model >= 0 ? entry.Model : p->GetModel());
+    slCopyMaterialNumbers(p, lobe.Get());
     lobe->SetIncidenceAngle(p->GetIncidenceAngle());
     lobe->SetDiffuseWeight(p->GetDiffuseWeight());
     lobe->SetSpecularWeight(p->GetSpecularWeight());
     lobe->SetMultiplyByCosine(p->GetMultiplyByCosine());
+    vtkSmartPointer<vtkTable> fileCurve;
+    if (entry.Model < 0)
+    {
+      slBRDFFileEvaluator& evaluator = *evaluators[fileIndex++];
+      fileCurve = vtkSmartPointer<vtkTable>::New();
+      vtkNew<vtkFloatArray> xs, ys;
+      xs->SetName("IncidenceDegrees");
+      ys->SetName(name.c_str());
+      const bool evaluated = slRunCore(this, [&] {
+        evaluator.SetLobeValues(lobe);
+        for (vtkIdType row = 0; row < degrees->GetNumberOfTuples(); ++row)
+        {
+          const double angle = degrees->GetVariantValue(row).ToDouble();
+          xs->InsertNextValue(static_cast<float>(angle));
+          ys->InsertNextValue(static_cast<float>(evaluator.AlbedoAtIncidence(angle)));
+        }
+        fileAlbedos.push_back(evaluator.AlbedoAtIncidence(p->GetIncidenceAngle()));
+      });
+      if (!evaluated)
+      {
+        return false;
+      }
+      fileCurve->AddColumn(xs);
+      fileCurve->AddColumn(ys);
+    }
     lobe->Update();
 
     vtkNew<vtkPolyDataMapper> mapper;
@@ -165,7 +271,7 @@ bool slLobeImageRenderer::Render()
     vtkNew<vtkActor> actor;
     actor->SetMapper(mapper);
     actor->GetProperty()->SetColor(rgb[0] / 255.0, rgb[1] / 255.0, rgb[2] / 255.0);
-    actor->GetProperty()->SetOpacity(this->Models.size() > 1 ? 0.55 : 1.0);
+    actor->GetProperty()->SetOpacity(this->Entries.size() > 1 ? 0.55 : 1.0);
     lobes->AddActor(actor);
     const double* b = lobe->GetOutput(0)->GetBounds();
     extent = std::max({ extent, std::abs(b[0]), std::abs(b[1]), std::abs(b[5]) });
@@ -175,11 +281,11 @@ bool slLobeImageRenderer::Render()
     vtkNew<vtkTable> table;
     vtkNew<vtkFloatArray> xs, zs;
     xs->SetName("x");
-    zs->SetName(name);
-    for (vtkIdType p = 0; p < slice->GetNumberOfPoints(); ++p)
+    zs->SetName(name.c_str());
+    for (vtkIdType k = 0; k < slice->GetNumberOfPoints(); ++k)
     {
       double point[3];
-      slice->GetPoint(p, point);
+      slice->GetPoint(k, point);
       xs->InsertNextValue(static_cast<float>(point[0]));
       zs->InsertNextValue(static_cast<float>(point[2]));
     }
@@ -191,10 +297,18 @@ bool slLobeImageRenderer::Render()
     line->SetWidth(2.0);
 
     vtkPlot* curve = albedo->AddPlot(vtkChart::LINE);
-    curve->SetInputData(curves, "IncidenceDegrees", name);
+    if (fileCurve)
+    {
+      curve->SetInputData(fileCurve, 0, 1);
+    }
+    else
+    {
+      curve->SetInputData(curves, "IncidenceDegrees", name);
+    }
     curve->SetColor(rgb[0], rgb[1], rgb[2], 255);
     curve->SetWidth(2.0);
   }
+  this->FileAlbedos = fileAlbedos;
 
   // Incident direction (toward the light) and mirror direction.
   const double t = this->LobeParameters->GetIncidenceAngle() * M_PI / 180.0;
@@ -220,10 +334,14 @@ bool slLobeImageRenderer::Render()
 void slLobeImageRenderer::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Models:";
-  for (int m : this->Models)
+  os << indent << "Models and files:";
+  for (const Entry& entry : this->Entries)
   {
-    os << " " << shadelab::modelName(static_cast<shadelab::ShadingModel>(m));
+    os << " " << (entry.Model >= 0 ? shadelab::modelName(static_cast<shadelab::ShadingModel>(entry.Model)) : entry.Path);
+    for (const std::string& o : entry.Overrides)
+    {
+      os << " --param " << o;
+    }
   }
   os << "\n" << indent << "LobeParameters:\n";
   this->LobeParameters->PrintSelf(os, indent.GetNextIndent());

@@ -8,7 +8,9 @@
  *
  * The lobes come from slBRDFLobeSource (output 0 for the surface, output 1
  * for the polar slice), the albedo curves from slAlbedoTable, so every value
- * is the lighting core's. The 3D panel views the plane of incidence from the
+ * is the lighting core's. BRDF Explorer `.brdf` files overlay the same way:
+ * their lobes and albedo curves (at slAlbedoTable's angles) are evaluated
+ * on the GPU by slBRDFFileEvaluator, with the file's parameters. The 3D panel views the plane of incidence from the
  * side and draws the incident and mirror directions; the two plots are
  * vtkChartXY charts with a legend.
  *
@@ -35,11 +37,34 @@ public:
   vtkTypeMacro(slLobeImageRenderer, slPanelRenderer);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// Adds a model by its scene-file name; false for an unknown name.
+  /// Adds a model by its scene-file name; false for an unknown name or
+  /// when six BRDFs (models and files) are overlaid already.
   bool AddModel(const char* name);
+
+  /// Adds a BRDF Explorer .brdf file, read when rendering; false when six
+  /// BRDFs are overlaid already. Its name in the legends is the file's
+  /// name without its folder (shadelab::brdfDisplayName()).
+  bool AddBRDFFile(const char* path);
+
+  /// A "name=value" override (shadelab::brdfParameterValues()) for the
+  /// parameters of the file added last; ignored if no file was added.
+  void AddBRDFFileParameter(const char* nameValue);
+
+  /// Removes every model and file.
   void RemoveAllModels();
 
-  /// The lobe parameters (shininess, incidence angle, k_d, k_s, cosine
+  /// The colour (0-255) of the @p index-th BRDF added (0 to 5).
+  static void GetColor(int index, unsigned char rgb[3]);
+
+  ///@{
+  /// After Render(): the directional albedo of each file added, in order,
+  /// at the lobes' incidence angle (with its parameters), and its name.
+  int GetNumberOfBRDFFiles();
+  double GetBRDFFileAlbedo(int index);
+  std::string GetBRDFFileName(int index);
+  ///@}
+
+  /// The lobe parameters (the material's numbers, incidence angle, k_d, k_s, cosine
   /// factor) are set on this source; Render() draws it once per model.
   slBRDFLobeSource* GetLobeParameters();
 
@@ -53,7 +78,15 @@ private:
   slLobeImageRenderer(const slLobeImageRenderer&) = delete;
   void operator=(const slLobeImageRenderer&) = delete;
 
-  std::vector<int> Models;
+  /// A model (Model >= 0) or a .brdf file with its overrides.
+  struct Entry
+  {
+    int Model = -1;
+    std::string Path;
+    std::vector<std::string> Overrides;
+  };
+  std::vector<Entry> Entries;
+  std::vector<double> FileAlbedos;
   vtkSmartPointer<slBRDFLobeSource> LobeParameters;
 };
 

@@ -113,6 +113,13 @@ bool slSceneRenderer::Render()
   this->Window = slOffscreenWindow(this->Width > 0 ? this->Width : scene.width, this->Height > 0 ? this->Height : scene.height);
   this->Window->AddRenderer(this->Renderer);
   this->Image = slCaptureWindow(this->Window);
+  // A .brdf file whose GLSL does not compile is known once its shaders are built.
+  if (this->UseShadeLabLighting && *this->LightingPass->GetBrdfError())
+  {
+    vtkErrorMacro(<< this->LightingPass->GetBrdfError());
+    this->Image = nullptr;
+    return false;
+  }
   return true;
 }
 
@@ -183,6 +190,11 @@ bool slSceneRenderer::Prepare()
     // The pass reads the scene's model and frequency each time it is given the scene.
     this->LightingPass->SetScene(this->Scene);
     this->Renderer->SetPass(this->LightingPass);
+    if (*this->LightingPass->GetBrdfError())
+    {
+      vtkErrorMacro(<< this->LightingPass->GetBrdfError());
+      return false;
+    }
   }
   return true;
 }

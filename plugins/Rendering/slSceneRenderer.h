@@ -110,7 +110,9 @@ public:
   bool Prepare();
 
   /// Prepare(), then renders one frame offscreen and captures it. False,
-  /// after vtkErrorMacro, on failure.
+  /// after vtkErrorMacro, on failure, among them a scene's .brdf file that
+  /// cannot be read or whose GLSL does not compile (the pass's
+  /// GetBrdfError(), one line); GetImage() is then null.
   bool Render();
 
   /// The mesh as drawn by the last Prepare(): the input, or a copy with the

@@ -1,4 +1,6 @@
 """The shadelab command line: the render job, and one-line errors for bad input."""
+import json
+import math
 import os
 import subprocess
 import tempfile
@@ -97,6 +99,31 @@ class RenderTest(unittest.TestCase):
         r = run("render", SPOT, "--scene", scene, "-o", self.out)
         self.assert_one_line_failure(r, "shadelab render: " + os.path.join(self.folder.name, "nowhere.png"))
 
+    def test_brdf_in_scene(self):
+        # brdf.file is resolved beside the scene file, --brdf beside the working directory.
+        with open(os.path.join(DATA, "brdf", "blinn-phong-normalized.brdf")) as f:
+            self.write("glossy.brdf", f.read())
+        scene = self.write("s.json", '{"imageSize": [96, 72], "brdf": {"file": "glossy.brdf", "parameters": {"ks": 0}}, '
+                           '"lights": [{"type": "directional", "space": "camera", "intensity": 3}]}')
+        images = {}
+        for name, args in (("scene", []), ("param", ["--param", "ks=0.9"]),
+                           ("option", ["--brdf", os.path.join(DATA, "brdf", "blinn-phong-normalized.brdf"),
+                                       "--param", "ks=0"])):
+            out = os.path.join(self.folder.name, name + ".png")
+            r = subprocess.run([SHADELAB, "render", SPOT, "--scene", "s.json", "-o", out, *args], capture_output=True,
+                               text=True, timeout=120, cwd=self.folder.name)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            with open(out, "rb") as f:
+                images[name] = f.read()
+        self.assertEqual(images["scene"], images["option"], "the same file and value, two ways")
+        self.assertNotEqual(images["scene"], images["param"], "--param sets a value over the scene's")
+
+        bad = self.write("bad.json", '{"brdf": {"file": "glossy.brdf", "parameters": {"ks": 2}}}')
+        r = run("render", SPOT, "--scene", bad, "-o", self.out)
+        self.assert_one_line_failure(r, "shadelab render: " + os.path.join(self.folder.name, "glossy.brdf") + ": ")
+        self.assertIn("ks 2 is out of range [0, 1]", r.stderr)
+        self.assertFalse(os.path.exists(self.out))
+
     def test_usage_errors(self):
         cases = [
             (["render", SPOT], "shadelab render: missing -o/--output FILE\n"),
@@ -158,6 +185,35 @@ class LobeImageTest(unittest.TestCase):
             self.assertIn('"toon" is not a lighting model', r.stderr)
             self.assertFalse(os.path.exists(image + ".other.png"))
 
+    def test_brdf_files_overlaid_with_their_albedo(self):
+        bp = os.path.join(DATA, "brdf", "blinn-phong-normalized.brdf")
+        ward = os.path.join(DATA, "brdf", "ward-anisotropic.brdf")
+        with tempfile.TemporaryDirectory() as folder:
+            image = os.path.join(folder, "lobe.png")
+            r = run("lobe", "--models", "phong", "--brdf", bp, "--param", "kd=0", "--param", "ks=1", "--brdf", ward,
+                    "--incidence", "0", "-o", image)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertEqual(png_size(image), (3 * 400, 360))
+            lines = r.stdout.splitlines()
+            # Normalised Blinn-Phong reflects exactly 1 at normal incidence.
+            self.assertTrue(lines[0].startswith("albedo of blinn-phong-normalized.brdf at 0 degrees: "), lines)
+            self.assertAlmostEqual(float(lines[0].rsplit(" ", 1)[1]), 1.0, delta=1e-4)
+            self.assertTrue(lines[1].startswith("albedo of ward-anisotropic.brdf at 0 degrees: "), lines)
+            # The albedo table takes a column per file; a lobe mesh takes one file.
+            table = os.path.join(folder, "albedo.csv")
+            r = run("lobe", "--albedo-table", "--brdf", bp, "--param", "kd=0", "--param", "ks=1", "--brdf", bp,
+                    "-o", table)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            with open(table) as f:
+                header, first = f.readline().strip().split(","), f.readline().strip().split(",")
+            self.assertEqual(header[-2:], ["blinn-phong-normalized.brdf", "blinn-phong-normalized.brdf (2)"])
+            self.assertAlmostEqual(float(first[-2]), 1.0, delta=1e-4)
+            self.assertAlmostEqual(float(first[-1]), 1.0, delta=1e-4)  # kd 0.5 + ks 0.5, both reflect 1
+            r = run("lobe", "--brdf", bp, "--brdf", ward, "-o", os.path.join(folder, "lobe.vtp"))
+            self.assertEqual(r.returncode, 2)
+            self.assertEqual(r.stderr, "shadelab lobe: --brdf: a lobe mesh takes one .brdf file; an image (-o LOBE.png) "
+                                       "overlays several\n")
+
     def test_lobes_on_a_mesh_image(self):
         with tempfile.TemporaryDirectory() as folder:
             image = os.path.join(folder, "lobes.png")
@@ -184,6 +240,57 @@ class FieldImageTest(unittest.TestCase):
             self.assertEqual(r.returncode, 1)
             self.assertEqual(r.stderr, "shadelab light: " + image + ': the mesh has no point or cell array "Glow"\n')
             self.assertEqual(os.listdir(folder), [])
+
+
+def point_array(path, name):
+    import vtk
+    reader = vtk.vtkXMLPolyDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    array = reader.GetOutput().GetPointData().GetArray(name)
+    return [array.GetTuple(i) for i in range(array.GetNumberOfTuples())]
+
+
+class MaterialOptionsTest(unittest.TestCase):
+    """The material's numbers on the command line (one option per number row of the material table)."""
+
+    def test_every_subcommand_that_lights_lists_them(self):
+        for command in ("render", "light", "lobe", "reference"):
+            text = run(command, "--help").stdout
+            for option in ("--shininess X", "--roughness X", "--roughness-x X", "--roughness-y X", "--ior X"):
+                self.assertIn(option, text, command)
+        self.assertNotIn("--roughness", run("cosine", "--help").stdout)  # N.L reads no material
+
+    def test_options_equal_the_scene_keys(self):
+        with tempfile.TemporaryDirectory() as folder:
+            with open(os.path.join(DATA, "scenes", "default.json")) as f:
+                scene = json.load(f)
+            scene["shading"]["model"] = "cook-torrance-ggx"
+            scene["material"].update(roughness=0.2, ior=3.0)
+            scene["material"].pop("diffuseTexture")
+            path, by_file, by_option = (os.path.join(folder, n) for n in ("s.json", "file.vtp", "option.vtp"))
+            with open(path, "w") as f:
+                json.dump(scene, f)
+            r = run("light", SPOT, "--scene", path, "-o", by_file)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            scene["material"].update(roughness=0.3, ior=1.5)  # the defaults: the options set them
+            with open(path, "w") as f:
+                json.dump(scene, f)
+            r = run("light", SPOT, "--scene", path, "--roughness", "0.2", "--ior", "3", "-o", by_option)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertEqual(point_array(by_option, "Radiance"), point_array(by_file, "Radiance"))
+            r = run("light", SPOT, "--scene", path, "-o", by_option)
+            self.assertNotEqual(point_array(by_option, "Radiance"), point_array(by_file, "Radiance"))
+
+    def test_lone_ward_lobe_peak(self):
+        """Ward with L = V = N: f_r = 1 / (4 pi ax ay)."""
+        with tempfile.TemporaryDirectory() as folder:
+            lobe = os.path.join(folder, "lobe.vtp")
+            r = run("lobe", "--model", "ward", "--incidence", "0", "--roughness-x", "0.2", "--roughness-y", "0.5",
+                    "-o", lobe)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            peak = max(v[0] for v in point_array(lobe, "BRDF"))
+            self.assertAlmostEqual(peak * 4.0 * math.pi * 0.2 * 0.5, 1.0, delta=1e-4)
 
 
 if __name__ == "__main__":

@@ -35,6 +35,15 @@ def cli_case(name, args, message, status=2, files=None):
     return (name, args, inputs, status, message)
 
 
+BRDF_SHADER = b"::begin shader\nvec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) { return vec3(1.0); }\n::end shader\n"
+
+
+def brdf_case(name, data, message, extra=()):
+    """shadelab lobe --brdf b.brdf with a bad file or --param (None: no file)."""
+    return (name, ["lobe", "--brdf", "b.brdf", *extra, "-o", "out.png"], {} if data is None else {"b.brdf": data}, 1,
+            "shadelab lobe: " + message + "\n")
+
+
 CASES = [
     # OBJ
     mesh_case("obj index beyond vertices", "a.obj", obj(b"f 1 2 9\n"), 'line 4: vertex index 9 is out of range [1, 3]'),
@@ -246,7 +255,7 @@ CASES = [
     scene_case("scene empty", b"", "line 1, column 1: malformed JSON: syntax error while parsing value - unexpected end of input; expected '[', '{', or a literal"),
     scene_case("scene nan literal", b'{"background": [NaN, 0, 0]}', 'line 1, column 17: malformed JSON: syntax error while parsing value - invalid literal; last read: \'"background": [N\''),
     scene_case("scene wrong type", b'{"imageSize": "big"}', 'imageSize: expected [width, height]'),
-    scene_case("scene unknown key", b'{"colour": [1, 0, 0]}', 'colour: unknown key (allowed here: "$schema", "background", "camera", "description", "imageSize", "lights", "material", "shading")'),
+    scene_case("scene unknown key", b'{"colour": [1, 0, 0]}', 'colour: unknown key (allowed here: "$schema", "background", "brdf", "camera", "description", "imageSize", "lights", "material", "shading")'),
     scene_case("scene duplicate key", b'{"background": [0, 0, 0], "background": [1, 1, 1]}', 'background: duplicate key'),
     scene_case("scene shininess out of range", b'{"material": {"shininess": -1}}', 'material.shininess: -1 is out of range [0, 100000]'),
     scene_case("scene spot cutoff out of range", b'{"lights": [{"type": "spot", "cutoff": 95}]}', 'lights[0].cutoff: 95 is out of range (0, 90]'),
@@ -294,6 +303,58 @@ CASES = [
     cli_case("unknown compression", ["normals", "m.off", "-o", "out.vtp", "--compress", "gzip"], 'shadelab normals: option --compress: unknown value "gzip" (none, lz4, zlib)\n'),
     cli_case("option without value", ["normals", "m.off", "-o"], 'shadelab normals: option -o needs a value (OUT)\n'),
     cli_case("unknown model", ["light", "m.off", "--model", "toon", "-o", "out.vtp"], 'shadelab light: --model: "toon" is not a lighting model (' + lighting_models() + ')\n'),
+    cli_case("render anisotropic model without tangents", ["render", "m.off", "--model", "ward", "-o", "out.png"],
+             'shadelab render: m.off: the ward model is anisotropic and needs tangents (a 4-component point array '
+             '"Tangents"); compute them first (shadelab tangents, slPolyDataTangents)\n', status=1),
+    cli_case("light anisotropic model without tangents", ["light", "m.off", "--model", "ashikhmin-shirley", "-o",
+                                                         "out.vtp"],
+             'shadelab light: m.off: the ashikhmin-shirley model is anisotropic and needs tangents (a 4-component '
+             'point array "Tangents"); compute them first (shadelab tangents, slPolyDataTangents)\n', status=1),
+    cli_case("compare anisotropic model without tangents", ["compare", "m.off", "--scene", "ward.json", "-o",
+                                                           "out.png"],
+             'shadelab compare: m.off: the ward model is anisotropic and needs tangents (a 4-component point array '
+             '"Tangents"); compute them first (shadelab tangents, slPolyDataTangents)\n', status=1,
+             files={"ward.json": b'{"shading": {"model": "ward"}, "lights": [{"type": "directional"}]}'}),
+    cli_case("roughness out of range", ["render", "m.off", "--roughness", "1.5", "-o", "out.png"],
+             'shadelab render: option --roughness: 1.5 is out of range [0, 1]\n'),
+    cli_case("ior below one", ["light", "m.off", "--ior", "0.5", "-o", "out.vtp"],
+             'shadelab light: option --ior: 0.5 is out of range [1, 10]\n'),
+    cli_case("render brdf that does not parse", ["render", "m.off", "--brdf", "b.brdf", "-o", "out.png"],
+             'shadelab render: b.brdf:2: float needs 4 values (float NAME MIN MAX DEFAULT), the line has 3\n', status=1,
+             files={"b.brdf": b"::begin parameters\nfloat k 0 1\n::end parameters\n::begin shader\n::end shader\n"}),
+    cli_case("render brdf glsl error", ["render", "m.off", "--brdf", "b.brdf", "-o", "out.png"],
+             "shadelab render: b.brdf:3: `nothing' undeclared\n", status=1,
+             files={"b.brdf": b"::begin shader\nvec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) {\n  return nothing;\n}\n::end shader\n"}),
+    cli_case("render brdf parameter out of range", ["render", "m.off", "--brdf", "b.brdf", "--param", "k=2", "-o", "out.png"],
+             'shadelab render: b.brdf: --param "k=2": k 2 is out of range [0, 1] (line 2)\n', status=1,
+             files={"b.brdf": b"::begin parameters\nfloat k 0 1 0.5\n::end parameters\n::begin shader\nvec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) { return vec3(k); }\n::end shader\n"}),
+    cli_case("render param without brdf", ["render", "m.off", "--param", "k=2", "-o", "out.png"],
+             'shadelab render: --param: needs --brdf FILE (or a scene with a "brdf")\n'),
     cli_case("unknown frequency", ["render", "m.off", "--frequency", "sometimes", "-o", "out.png"], 'shadelab render: --frequency: "sometimes" is not one of flat, gouraud, phong\n'),
     cli_case("unknown subcommand", ["paint", "m.off"], 'shadelab: unknown subcommand "paint" (see shadelab --help)\n'),
+    # BRDF Explorer .brdf files (shadelab lobe --brdf)
+    brdf_case("brdf unknown parameter type", b"::begin parameters\nint n 0 1 0\n::end parameters\n" + BRDF_SHADER,
+              'b.brdf:2: unknown parameter type "int" (float, bool or color)'),
+    brdf_case("brdf default out of range", b"::begin parameters\nfloat n 1 100 500\n::end parameters\n" + BRDF_SHADER,
+              'b.brdf:2: n: the default 500 is out of range [1, 100]'),
+    brdf_case("brdf shader without end", b"analytic\n::begin shader\nvec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y)\n",
+              'b.brdf:2: ::begin shader has no ::end shader (the file ends on line 3)'),
+    brdf_case("brdf no shader", b"analytic\n# nothing else\n", 'b.brdf: no shader block (::begin shader ... ::end shader)'),
+    brdf_case("brdf binary garbage", bytes(range(256)), 'b.brdf:1: control byte \\x00 in the text'),
+    brdf_case("brdf glsl does not compile",
+              b"analytic\n::begin parameters\nfloat roughness 0 1 0.5\n::end parameters\n::begin shader\n"
+              b"vec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y)\n{\n    return vec3(roughnes);\n}\n::end shader\n",
+              "b.brdf:8: `roughnes' undeclared"),
+    brdf_case("brdf glsl does not link", b"::begin shader\nvec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y);\n::end shader\n",
+              "b.brdf: unresolved reference to function `BRDF'"),
+    brdf_case("brdf param out of range", b"::begin parameters\nfloat n 1 100 50\n::end parameters\n" + BRDF_SHADER,
+              'b.brdf: --param "n=500": n 500 is out of range [1, 100] (line 2)', ["--param", "n=500"]),
+    brdf_case("brdf unknown param", b"::begin parameters\nfloat n 1 100 50\n::end parameters\n" + BRDF_SHADER,
+              'b.brdf: --param "k=1": the file has no parameter "k" (it has n)', ["--param", "k=1"]),
+    brdf_case("brdf missing file", None, 'b.brdf: cannot open BRDF file'),
+    cli_case("brdf param before file", ["lobe", "--param", "n=3", "--brdf", "b.brdf", "-o", "out.png"],
+             'shadelab lobe: --param n=3 comes before any --brdf FILE\n', files={"b.brdf": BRDF_SHADER}),
+    cli_case("brdf lobes on a mesh", ["lobe", "m.off", "--brdf", "b.brdf", "-o", "out.png"],
+             "shadelab lobe: --brdf: lobes on a mesh take the scene's model; a .brdf file's lobe is drawn alone\n",
+             files={"b.brdf": BRDF_SHADER}),
 ]

@@ -62,9 +62,15 @@ TEST(Degenerate, ZeroNormalGivesOnlyAmbientAndEmission)
 
 /// Diffuse of a white unit light at N.L = 1 on k_d = 1: rho, or rho/pi for
 /// the energy-normalised models (docs/lighting-core.md).
-float unitDiffuse(int model)
+/// The reflection factors TableExpectations.h expects of @p model for unit
+/// N, L, V (V may be zero: no view direction) and unitMaterial(8)'s
+/// parameters, with the tangent along +x.
+test::ReflectionFactors expectedFactors(int model, const glm::vec3& N, const glm::vec3& L, const glm::vec3& V)
 {
-  return modelInfo(static_cast<ShadingModel>(model)).normalized ? static_cast<float>(1.0 / M_PI) : 1.0f;
+  const SceneMaterial d;
+  return test::modelExpectations().at(modelInfo(static_cast<ShadingModel>(model)).name)(test::ReflectionGeometry{
+    glm::dvec3(N), glm::dvec3(L), glm::dvec3(V), 8.0, glm::dvec3(1.0, 0.0, 0.0), d.roughness, d.roughnessX,
+    d.roughnessY, d.ior });
 }
 
 TEST(Degenerate, LightAtTheShadedPoint)
@@ -89,7 +95,7 @@ TEST(Degenerate, LightAtTheShadedPoint)
     EXPECT_EQ(alone.emission, glm::vec3(0.5f)) << model;
 
     const auto both = shadePoint({ atPoint, directionalFrom(n) }, m, model, p, n, eye);
-    EXPECT_NEAR(both.diffuse.x, unitDiffuse(model), 1e-6f) << model;
+    EXPECT_NEAR(both.diffuse.x, expectedFactors(model, n, n, glm::normalize(eye - p)).diffuse, 1e-6f) << model;
     EXPECT_EQ(both.ambient, glm::vec3(0.25f)) << model;
   }
 }
@@ -103,14 +109,11 @@ TEST(Degenerate, EyeAtTheShadedPoint)
   {
     const auto t = shadePoint({ directionalFrom(n) }, unitMaterial(8), model, p, n, p);
     expectFinite(t, "eye at point");
-    EXPECT_NEAR(t.diffuse.x, unitDiffuse(model), 1e-6f) << model;
+    EXPECT_NEAR(t.diffuse.x, expectedFactors(model, n, n, glm::vec3(0.0f)).diffuse, 1e-6f) << model;
     EXPECT_EQ(t.ambient, glm::vec3(0.0f)) << model;
     // At most the model's peak: its expected specular factor with the eye
     // on the mirror direction (here the normal, as the light is).
-    const double peak = test::modelExpectations()
-                          .at(modelInfo(static_cast<ShadingModel>(model)).name)(
-                            test::ReflectionGeometry{ glm::dvec3(n), glm::dvec3(n), glm::dvec3(n), 8.0 })
-                          .specular;
+    const double peak = expectedFactors(model, n, n, n).specular;
     EXPECT_GE(t.specular.x, 0.0f) << model;
     EXPECT_LE(t.specular.x, static_cast<float>(peak) + 1e-6f) << model;
   }

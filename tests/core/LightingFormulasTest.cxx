@@ -293,13 +293,13 @@ TEST(ColourProducts, FoldedLightShadesAsTheLightAndMaterial)
   m.emission = glm::vec3(0.05f);
   const glm::vec3 base(0.5f, 0.8f, 1.0f);
   const glm::vec3 P(0.1f, 0.0f, 0.0f), n = glm::normalize(glm::vec3(0.1f, 0.2f, 1.0f));
-  const glm::vec3 v = glm::normalize(glm::vec3(-0.3f, 0.1f, 1.0f));
+  const glm::vec3 v = glm::normalize(glm::vec3(-0.3f, 0.1f, 1.0f)), t(1.0f, 0.2f, -0.1f);
   for (int model = 0; model < kLightingModelCount; ++model)
   {
-    const glsl::slTerms direct = glsl::slShadeLightUnit(light, m, model, P, n, v);
+    const glsl::slTerms direct = glsl::slShadeLightUnit(light, m, model, P, n, t, v);
     const glsl::slTerms folded =
-      glsl::slShadeLightUnit(glsl::slFoldLight(light, m), glsl::slUnitMaterial(m), model, P, n, v);
-    const glsl::slLightWeights w = glsl::slLightWeightsAt(light, model, P, n, v, m.shininess);
+      glsl::slShadeLightUnit(glsl::slFoldLight(light, m), glsl::slUnitMaterial(m), model, P, n, t, v);
+    const glsl::slLightWeights w = glsl::slLightWeightsAt(light, m, model, P, n, t, v);
     const glsl::slTerms coloured = glsl::slWithBaseColour(folded, base);
     for (int c = 0; c < 3; ++c)
     {

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cctype>
+#include <tuple>
 
 using namespace shadelab;
 using namespace shadelab::test;
@@ -102,10 +103,17 @@ std::vector<ReflectionGeometry> geometries()
     for (const auto& eye : { std::make_pair(0.0, 0.0), std::make_pair(30.0, 180.0), std::make_pair(45.0, 90.0),
            std::make_pair(70.0, 200.0) })
     {
-      for (double n : { 1.0, 8.0, 50.0 })
+      // A wide, a middling and a narrow lobe of each kind; the tangent at 30
+      // degrees from the plane of incidence, so the anisotropic lobes are
+      // not symmetric about it.
+      for (const auto& lobe : { std::make_tuple(1.0, 0.8, 0.9, 2.5), std::make_tuple(8.0, 0.3, 0.2, 1.5),
+             std::make_tuple(50.0, 0.1, 0.05, 1.33) })
       {
+        const double alpha = std::get<1>(lobe), alphaX = std::get<2>(lobe);
         out.push_back({ N, glm::dvec3(polar(radians(lightDegrees))),
-          glm::dvec3(polar(radians(eye.first), radians(eye.second))), n });
+          glm::dvec3(polar(radians(eye.first), radians(eye.second))), std::get<0>(lobe),
+          glm::dvec3(polar(radians(90.0), radians(30.0))), alpha, alphaX, std::min(1.0, 2.5 * alphaX),
+          std::get<3>(lobe) });
       }
     }
   }
@@ -123,11 +131,18 @@ TEST(LightingTables, EveryModelComputesItsExpectedValues)
     {
       const ReflectionFactors want = expected->second(g);
       const int model = static_cast<int>(m.model);
-      const glm::vec3 N(g.N), L(g.L), V(g.V);
-      const double diffuse = glsl::slDiffuseFactor(model, N, L);
-      const double specular = glsl::slSpecularFactor(model, N, L, V, static_cast<float>(g.n));
+      const glm::vec3 N(g.N), L(g.L), V(g.V), X(g.X);
+      glsl::slMaterial mat = unitMaterial(static_cast<float>(g.n));
+      mat.roughness = static_cast<float>(g.alpha);
+      mat.roughnessX = static_cast<float>(g.alphaX);
+      mat.roughnessY = static_cast<float>(g.alphaY);
+      mat.ior = static_cast<float>(g.ior);
+      const double diffuse = glsl::slDiffuseFactor(model, mat, N, L, V);
+      const double specular = glsl::slSpecularFactor(model, mat, N, X, L, V);
       EXPECT_NEAR(diffuse, want.diffuse, 1e-5 * want.diffuse + 1e-7) << m.name;
-      EXPECT_NEAR(specular, want.specular, 1e-4 * want.specular + 1e-6) << m.name << " n " << g.n;
+      EXPECT_NEAR(specular, want.specular, 1e-4 * want.specular + 1e-6)
+        << m.name << " n " << g.n << " alpha " << g.alpha << " L " << g.L.x << " " << g.L.z << " V " << g.V.x << " "
+        << g.V.y << " " << g.V.z;
     }
   }
   EXPECT_EQ(modelExpectations().size(), static_cast<size_t>(kLightingModelCount)) << "an expectation names no model";
@@ -140,12 +155,12 @@ TEST(LightingTables, ReadsColumnIsWhatTheFormulaReads)
   // result there, each one it does not read leaves it alone.
   slLight light = directionalFrom(polar(radians(30.0)));
   light.ambient = glm::vec3(0.3f);
-  const glm::vec3 P(0.0f), N(0.0f, 0.0f, 1.0f), eye = 5.0f * polar(radians(-20.0));
+  const glm::vec3 P(0.0f), N(0.0f, 0.0f, 1.0f), X(1.0f, 0.0f, 0.0f), eye = 5.0f * polar(radians(-20.0), 0.5);
   glsl::slMaterial base = unitMaterial(10.0f);
   base.ambient = glm::vec3(0.5f);
   base.emission = glm::vec3(0.25f);
   auto total = [&](int model, const glsl::slMaterial& m) {
-    return glsl::slTotal(glsl::slAddEmission(glsl::slShadeLight(light, m, model, P, N, eye), m)).x;
+    return glsl::slTotal(glsl::slAddEmission(glsl::slShadeLight(light, m, model, P, N, X, eye), m)).x;
   };
   for (const LightingModelInfo& info : kLightingModels)
   {
@@ -154,7 +169,7 @@ TEST(LightingTables, ReadsColumnIsWhatTheFormulaReads)
     auto check = [&](unsigned bit, const char* what, const glsl::slMaterial& changed) {
       EXPECT_EQ(total(model, changed) != before, (info.reads & bit) != 0) << info.name << " and " << what;
     };
-#define SHADELAB_CHANGE(type, field, bit, what)                                                                       \
+#define SHADELAB_CHANGE(type, field, bit, ...)                                                                     \
   {                                                                                                                   \
     glsl::slMaterial changed = base;                                                                                  \
     changed.field = changed.field * 2.0f;                                                                             \
@@ -170,13 +185,14 @@ TEST(LightingTables, LobeColumnIsTheSpecularLobesShape)
   // Light along the normal, eye at 60 degrees: R.V = cos 60 around the
   // mirror direction, N.H = cos 30 around the normal in H. The specular
   // factor relative to the eye on the normal shows which.
-  const glm::vec3 N(0.0f, 0.0f, 1.0f), L = N;
+  const glm::vec3 N(0.0f, 0.0f, 1.0f), L = N, X(1.0f, 0.0f, 0.0f);
   const float n = 6.0f;
+  const glsl::slMaterial mat = unitMaterial(n);
   for (const LightingModelInfo& m : kLightingModels)
   {
     const int model = static_cast<int>(m.model);
-    const double onAxis = glsl::slSpecularFactor(model, N, L, N, n);
-    const double off = glsl::slSpecularFactor(model, N, L, polar(radians(60.0)), n);
+    const double onAxis = glsl::slSpecularFactor(model, mat, N, X, L, N);
+    const double off = glsl::slSpecularFactor(model, mat, N, X, L, polar(radians(60.0)));
     switch (m.lobe)
     {
       case SpecularLobe::None:
@@ -188,6 +204,14 @@ TEST(LightingTables, LobeColumnIsTheSpecularLobesShape)
         break;
       case SpecularLobe::Halfway:
         EXPECT_NEAR(off / onAxis, std::pow(std::cos(radians(30.0)), n), 1e-5) << m.name;
+        break;
+      case SpecularLobe::GGX:
+      case SpecularLobe::Beckmann:
+      case SpecularLobe::Ward:
+      case SpecularLobe::AshikhminShirley:
+        // A distribution of H: its peak is at H = N (the mirror direction).
+        EXPECT_GT(onAxis, 0.0) << m.name;
+        EXPECT_LT(off, 0.5 * onAxis) << m.name;
         break;
     }
   }
@@ -224,7 +248,7 @@ TEST(LightingTables, LightsWithoutDiffuseLightOnlyTheAmbientTerm)
     slLight light = expectationLight(static_cast<int>(t.type));
     light.ambient = glm::vec3(0.5f);
     const glsl::slTerms terms = glsl::slShadeLight(light, unitMaterial(4.0f), glsl::SL_MODEL_PHONG,
-      glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, 1.0f), glm::vec3(0.0f, 0.0f, 5.0f));
+      glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, 1.0f), glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 0.0f, 5.0f));
     const bool lit = terms.diffuse.x > 0.0f || terms.specular.x > 0.0f;
     EXPECT_EQ(lit, (t.parameters & kLightDiffuse) != 0) << t.name;
   }

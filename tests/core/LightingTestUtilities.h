@@ -6,6 +6,7 @@
 
 #include "shadelab/LightingGLSL.h"
 #include "shadelab/LightingTables.h"
+#include "shadelab/Scene.h"
 
 #include <cmath>
 #include <vector>
@@ -61,16 +62,23 @@ inline slLight directionalFrom(const glm::vec3& toLight)
   return l;
 }
 
-/// k_d = k_s = 1, no ambient, no emission.
-inline slMaterial unitMaterial(float shininess)
+/// Grey k_d and k_s, no ambient, no emission; the other parameters
+/// (roughness, index of refraction) the scene format's defaults.
+inline slMaterial greyMaterial(float kd, float ks, float shininess)
 {
-  slMaterial m;
+  slMaterial m = toEvaluationMaterial(SceneMaterial());
   m.ambient = glm::vec3(0.0f);
-  m.diffuse = glm::vec3(1.0f);
-  m.specular = glm::vec3(1.0f);
+  m.diffuse = glm::vec3(kd);
+  m.specular = glm::vec3(ks);
   m.emission = glm::vec3(0.0f);
   m.shininess = shininess;
   return m;
+}
+
+/// k_d = k_s = 1, no ambient, no emission.
+inline slMaterial unitMaterial(float shininess)
+{
+  return greyMaterial(1.0f, 1.0f, shininess);
 }
 
 /// The unit vector at polar angle theta from +z, azimuth phi (radians).

@@ -1,5 +1,6 @@
 // Scene files: strict validation with one-line messages naming the file, the
 // key path and the problem; and a lossless round trip.
+#include "shadelab/BrdfAssignment.h"
 #include "shadelab/DefaultScene.h"
 #include "shadelab/SceneFile.h"
 #include "shadelab/SceneKeys.h"
@@ -230,10 +231,56 @@ TEST(SceneFile, RoundTripIsLossless)
   EXPECT_EQ(back.material.diffuseTexture, "wood.png");
 }
 
+TEST(SceneFile, BrdfFileAndParameters)
+{
+  // Values as "name=value" assignments, what `shadelab render --param` takes.
+  const Scene s = parseScene(
+    R"({"brdf": {"file": "ward.brdf", "parameters": {"alpha": 0.25, "iso": true, "tint": [1, 0.5, 0]}}})", "a.json");
+  EXPECT_EQ(s.brdf.file, "ward.brdf");
+  EXPECT_EQ(s.brdf.parameters, (std::vector<std::string>{ "alpha=0.25", "iso=1", "tint=1,0.5,0" }));
+  const Scene back = parseScene(sceneToJson(s), "back.json");
+  EXPECT_EQ(back.brdf.file, s.brdf.file);
+  EXPECT_EQ(back.brdf.parameters, s.brdf.parameters);
+  EXPECT_EQ(sceneToJson(back), sceneToJson(s));
+  EXPECT_EQ(sceneToJson(Scene()).find("brdf"), std::string::npos) << "no brdf key without a file";
+
+  EXPECT_EQ(errorFor(R"({"brdf": {"parameters": {}}})"), "bad.json: brdf: missing key \"file\" (the .brdf file)");
+  EXPECT_EQ(errorFor(R"({"brdf": {"file": ""}})"), "bad.json: brdf.file: must name a .brdf file");
+  EXPECT_EQ(errorFor(R"({"brdf": {"file": "a.brdf", "parameters": {"k": "x"}}})"),
+    "bad.json: brdf.parameters.k: expected a number, true/false or [r, g, b], got a string");
+  EXPECT_EQ(errorFor(R"({"brdf": {"file": "a.brdf", "parameters": {"c": [1, -1, 0]}}})").rfind(
+              "bad.json: brdf.parameters.c[1]: ", 0),
+    0u);
+  EXPECT_EQ(errorFor(R"({"brdf": {"file": "a.brdf", "parameters": [1]}})"),
+    "bad.json: brdf.parameters: expected an object of parameter values, got an array");
+}
+
+TEST(SceneFile, BrdfAssignmentsReadBackExactly)
+{
+  // What the pass, the viewer and the scene reader write is what the .brdf
+  // reader takes, to the float: every kind, values with no short decimal.
+  const BrdfFile file = parseBrdfText("::begin parameters\nfloat a 0 1 0.5\nbool b 0\ncolor c 0 0 0\n"
+                                      "::end parameters\n::begin shader\nvec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) { return c; }\n"
+                                      "::end shader\n",
+    "t.brdf");
+  const std::vector<glm::vec3> values{ glm::vec3(1.0f / 3.0f), glm::vec3(1.0f),
+    glm::vec3(0.1f, 2.0f / 7.0f, 1e-7f) };
+  std::vector<std::string> assignments;
+  for (size_t i = 0; i < values.size(); ++i)
+  {
+    assignments.push_back(brdfAssignment(file.parameters[i], values[i]));
+  }
+  EXPECT_EQ(assignments[1], "b=1");
+  const std::vector<glm::vec3> back = brdfParameterValues(file, assignments);
+  EXPECT_EQ(back[0].x, values[0].x);
+  EXPECT_EQ(back[1].x, 1.0f);
+  EXPECT_EQ(back[2], values[2]);
+}
+
 TEST(SceneFile, ShippedScenesAreValid)
 {
   for (const char* name : { "default.json", "glow.json", "regression/all-lights.json", "regression/directional.json",
-         "regression/point.json", "regression/spot.json", "regression/ambient.json" })
+         "regression/point.json", "regression/spot.json", "regression/ambient.json", "regression/microfacet.json" })
   {
     const Scene s = readSceneFile(std::string(SHADELAB_DATA_DIR) + "/scenes/" + name);
     EXPECT_FALSE(s.lights.empty()) << name;
@@ -262,6 +309,7 @@ TEST(SceneFile, SchemaListsExactlyTheKeysTheReaderAccepts)
   EXPECT_EQ(allowedIn(errorFor(R"({"shading": {"zzz": 1}})")), schemaKeys(schema["$defs"]["shading"]));
   EXPECT_EQ(allowedIn(errorFor(R"({"material": {"zzz": 1}})")), schemaKeys(schema["$defs"]["material"]));
   EXPECT_EQ(allowedIn(errorFor(R"({"camera": {"zzz": 1}})")), schemaKeys(schema["$defs"]["camera"]));
+  EXPECT_EQ(allowedIn(errorFor(R"({"brdf": {"file": "a.brdf", "zzz": 1}})")), schemaKeys(schema["$defs"]["brdf"]));
   for (const LightTypeInfo& t : kLightTypes)
   {
     const std::string light = std::string(R"({"lights": [{"type": ")") + t.name + R"(", "zzz": 1}]})";
@@ -361,6 +409,10 @@ void expectSchemaMatches(
       EXPECT_EQ(p["enum"], nlohmann::json(lightSpaceNames()));
       value = lightSpaceName(object.*(key.space));
       break;
+    case SceneKeyKind::Parameters:
+      EXPECT_EQ(p["type"], "object");
+      EXPECT_EQ(p["additionalProperties"]["oneOf"].size(), 3u) << p.dump();
+      return; // the file's defaults hold for parameters not given
   }
   if (needsDefault)
   {
@@ -405,6 +457,11 @@ TEST(SceneFile, SchemaTypesRangesAndDefaultsAreTheKeyTables)
   {
     expectSchemaMatches(schema, defs["material"]["properties"], key, SceneMaterial(), true, "material");
   }
+  for (const SceneKey<SceneBrdf>& key : brdfKeys())
+  {
+    expectSchemaMatches(schema, defs["brdf"]["properties"], key, SceneBrdf(), false, "brdf");
+  }
+  EXPECT_EQ(defs["brdf"]["required"], nlohmann::json::array({ "file" }));
   for (const SceneKey<SceneCamera>& key : cameraKeys())
   {
     // position and focalPoint have no default: without them the mesh is fitted.

@@ -179,6 +179,7 @@ void expectRowStates(const SceneKey<Struct>& key, const std::vector<SceneKey<Str
       break;
     case SceneKeyKind::Point:
     case SceneKeyKind::Text:
+    case SceneKeyKind::Parameters:
       break;
   }
   const std::vector<double> stated = numbersIn(defaultCell);
@@ -291,6 +292,7 @@ void expectObjectRows(const std::vector<SceneKey<Struct>>& keys, const std::stri
 TEST(SceneFormatDoc, EveryMaterialAndCameraKeyWithItsRangeAndDefault)
 {
   expectObjectRows(materialKeys(), "material.");
+  expectObjectRows(brdfKeys(), "brdf.");
   expectObjectRows(cameraKeys(), "camera.");
 }
 

@@ -58,7 +58,7 @@ TEST(ShaderSource, CompilesAsGLSL150)
            "in vec3 P;\nin vec3 N;\nout vec4 color;\n"
            "void main()\n{\n  slTerms t = slZeroTerms();\n"
            "  for (int i = 0; i < 8; ++i)\n  {\n"
-           "    t = slAddTerms(t, slShadeLight(lights[i], material, model, P, N, vec3(0.0f)));\n  }\n"
+           "    t = slAddTerms(t, slShadeLight(lights[i], material, model, P, N, vec3(1.0f, 0.0f, 0.0f), vec3(0.0f)));\n  }\n"
            "  vec3 n = slTangentToSurface(slDecodeNormal(N, -1.0f, 2.0f), N, P, 1.0f);\n"
            "  color = vec4(slTotal(slAddEmission(t, material)) + slRamp(n.x) + slDiverging(n.y), 1.0f);\n}\n";
   }

@@ -121,6 +121,13 @@ def scene_seeds():
         shutil.copy(os.path.join(folder("fuzz_mesh_off"), name), d)
 
 
+def brdf_seeds():
+    d = folder("fuzz_brdf_file")
+    data = os.path.join(os.path.dirname(os.path.dirname(HERE)), "data", "brdf")
+    for name in sorted(os.listdir(data)):
+        shutil.copy(os.path.join(data, name), d)
+
+
 def image_seeds():
     for ext, channels in (("png", 3), ("jpg", 3), ("hdr", 3), ("exr", 4)):
         d = folder("fuzz_image_" + ext)
@@ -131,4 +138,5 @@ def image_seeds():
 if __name__ == "__main__":
     mesh_seeds()
     scene_seeds()
+    brdf_seeds()
     image_seeds()

@@ -5,6 +5,7 @@
 // principles with <cmath>, never through the code under test.
 
 #include "shadelab/Scene.h"
+#include "AzimuthTangents.h"
 #include "slScene.h"
 
 #include <vtkCellArray.h>
@@ -30,7 +31,8 @@ namespace test
 {
 constexpr double kPi = 3.14159265358979323846;
 
-/// A UV sphere of radius 1 at the origin with point normals.
+/// A UV sphere of radius 1 at the origin with point normals and tangents
+/// (addAzimuthTangents()).
 inline vtkSmartPointer<vtkPolyData> sphere(int resolution = 12)
 {
   vtkNew<vtkSphereSource> source;
@@ -39,10 +41,11 @@ inline vtkSmartPointer<vtkPolyData> sphere(int resolution = 12)
   source->SetPhiResolution(resolution);
   source->Update();
   vtkSmartPointer<vtkPolyData> mesh = source->GetOutput();
+  test::addAzimuthTangents(mesh);
   return mesh;
 }
 
-/// One triangle per given point/normal pair (points spread out on z = 0).
+/// One vertex per given point/normal pair, with tangents (addAzimuthTangents()).
 inline vtkSmartPointer<vtkPolyData> pointsWithNormals(const std::vector<std::array<double, 6>>& pn)
 {
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
@@ -60,6 +63,7 @@ inline vtkSmartPointer<vtkPolyData> pointsWithNormals(const std::vector<std::arr
   mesh->SetPoints(points);
   mesh->SetVerts(verts);
   mesh->GetPointData()->SetNormals(normals);
+  test::addAzimuthTangents(mesh);
   return mesh;
 }
 

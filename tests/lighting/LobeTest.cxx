@@ -1,6 +1,8 @@
 // BRDF lobes and directional albedo against closed forms and independent quadrature.
 #include "LightingTestMeshes.h"
 
+#include "shadelab/Albedo.h"
+
 #include "slAlbedoTable.h"
 #include "slBRDFLobeSource.h"
 #include "slLobesOnMesh.h"
@@ -14,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <string>
 
 using namespace shadelab;
 using namespace shadelab::test;
@@ -67,6 +70,70 @@ TEST(AlbedoTable, MatchesClosedFormsAndNormalisedModelsStayAtMostOne)
   EXPECT_GT(column(t, "phong", 8), 3.0 * column(t, "phong", 0));
 }
 
+TEST(AlbedoTable, MaterialNumbersReachTheTable)
+{
+  // Rougher GGX: the same column as the core's directional albedo at that roughness.
+  vtkNew<slAlbedoTable> table;
+  table->SetNumberOfAngles(3);
+  ASSERT_TRUE(table->SetMaterialParameter("roughness", 0.8));
+  table->Update();
+  glsl::slMaterial m = toEvaluationMaterial(SceneMaterial()); // the table's defaults (ior 1.5)
+  m.ambient = m.diffuse = m.emission = glm::vec3(0.0f);
+  m.specular = glm::vec3(1.0f);
+  m.roughness = 0.8f;
+  const int ggx = static_cast<int>(ShadingModel::CookTorranceGGX);
+  for (int row = 0; row < 3; ++row)
+  {
+    const double theta = column(table->GetOutput(), "IncidenceDegrees", row) * kPi / 180.0;
+    EXPECT_NEAR(column(table->GetOutput(), "cook-torrance-ggx", row), directionalAlbedo(ggx, m, theta), 1e-12) << row;
+  }
+  glsl::slMaterial smoother = m;
+  smoother.roughness = 0.3f; // the table's default: the parameter did make a difference
+  EXPECT_GT(std::abs(directionalAlbedo(ggx, m, 0.0) - directionalAlbedo(ggx, smoother, 0.0)), 1e-3);
+}
+
+TEST(AlbedoTable, ClosedFormsAtTheMaterialsRoughnessAndIndex)
+{
+  vtkNew<slAlbedoTable> table;
+  table->SetNumberOfAngles(4);
+  table->SetMaterialParameter("roughness", 5.0);
+  table->SetMaterialParameter("ior", 0.5);
+  EXPECT_EQ(table->GetMaterialParameter("roughness"), 1.0);
+  EXPECT_EQ(table->GetMaterialParameter("ior"), 1.0);
+  table->SetMaterialParameter("ior", 10.0);
+  table->Update();
+  // GGX at roughness 1 and normal incidence: D = 1 / pi, G2 = 2 c / (1 + c)
+  // at cos(theta_o) = c, V.H = sqrt((1 + c) / 2), so a = integral over [0, 1]
+  // of F(V.H) c / (1 + c) dc with Schlick's F, F0 = (9 / 11)^2.
+  const double f0 = std::pow(9.0 / 11.0, 2.0);
+  const int steps = 20000;
+  double expected = 0.0;
+  for (int i = 0; i < steps; ++i)
+  {
+    const double c = (i + 0.5) / steps, vh = std::sqrt(0.5 * (1.0 + c));
+    expected += (f0 + (1.0 - f0) * std::pow(1.0 - vh, 5.0)) * c / (1.0 + c) / steps;
+  }
+  EXPECT_NEAR(column(table->GetOutput(), "cook-torrance-ggx", 0), expected, 1e-6);
+  // Oren-Nayar at roughness 0 is the normalised Lambert: 1 at every angle.
+  table->SetMaterialParameter("roughness", 0.0);
+  table->Update();
+  for (int row = 0; row < 4; ++row)
+  {
+    EXPECT_NEAR(column(table->GetOutput(), "oren-nayar", row), 1.0, 1e-6) << row;
+  }
+  // Ward's pair: swapping X and Y leaves normal incidence alone and changes
+  // an incidence in the plane of X.
+  table->SetMaterialParameter("roughnessX", 0.1);
+  table->SetMaterialParameter("roughnessY", 0.6);
+  table->Update();
+  const double normal = column(table->GetOutput(), "ward", 0), oblique = column(table->GetOutput(), "ward", 2);
+  table->SetMaterialParameter("roughnessX", 0.6);
+  table->SetMaterialParameter("roughnessY", 0.1);
+  table->Update();
+  EXPECT_NEAR(column(table->GetOutput(), "ward", 0), normal, 1e-6);
+  EXPECT_GT(std::abs(column(table->GetOutput(), "ward", 2) - oblique), 1e-3);
+}
+
 TEST(BRDFLobeSource, NormalisedLambertIsAHemisphereOfRadiusRhoOverPi)
 {
   vtkNew<slBRDFLobeSource> lobe;
@@ -118,6 +185,68 @@ TEST(BRDFLobeSource, ShininessTakesTheSceneFormatsRange)
   EXPECT_EQ(lobe->GetShininess(), 1.0e5);
   lobe->SetShininess(-1.0);
   EXPECT_EQ(lobe->GetShininess(), 0.0);
+}
+
+TEST(BRDFLobeSource, MaterialNumbersReachTheLobe)
+{
+  // GGX at normal incidence, seen along the normal: D = 1 / (pi a^2), the
+  // height-correlated G2 / (4 ci co) = 1/4, F = F0 = ((ior - 1) / (ior + 1))^2.
+  vtkNew<slBRDFLobeSource> lobe;
+  lobe->SetModel(static_cast<int>(ShadingModel::CookTorranceGGX));
+  lobe->SetIncidenceAngle(0.0);
+  for (double a : { 0.2, 0.5 })
+  {
+    EXPECT_TRUE(lobe->SetMaterialParameter("roughness", a));
+    EXPECT_TRUE(lobe->SetMaterialParameter("ior", 2.0));
+    lobe->Update();
+    const double f0 = (1.0 / 3.0) * (1.0 / 3.0);
+    EXPECT_NEAR(lobe->GetOutput(0)->GetPointData()->GetScalars()->GetTuple1(0), f0 / (4.0 * kPi * a * a), 1e-5) << a;
+  }
+  // Out of range: clamped to the scene format's range; unknown keys: an error.
+  lobe->SetMaterialParameter("roughness", 3.0);
+  EXPECT_EQ(lobe->GetMaterialParameter("roughness"), 1.0);
+  std::string error = callError(lobe, [&] { return lobe->SetMaterialParameter("gloss", 1.0); });
+  EXPECT_NE(error.find("\"gloss\" is not a number of the material (shininess, roughness"), std::string::npos) << error;
+  error = callError(lobe, [&] { return lobe->SetMaterialParameter("diffuse", 1.0); });
+  EXPECT_NE(error.find("\"diffuse\" is not a number"), std::string::npos) << error;
+  error = callError(lobe, [&] { return lobe->SetMaterialParameter("ior", NAN); });
+  EXPECT_NE(error.find("ior: NaN"), std::string::npos) << error;
+  EXPECT_EQ(lobe->GetMaterialParameter("ior"), 2.0);
+}
+
+TEST(BRDFLobeSource, WardLobeFollowsTheRoughnessPair)
+{
+  // Ward at normal incidence (L = N = +z), tangent X = +x, written in the
+  // half vector's angles: f = exp(-tan^2(d) (cos^2(p) / ax^2 + sin^2(p) / ay^2))
+  // / (4 pi ax ay sqrt(cos theta_o)), d the half vector's polar angle and p its azimuth.
+  const double ax = 0.1, ay = 0.4;
+  vtkNew<slBRDFLobeSource> lobe;
+  lobe->SetModel(static_cast<int>(ShadingModel::Ward));
+  lobe->SetIncidenceAngle(0.0);
+  lobe->SetMaterialParameter("roughnessX", ax);
+  lobe->SetMaterialParameter("roughnessY", ay);
+  lobe->Update();
+  vtkPolyData* surface = lobe->GetOutput(0);
+  vtkDataArray* r = surface->GetPointData()->GetScalars();
+  int checked = 0;
+  for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    surface->GetPoint(i, p);
+    const double length = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+    if (length < 1e-3 || p[2] < 0.05 * length)
+    {
+      continue; // too small to have a direction, or grazing
+    }
+    const double thetaO = std::acos(p[2] / length), phi = std::atan2(p[1], p[0]);
+    const double d = 0.5 * thetaO, t2 = std::tan(d) * std::tan(d);
+    const double c = std::cos(phi), s = std::sin(phi);
+    const double f =
+      std::exp(-t2 * (c * c / (ax * ax) + s * s / (ay * ay))) / (4.0 * kPi * ax * ay * std::sqrt(std::cos(thetaO)));
+    EXPECT_NEAR(r->GetTuple1(i), f, 1e-4 * f + 1e-6) << i;
+    ++checked;
+  }
+  EXPECT_GT(checked, 100);
 }
 
 TEST(LobesOnMesh, EachLobeSitsInItsPointsNormalFrame)
@@ -240,4 +369,80 @@ TEST(LobesOnMesh, TinyLobesAndPointsThatAreNotFinite)
   lobes->SetPointIds(ids);
   lobes->SetInputData(mesh);
   EXPECT_EQ(updateError(lobes), "input mesh: point 0 has a coordinate that is not finite");
+}
+
+TEST(BRDFLobeSource, GivenBRDFValuesMakeTheLobe)
+{
+  // f_r given per direction (as the GPU gives a .brdf file's): a constant
+  // (0.1, 0.2, 0.3) is a hemisphere of radius 0.2, times cos(theta_o) with
+  // the cosine factor; the model's settings no longer matter.
+  for (bool cosine : { false, true })
+  {
+    vtkNew<slBRDFLobeSource> lobe;
+    lobe->SetModel(1);
+    lobe->SetIncidenceAngle(50.0);
+    lobe->SetMultiplyByCosine(cosine);
+    vtkNew<vtkFloatArray> surface, slice;
+    lobe->ComputeOutgoingDirections(surface, slice);
+    auto constant = [](vtkFloatArray* directions) {
+      auto values = vtkSmartPointer<vtkFloatArray>::New();
+      values->SetNumberOfComponents(3);
+      for (vtkIdType k = 0; k < directions->GetNumberOfTuples(); ++k)
+      {
+        values->InsertNextTuple3(0.1, 0.2, 0.3);
+      }
+      return values;
+    };
+    lobe->SetBRDFValues(constant(surface), constant(slice));
+    ASSERT_EQ(updateError(lobe), "");
+    for (int port : { 0, 1 })
+    {
+      vtkPolyData* output = lobe->GetOutput(port);
+      vtkFloatArray* directions = port == 0 ? surface.Get() : slice.Get();
+      ASSERT_EQ(output->GetNumberOfPoints(), directions->GetNumberOfTuples());
+      for (vtkIdType k = 0; k < output->GetNumberOfPoints(); ++k)
+      {
+        double p[3], d[3];
+        output->GetPoint(k, p);
+        directions->GetTuple(k, d);
+        const double r = cosine ? 0.2 * std::max(0.0, d[2]) : 0.2;
+        for (int c = 0; c < 3; ++c)
+        {
+          EXPECT_NEAR(p[c], r * d[c], 1e-6) << port << " " << k;
+        }
+      }
+    }
+  }
+  // Every direction is a unit vector on the upper hemisphere.
+  vtkNew<slBRDFLobeSource> lobe;
+  vtkNew<vtkFloatArray> surface, slice;
+  lobe->ComputeOutgoingDirections(surface, slice);
+  EXPECT_EQ(surface->GetNumberOfTuples(), 1 + 32 * 64);
+  EXPECT_EQ(slice->GetNumberOfTuples(), 2 * 32 * 4 + 1);
+  for (vtkIdType k = 0; k < surface->GetNumberOfTuples(); ++k)
+  {
+    double d[3];
+    surface->GetTuple(k, d);
+    EXPECT_NEAR(d[0] * d[0] + d[1] * d[1] + d[2] * d[2], 1.0, 1e-6);
+    EXPECT_GE(d[2], -1e-6);
+  }
+}
+
+TEST(BRDFLobeSource, BRDFValuesOfTheWrongSizeAreAnError)
+{
+  vtkNew<slBRDFLobeSource> lobe;
+  vtkNew<vtkFloatArray> surface, slice;
+  lobe->ComputeOutgoingDirections(surface, slice);
+  vtkNew<vtkFloatArray> shortSurface;
+  shortSurface->SetNumberOfComponents(3);
+  shortSurface->SetNumberOfTuples(5);
+  lobe->SetBRDFValues(shortSurface, slice);
+  EXPECT_EQ(updateError(lobe), "the surface BRDF values hold 5 tuples of 3 components; the lobe has 2049 directions "
+                               "(3 components each)");
+  EXPECT_EQ(lobe->GetOutput(0)->GetNumberOfPoints(), 0);
+  lobe->SetBRDFValues(surface, nullptr);
+  EXPECT_EQ(updateError(lobe), "SetBRDFValues needs both arrays, the surface's and the slice's");
+  lobe->SetBRDFValues(nullptr, nullptr);
+  EXPECT_EQ(updateError(lobe), "");
+  EXPECT_GT(lobe->GetOutput(0)->GetNumberOfPoints(), 0);
 }

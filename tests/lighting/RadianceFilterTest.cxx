@@ -123,6 +123,18 @@ TEST(RadianceFilter, VectorizedLoopAgreesWithShadePointForEveryModelAndLightType
     base->InsertNextTuple3(0.2 + 0.8 * (i % 7) / 6.0, 1.0 - 0.5 * (i % 3) / 2.0, 0.5 + 0.5 * (i % 2));
   }
   mesh->GetPointData()->AddArray(base);
+  // Tangents for the anisotropic models: not unit, not orthogonal to the
+  // normal, with a handedness (the lighting orthonormalises and ignores it).
+  vtkNew<vtkFloatArray> tangents;
+  tangents->SetName("Tangents");
+  tangents->SetNumberOfComponents(4);
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    tangents->InsertNextTuple4(-2.0 * p[1], 2.0 * p[0], 0.3, (i % 2) ? 1.0 : -1.0);
+  }
+  mesh->GetPointData()->AddArray(tangents);
   const glm::vec3 eye(1, 2, 5);
   const char* terms[] = { "Ambient", "Diffuse", "Specular", "Radiance" };
   for (int variant = 0; variant < 2 * kLightingModelCount; ++variant)
@@ -156,15 +168,16 @@ TEST(RadianceFilter, VectorizedLoopAgreesWithShadePointForEveryModelAndLightType
     };
     for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
     {
-      double p[3], n[3], b[3];
+      double p[3], n[3], b[3], t[4];
       mesh->GetPoint(i, p);
       mesh->GetPointData()->GetNormals()->GetTuple(i, n);
+      tangents->GetTuple(i, t);
       base->GetTuple(i, b);
       glsl::slMaterial m = toEvaluationMaterial(scene->GetScene().material);
       m.ambient *= glm::vec3(b[0], b[1], b[2]);
       m.diffuse *= glm::vec3(b[0], b[1], b[2]);
-      const glm::vec3 P(p[0], p[1], p[2]), N(n[0], n[1], n[2]);
-      const glsl::slTerms expected = shadePoint(lights, m, model, P, N, eye);
+      const glm::vec3 P(p[0], p[1], p[2]), N(n[0], n[1], n[2]), T(t[0], t[1], t[2]);
+      const glsl::slTerms expected = shadePoint(lights, m, model, P, N, eye, T);
       const glm::vec3 values[] = { expected.ambient, expected.diffuse, expected.specular, glsl::slTotal(expected) };
       for (int t = 0; t < 4; ++t)
       {
@@ -173,7 +186,7 @@ TEST(RadianceFilter, VectorizedLoopAgreesWithShadePointForEveryModelAndLightType
       for (size_t l = 0; l < lights.size(); ++l)
       {
         const std::string name = "Radiance_" + std::to_string(l);
-        compare(tuple3(out, name.c_str(), i), glsl::slTotal(glsl::slShadeLight(lights[l], m, model, P, N, eye)));
+        compare(tuple3(out, name.c_str(), i), glsl::slTotal(glsl::slShadeLight(lights[l], m, model, P, N, T, eye)));
       }
     }
     EXPECT_LT(worst, 1e-4) << "model " << model << ", shininess " << withShininess.material.shininess;

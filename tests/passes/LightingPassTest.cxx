@@ -1,5 +1,6 @@
 // slLightingPass: agreement with the CPU, the differences between flat,
 // Gouraud and Phong, component views, and parameter updates.
+#include "AzimuthTangents.h"
 #include "PassTestUtilities.h"
 
 #include "shadelab/LightingGLSL.h"
@@ -47,6 +48,7 @@ vtkSmartPointer<vtkPolyData> sphere(int resolution)
   normals->ComputeCellNormalsOn();
   normals->Update();
   vtkSmartPointer<vtkPolyData> out = normals->GetOutput();
+  shadelab::test::addAzimuthTangents(out); // for the anisotropic models
   return out;
 }
 

@@ -82,6 +82,10 @@ class OtherLightingClassesTest(unittest.TestCase):
         table.Update()
         self.assertAlmostEqual(table.GetOutput().GetValueByName(2, "IncidenceDegrees").ToDouble(), 89.9)
         self.assertAlmostEqual(table.GetOutput().GetValueByName(2, "lambert-normalized").ToDouble(), 1.0, places=6)
+        # Oren-Nayar at roughness 0 is the normalised Lambert.
+        table.SetMaterialParameter("roughness", 0.0)
+        table.Update()
+        self.assertAlmostEqual(table.GetOutput().GetValueByName(2, "oren-nayar").ToDouble(), 1.0, places=6)
 
         sky = vtk.vtkImageData()
         sky.SetDimensions(8, 4, 1)

@@ -1,7 +1,9 @@
 """The ParaView plugin's server-manager XML held to the scene format: a
 property that stands for a scene key has the key's range, and its default
 where it overrides a scene's material (the BRDF lobe source, which reads no
-scene, keeps its own defaults, those of slBRDFLobeSource); a
+scene, keeps its own defaults, those of slBRDFLobeSource); every number
+key of the material is a property of the lighting filters and of the lobe
+source, documented with the key's meaning; a
 list of lighting models or shading frequencies names the scene format's, in
 its order (their values are the ids the filters take). Reads the XML as the
 plugin's build fills it (its model menus come from LightingTables.h) and the
@@ -14,9 +16,18 @@ from xml.etree import ElementTree
 PLUGIN = os.environ["SHADELAB_PARAVIEW_XML_DIR"]
 SCHEMA = os.environ["SHADELAB_SCHEMA_FILE"]
 
-# XML property name -> scene key under "material".
-MATERIAL = {"AmbientColor": "ambient", "DiffuseColor": "diffuse", "SpecularColor": "specular",
-            "EmissionColor": "emission", "Shininess": "shininess"}
+# The proxies that take the material's numbers (the lighting filters' base and the lobe source).
+NUMBER_PROXIES = {"LitFilter", "ShadeLabBRDFLobe"}
+
+
+def material_properties(material):
+    """XML property name -> scene key, for every colour ("ambient" -> "AmbientColor") and number
+    ("roughnessX" -> "RoughnessX") key of the schema's material."""
+    names = {}
+    for key, schema in material.items():
+        if "$ref" in schema or schema.get("type") == "number":
+            names[key[0].upper() + key[1:] + ("Color" if "$ref" in schema else "")] = key
+    return names
 
 
 def properties(name):
@@ -44,10 +55,15 @@ class PluginXMLTest(unittest.TestCase):
 
     def test_material_properties_have_the_scene_defaults_and_ranges(self):
         material = self.defs["material"]["properties"]
-        for name, key in MATERIAL.items():
+        for name, key in material_properties(material).items():
             found = properties(name)
             self.assertTrue(found, "no XML property " + name)
             schema = material[key]
+            if schema.get("type") == "number":
+                self.assertEqual({proxy for proxy, _ in found}, NUMBER_PROXIES, name)
+                for proxy, prop in found:
+                    self.assertEqual(prop.get("command"), "Set" + name)
+                    self.assertTrue(prop.find("Documentation").text.startswith(schema["description"]), name)
             default = schema["default"] if isinstance(schema["default"], list) else [schema["default"]]
             bounds = self.defs["color"]["items"] if "$ref" in schema else schema
             for proxy, prop in found:

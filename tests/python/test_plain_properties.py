@@ -9,21 +9,12 @@ import shadelab
 import vtk
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from spot_mesh import spot_with_normals  # noqa: E402
 from vtk_errors import update_error  # noqa: E402
 
 DATA = os.environ["SHADELAB_DATA_DIR"]
 SCENE = os.path.join(DATA, "scenes", "default.json")
 TEXTURE = os.path.join(DATA, "meshes", "spot_texture.png")
-
-
-def spot_with_normals():
-    reader = shadelab.slMeshReader()
-    reader.SetFileName(os.path.join(DATA, "meshes", "spot.obj"))
-    normals = shadelab.slPolyDataNormals()
-    normals.SetInputConnection(reader.GetOutputPort())
-    normals.SplittingOff()
-    normals.Update()
-    return normals.GetOutput()
 
 
 def radiance(configure, array="Radiance"):
@@ -67,12 +58,13 @@ class PlainPropertiesTest(unittest.TestCase):
         self.assertEqual(error, "")
         self.assertEqual(set(values(out)), {(0.25, 0.5, 1.0)})
 
-    def test_material_out_of_range_is_an_error(self):
+    def test_material_colour_out_of_range_is_an_error(self):
+        # The numbers are clamped by their setters (test_material_setters.py).
         def configure(f):
             f.OverrideMaterialOn()
-            f.SetShininess(-1)
+            f.SetDiffuseColor(-1, 0, 0)
         error, out = radiance(configure)
-        self.assertIn("shininess", error)
+        self.assertIn("material.diffuse", error)
 
     def test_material_values_ignored_unless_overriding(self):
         _, default = radiance(lambda f: None)

@@ -4,12 +4,14 @@
 //   SHADELAB_UPDATE_BASELINES=1 bash scripts/test.sh -L regression
 #include "ImageComparison.h"
 
+#include "shadelab/LightingTables.h"
 #include "shadelab/Scene.h"
 #include "slBRDFLobeSource.h"
 #include "slComparisonRenderer.h"
 #include "slCosineField.h"
 #include "slFieldImageRenderer.h"
 #include "slPolyDataNormals.h"
+#include "slPolyDataTangents.h"
 #include "slLightingPass.h"
 #include "slLobeImageRenderer.h"
 #include "slMeshReader.h"
@@ -36,6 +38,9 @@ struct Case
   std::string frequency;
   int component = slLightingPass::TOTAL;
   bool falseColor = false;
+  /// Give the mesh normals and tangents (slPolyDataTangents) first: the
+  /// anisotropic models read them.
+  bool tangents = false;
 };
 
 /// How a case reads in test listings: the mesh, the scene, the model, the
@@ -43,7 +48,8 @@ struct Case
 void PrintTo(const Case& c, std::ostream* os)
 {
   const auto base = [](const std::string& path) { return path.substr(path.find_last_of('/') + 1); };
-  *os << base(c.mesh) << " under " << base(c.scene) << ", " << c.model << ", " << c.frequency;
+  *os << base(c.mesh) << (c.tangents ? " with tangents" : "") << " under " << base(c.scene) << ", " << c.model << ", "
+      << c.frequency;
   if (c.component != slLightingPass::TOTAL)
   {
     *os << ", component " << c.component << (c.falseColor ? " in false colour" : "");
@@ -63,14 +69,17 @@ std::string sharedMesh(const std::string& name)
 std::vector<Case> allCases()
 {
   std::vector<Case> cases;
-  // Every model x frequency with every light type at once, on Spot.
-  for (const char* model : { "lambert", "phong", "blinn-phong", "lambert-normalized", "phong-normalized",
-         "blinn-phong-normalized" })
+  // Every model (every row of LightingTables.h) x frequency with every
+  // light type at once, on Spot; with its tangents for the anisotropic
+  // models. The material's numbers are the scene format's defaults.
+  for (const shadelab::LightingModelInfo& info : shadelab::kLightingModels)
   {
+    const bool tangents = shadelab::modelNeedsTangents(info.model);
     for (const char* frequency : { "flat", "gouraud", "phong" })
     {
-      cases.push_back({ std::string("spot-") + model + "-" + frequency, projectData("meshes/spot.obj"),
-        projectData("scenes/regression/all-lights.json"), model, frequency });
+      cases.push_back({ std::string("spot-") + info.name + "-" + frequency, projectData("meshes/spot.obj"),
+        projectData("scenes/regression/all-lights.json"), info.name, frequency, slLightingPass::TOTAL, false,
+        tangents });
     }
   }
   // Each light type alone, on the shared reference meshes.
@@ -87,6 +96,20 @@ std::vector<Case> allCases()
     projectData("scenes/regression/all-lights.json"), "blinn-phong", "phong", slLightingPass::SPECULAR, false });
   cases.push_back({ "spot-cos-false-colour", projectData("meshes/spot.obj"),
     projectData("scenes/regression/all-lights.json"), "lambert", "gouraud", slLightingPass::COS_THETA, true });
+  // The specular term alone of every microfacet model (a distribution of
+  // half vectors rather than a power of a cosine), per pixel, on a shiny
+  // dielectric (F0 = 0.51) where it shows.
+  for (const shadelab::LightingModelInfo& info : shadelab::kLightingModels)
+  {
+    const shadelab::SpecularLobe lobe = info.lobe;
+    if (lobe != shadelab::SpecularLobe::None && lobe != shadelab::SpecularLobe::Mirror &&
+      lobe != shadelab::SpecularLobe::Halfway)
+    {
+      cases.push_back({ std::string("spot-specular-") + info.name, projectData("meshes/spot.obj"),
+        projectData("scenes/regression/microfacet.json"), info.name, "phong", slLightingPass::SPECULAR, false,
+        shadelab::modelNeedsTangents(info.model) });
+    }
+  }
   return cases;
 }
 
@@ -118,6 +141,17 @@ TEST_P(ImageRegression, MatchesBaseline)
   vtkNew<slMeshReader> reader;
   reader->SetFileName(c.mesh.c_str());
   ASSERT_EQ(updateError(reader), "");
+  vtkSmartPointer<vtkPolyData> mesh = reader->GetOutput();
+  if (c.tangents)
+  {
+    // As `shadelab tangents` makes them: normals first, then the frames.
+    vtkNew<slPolyDataNormals> normals;
+    normals->SetInputData(mesh);
+    vtkNew<slPolyDataTangents> tangents;
+    tangents->SetInputConnection(normals->GetOutputPort());
+    ASSERT_EQ(updateError(tangents), "");
+    mesh = tangents->GetOutput();
+  }
   vtkNew<slScene> scene;
   ASSERT_EQ(callError(scene, [&] { return scene->ReadFile(c.scene.c_str()); }), "");
   ASSERT_TRUE(scene->SetModelName(c.model.c_str()));
@@ -125,7 +159,7 @@ TEST_P(ImageRegression, MatchesBaseline)
 
   vtkNew<slSceneRenderer> renderer;
   renderer->SetScene(scene);
-  renderer->SetMesh(reader->GetOutput());
+  renderer->SetMesh(mesh);
   renderer->GetLightingPass()->SetComponent(c.component);
   renderer->GetLightingPass()->SetFalseColor(c.falseColor);
   ASSERT_EQ(callError(renderer, [&] { return renderer->Render(); }), "");

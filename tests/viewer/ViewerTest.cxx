@@ -3,6 +3,7 @@
 // point, run the reference) and what the image must do in answer. Images are
 // compared with `shadelab render`'s own renderer (slSceneRenderer) with the
 // regression harness's metric: at most 0.2% of pixels off by more than 2/255.
+#include "BrdfFilePanel.h"
 #include "BrdfPanel.h"
 #include "FieldsPanel.h"
 #include "LightPanel.h"
@@ -10,6 +11,7 @@
 #include "MainWindow.h"
 #include "MaterialPanel.h"
 #include "NormalsPanel.h"
+#include "NumberControl.h"
 #include "ReferenceJob.h"
 #include "SceneView.h"
 #include "ShadingPanel.h"
@@ -18,10 +20,14 @@
 #include "ImageComparison.h"
 
 #include "slImageReader.h"
+#include "slLitFilter.h"
 #include "slMeshReader.h"
+#include "slLightingPass.h"
 #include "slScene.h"
 #include "slSceneRenderer.h"
 #include "VTKErrors.h"
+
+#include "shadelab/SceneKeys.h"
 
 #include <vtkActorCollection.h>
 #include <vtkCamera.h>
@@ -53,6 +59,7 @@
 #include <QSignalSpy>
 #include <QSlider>
 #include <QSpinBox>
+#include <QStatusBar>
 #include <QSurfaceFormat>
 #include <QTemporaryDir>
 #include <QUrl>
@@ -123,8 +130,8 @@ double fractionDiffering(const Rgb& a, const Rgb& b, int tolerance = 2)
   return static_cast<double>(differing) / (a.pixels.size() / 3);
 }
 
-/// What `shadelab render` draws for @p scene on spot.obj.
-Rgb renderOffscreen(const Scene& scene)
+/// What `shadelab render` draws for @p scene on @p mesh (default: spot.obj).
+Rgb renderOffscreen(const Scene& scene, vtkPolyData* mesh = nullptr)
 {
   vtkNew<slMeshReader> reader;
   reader->SetFileName(kSpot);
@@ -133,7 +140,7 @@ Rgb renderOffscreen(const Scene& scene)
   sceneObject->SetScene(scene);
   vtkNew<slSceneRenderer> renderer;
   renderer->SetScene(sceneObject);
-  renderer->SetMesh(reader->GetOutput());
+  renderer->SetMesh(mesh ? mesh : reader->GetOutput());
   const std::string error = callError(renderer, [&] { return renderer->Render(); });
   if (!error.empty())
   {
@@ -203,8 +210,9 @@ private slots:
   void shininessSliderChangesTheHighlight()
   {
     const Rgb before = this->grab();
-    QSlider* slider = this->Window->materialPanel()->shininessSlider();
-    slider->setValue(MaterialPanel::sliderAt(256.0));
+    NumberControl* shininess = this->Window->materialPanel()->numberControl("shininess");
+    QVERIFY(shininess->logarithmic());
+    shininess->slider()->setValue(shininess->positionOf(256.0));
     const float n = this->Window->document()->scene().material.shininess;
     QVERIFY(std::abs(n - 256.0f) / 256.0f < 0.01f);
     const Rgb after = this->grab();
@@ -232,7 +240,8 @@ private slots:
     // Move the camera and change the material first, so that the file has to carry them.
     this->Window->view()->camera()->Azimuth(35.0);
     this->Window->view()->camera()->Elevation(-10.0);
-    this->Window->materialPanel()->shininessSlider()->setValue(MaterialPanel::sliderAt(90.0));
+    NumberControl* shininess = this->Window->materialPanel()->numberControl("shininess");
+    shininess->slider()->setValue(shininess->positionOf(90.0));
     const Rgb before = this->grab();
     QString error;
     QVERIFY2(this->Window->saveScene(this->path("saved.json"), &error), qPrintable(error));
@@ -244,6 +253,55 @@ private slots:
     QCOMPARE(this->Window->document()->vtkScene()->ToJSON(), text);
     const double differing = fractionDiffering(before, this->grab());
     QVERIFY2(differing <= 0.002, qPrintable(QString("%1 of pixels differ").arg(differing)));
+  }
+
+  void brdfFileShadesAndItsSlidersAreUniforms()
+  {
+    const Rgb model = this->grab();
+    QString error;
+    const QString file = QString(SHADELAB_DATA_DIR) + "/brdf/blinn-phong-normalized.brdf";
+    QVERIFY2(this->Window->openFile(file, &error), qPrintable(error));
+    QCOMPARE(QString::fromStdString(this->Window->document()->vtkScene()->GetBrdfFilePath()), file);
+    const Rgb glossy = this->grab();
+    QVERIFY(fractionDiffering(model, glossy) > 0.01);
+    QVERIFY(fractionDiffering(glossy, renderOffscreen(this->Window->document()->scene())) <= 0.002);
+
+    // Its parameters are sliders; moving one re-renders with a uniform.
+    BrdfFilePanel* panel = this->Window->brdfFilePanel();
+    QSlider* ks = panel->slider("ks");
+    QVERIFY(ks != nullptr);
+    QCOMPARE(ks->value(), BrdfFilePanel::kSteps / 2); // the default 0.5 in [0, 1]
+    const int builds = this->Window->view()->lightingPass()->GetNumberOfShaderBuilds();
+    ks->setValue(0);
+    QCOMPARE(this->Window->document()->scene().brdf.parameters, std::vector<std::string>{ "ks=0" });
+    const Rgb matte = this->grab();
+    QCOMPARE(this->Window->view()->lightingPass()->GetNumberOfShaderBuilds(), builds);
+    QVERIFY(fractionDiffering(glossy, matte) > 0.005);
+    QVERIFY(fractionDiffering(matte, renderOffscreen(this->Window->document()->scene())) <= 0.002);
+
+    // Saved with the scene; "Use the model" goes back.
+    QVERIFY2(this->Window->saveScene(this->path("brdf.json"), &error), qPrintable(error));
+    QVERIFY(this->Window->document()->vtkScene()->ToJSON().find("\"ks\": 0") != std::string::npos);
+    panel->removeButton()->click();
+    QVERIFY(this->Window->document()->scene().brdf.file.empty());
+    QVERIFY(fractionDiffering(model, this->grab()) <= 0.002);
+  }
+
+  void brokenBrdfFileIsOneLine()
+  {
+    QString error;
+    QVERIFY(!this->Window->openFile(this->path("missing.brdf"), &error));
+    QCOMPARE(error, this->path("missing.brdf") + ": cannot open BRDF file");
+    QVERIFY(this->Window->document()->scene().brdf.file.empty());
+
+    // GLSL that does not compile: the view says so in one line, with the file's line.
+    const QString broken = QString(SHADELAB_DATA_DIR) + "/brdf/broken-glsl.brdf";
+    QSignalSpy problems(this->Window->view(), &SceneView::problem);
+    QVERIFY2(this->Window->openFile(broken, &error), qPrintable(error));
+    this->grab();
+    QCOMPARE(problems.count(), 1);
+    const QString message = problems.first().first().toString();
+    QVERIFY2(message.startsWith(broken + ":12: ") && !message.contains('\n'), qPrintable(message));
   }
 
   void droppedMeshOpens()
@@ -517,6 +575,130 @@ private slots:
     const QString message = QString::fromUtf8(viewer.readAllStandardError()).trimmed();
     QVERIFY2(message.startsWith("shadelab-viewer: ") && !message.contains('\n'), qPrintable(message));
     QVERIFY2(message.contains("DISPLAY"), qPrintable(message));
+  }
+
+  void materialControlsFollowTheModel()
+  {
+    // For every model, a material parameter has a control shown exactly when
+    // changing it changes the image: the image, not the table, decides here.
+    QString error;
+    QVERIFY2(this->Window->document()->computeTangents(error), qPrintable(error)); // the anisotropic models' frame
+    MaterialPanel* panel = this->Window->materialPanel();
+    for (const std::string& model : modelNames())
+    {
+      this->Window->shadingPanel()->modelBox()->setCurrentText(QString::fromStdString(model));
+      QCOMPARE(modelName(this->Window->document()->scene().model), model);
+      const Scene original = this->Window->document()->scene();
+      const Rgb before = this->grab();
+      QStringList changing;
+      for (const SceneKey<SceneMaterial>& key : materialKeys())
+      {
+        Scene edited = original;
+        if (key.vector)
+        {
+          edited.material.*(key.vector) = glm::vec3(0.9f, 0.5f, 0.2f) - 0.5f * (original.material.*(key.vector));
+        }
+        else if (key.number)
+        {
+          // Far across the range: a tenth from the end the value is away from.
+          const double v = original.material.*(key.number);
+          edited.material.*(key.number) =
+            static_cast<float>(v - key.lo < 0.5 * (key.hi - key.lo) ? key.hi - 0.1 * (key.hi - key.lo)
+                                                                   : key.lo + 0.1 * (key.hi - key.lo));
+        }
+        else
+        {
+          continue; // the texture has no control
+        }
+        this->Window->document()->setScene(edited, MaterialChange);
+        if (fractionDiffering(before, this->grab(), 0) > 0.0)
+        {
+          changing << QString::fromUtf8(key.name);
+        }
+        this->Window->document()->setScene(original, MaterialChange);
+      }
+      QCOMPARE(panel->shownKeys(), changing);
+      QVERIFY2(changing.size() >= 3, qPrintable(changing.join(", ")));
+    }
+  }
+
+  void roughnessChangesMicrofacetsOnly()
+  {
+    // Through the roughness control: Blinn-Phong does not read it, GGX does.
+    NumberControl* roughness = this->Window->materialPanel()->numberControl("roughness");
+    QVERIFY(roughness != nullptr && !roughness->logarithmic());
+    this->Window->shadingPanel()->modelBox()->setCurrentText("blinn-phong");
+    QVERIFY(!this->Window->materialPanel()->shownKeys().contains("roughness"));
+    const Rgb blinnPhong = this->grab();
+    roughness->slider()->setValue(roughness->positionOf(0.8));
+    QVERIFY(std::abs(this->Window->document()->scene().material.roughness - 0.8f) < 1e-3f);
+    QCOMPARE(fractionDiffering(blinnPhong, this->grab(), 0), 0.0);
+
+    this->Window->shadingPanel()->modelBox()->setCurrentText("cook-torrance-ggx");
+    QVERIFY(this->Window->materialPanel()->shownKeys().contains("roughness"));
+    QVERIFY(!this->Window->materialPanel()->shownKeys().contains("shininess"));
+    const Rgb rough = this->grab();
+    QVERIFY(fractionDiffering(rough, renderOffscreen(this->Window->document()->scene())) <= 0.002);
+    roughness->spinBox()->setValue(0.1);
+    QVERIFY(std::abs(this->Window->document()->scene().material.roughness - 0.1f) < 1e-6f);
+    const Rgb smooth = this->grab();
+    QVERIFY2(fractionDiffering(rough, smooth) > 0.005,
+      qPrintable(QString("%1 of pixels differ").arg(fractionDiffering(rough, smooth))));
+    QVERIFY(fractionDiffering(smooth, renderOffscreen(this->Window->document()->scene())) <= 0.002);
+  }
+
+  void anisotropicModelOffersTangents()
+  {
+    ShadingPanel* shading = this->Window->shadingPanel();
+    QVERIFY(shading->tangentsLabel()->isHidden());
+    const Rgb blinnPhong = this->grab();
+    shading->modelBox()->setCurrentText("ward");
+    // One line, in the panel and the status bar, and a button that can help.
+    const QString line = shading->tangentsLabel()->text();
+    QVERIFY(!shading->tangentsLabel()->isHidden());
+    QVERIFY2(line.startsWith("ward is anisotropic and needs the mesh's tangents: spot.obj has none"), qPrintable(line));
+    QVERIFY(!line.contains('\n'));
+    QCOMPARE(this->Window->statusBar()->currentMessage(), line);
+    QVERIFY(shading->tangentsButton()->isEnabled());
+    const Rgb fixedFrame = this->grab();
+    QVERIFY(fractionDiffering(blinnPhong, fixedFrame) > 0.01);
+
+    shading->tangentsButton()->click();
+    vtkPolyData* mesh = this->Window->document()->mesh();
+    QVERIFY(slLitFilter::HasTangents(mesh));
+    QVERIFY(mesh->GetPointData()->GetNormals() == nullptr); // the normals settings still decide them
+    QVERIFY(shading->tangentsLabel()->isHidden());
+    QVERIFY(shading->tangentsButton()->isHidden());
+    // Lit in the tangents' frame now: not the fixed one, and as `shadelab render` draws the mesh with tangents.
+    const Rgb tangentFrame = this->grab();
+    QVERIFY(fractionDiffering(fixedFrame, tangentFrame) > 0.001);
+    QVERIFY(fractionDiffering(tangentFrame, renderOffscreen(this->Window->document()->scene(), mesh)) <= 0.002);
+
+    // A mesh without texture coordinates: the line says so, and the button cannot help.
+    QFile file(this->path("tetra.off"));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+    file.close();
+    QString error;
+    QVERIFY2(this->Window->openFile(this->path("tetra.off"), &error), qPrintable(error));
+    QVERIFY2(shading->tangentsLabel()->text().contains("tetra.off has none, and no texture coordinates"),
+      qPrintable(shading->tangentsLabel()->text()));
+    QVERIFY(!shading->tangentsButton()->isEnabled());
+  }
+
+  void pickedLobeFollowsTheMaterial()
+  {
+    // The BRDF panel draws the lobe of the current model and material.
+    this->Window->shadingPanel()->modelBox()->setCurrentText("cook-torrance-ggx");
+    BrdfPanel* panel = this->Window->brdfPanel();
+    panel->pickButton()->setChecked(true);
+    QVERIFY(this->Window->view()->pickAt(160, 120));
+    const QImage rough = panel->pictureLabel()->pixmap(Qt::ReturnByValue).toImage();
+    QVERIFY(!rough.isNull());
+    this->Window->materialPanel()->numberControl("roughness")->spinBox()->setValue(0.1);
+    QTRY_VERIFY(panel->pictureLabel()->pixmap(Qt::ReturnByValue).toImage() != rough);
+    const QString info = panel->infoLabel()->text();
+    QVERIFY2(info.endsWith("cook-torrance-ggx roughness = 0.1, ior = 1.5"), qPrintable(info));
   }
 
   void normalsPanelRecomputesNormals()

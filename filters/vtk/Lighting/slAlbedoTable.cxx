@@ -3,6 +3,8 @@
 #include "shadelab/Albedo.h"
 #include "shadelab/Scene.h"
 
+#include "slMaterialNumbers.h"
+
 #include <vtkDoubleArray.h>
 #include <vtkInformationVector.h>
 #include <vtkObjectFactory.h>
@@ -14,7 +16,9 @@
 vtkStandardNewMacro(slAlbedoTable);
 
 slAlbedoTable::slAlbedoTable()
+  : Material(new shadelab::SceneMaterial)
 {
+  this->Material->shininess = 20.0f;
   this->SetNumberOfInputPorts(0);
 }
 
@@ -35,17 +39,17 @@ int slAlbedoTable::RequestData(vtkInformation*, vtkInformationVector**, vtkInfor
   output->AddColumn(degrees);
   const int models = static_cast<int>(modelNames().size());
   std::vector<double> values(static_cast<size_t>(models * angles));
+  const glsl::slMaterial material = toEvaluationMaterial(*this->Material);
   vtkSMPTools::For(0, models * angles, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType k = begin; k < end; ++k)
     {
       const int model = static_cast<int>(k / angles), a = static_cast<int>(k % angles);
-      glsl::slMaterial m;
+      glsl::slMaterial m = material;
       m.ambient = m.emission = glm::vec3(0.0f);
       // The diffuse albedo of a model without a specular term, else its specular one.
       const bool lambert = (modelInfo(static_cast<ShadingModel>(model)).reads & kReadsSpecular) == 0;
       m.diffuse = glm::vec3(lambert ? 1.0f : 0.0f);
       m.specular = glm::vec3(lambert ? 0.0f : 1.0f);
-      m.shininess = static_cast<float>(this->Shininess);
       values[static_cast<size_t>(k)] =
         directionalAlbedo(model, m, degrees->GetValue(a) * 3.14159265358979323846 / 180.0);
     }
@@ -64,10 +68,12 @@ int slAlbedoTable::RequestData(vtkInformation*, vtkInformationVector**, vtkInfor
   return 1;
 }
 
+SL_MATERIAL_NUMBER_METHODS(slAlbedoTable)
+
 void slAlbedoTable::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Shininess: " << this->Shininess << "\n";
+  slPrintMaterialNumbers(os, indent, *this->Material);
   os << indent << "NumberOfAngles: " << this->NumberOfAngles << "\n";
   os << indent << "MaximumIncidence: " << this->MaximumIncidence << "\n";
 }

@@ -9,12 +9,20 @@
  * a(theta_i) = integral of f_r(w_i, w_o) cos(theta_o) dw_o over the
  * hemisphere (shadelab::directionalAlbedo(): adaptive Gauss-Kronrod in the
  * lobe's own frame, within 1e-4 of an independent quadrature at every angle
- * up to 89.9 degrees and shininess 0 to 10^4), with f_r from
- * slBRDF() of slLighting.glsl: k_d = 1 for the Lambert models, k_s = 1 and
- * k_d = 0 for the Phong and Blinn-Phong models (their specular lobe alone).
- * It shows how much energy the lecture models gain or lose (lecture Lambert
- * reflects pi, lecture Phong grows toward grazing incidence) and that the
- * normalised models stay <= 1.
+ * up to 89.9 degrees, shininess 0 to 10^4 and every roughness from the
+ * formulas' floor 0.01 to 1: tests/core/AlbedoAccuracyTest.cxx), with f_r
+ * from slBRDF() of slLighting.glsl: k_d = 1 for the models without a
+ * specular term (Lambert, Oren-Nayar), k_s = 1 and k_d = 0 for the others
+ * (their specular lobe alone), and the material's numbers
+ * (SetMaterialParameter()). It shows how much energy the lecture models gain
+ * or lose (lecture Lambert reflects pi, lecture Phong grows toward grazing
+ * incidence), that the normalised models stay <= 1, and what single
+ * scattering loses at high roughness (Cook-Torrance GGX with F = 1 reflects
+ * 1 - ln 2 at roughness 1 and normal incidence).
+ *
+ * @warning Two normalised models exceed 1 near grazing incidence, as
+ * published: Oren-Nayar's qualitative model (by under 1 %) and Ward's
+ * 1 / sqrt(cos_i cos_o) normalisation (up to about 1.8 at 89.9 degrees).
  *
  * @warning The last angle is MaximumIncidence (89 degrees unless set, at most
  * 89.9), not 90: at grazing incidence f_r cos(theta_i) -> 0 while the lecture
@@ -27,6 +35,15 @@
 
 #include <vtkTableAlgorithm.h>
 
+#include <memory>
+
+#ifndef __VTK_WRAP__
+namespace shadelab
+{
+struct SceneMaterial;
+}
+#endif
+
 class SHADELABLIGHTING_EXPORT slAlbedoTable : public vtkTableAlgorithm
 {
 public:
@@ -35,9 +52,21 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /// Shininess n of the specular models (default 20).
-  vtkSetClampMacro(Shininess, double, 0.0, 1.0e4);
-  vtkGetMacro(Shininess, double);
+  /// A number of the material by its scene-file key: "shininess",
+  /// "roughness", "roughnessX", "roughnessY", "ior" (the number rows of
+  /// SHADELAB_MATERIAL_PARAMETERS in shadelab/LightingTables.h), clamped to
+  /// the scene format's range for it. Defaults are the table's, except
+  /// shininess (20). An unknown key is an error (vtkErrorMacro): false, and
+  /// the getter returns NaN.
+  bool SetMaterialParameter(const char* key, double value);
+  double GetMaterialParameter(const char* key);
+  ///@}
+
+  ///@{
+  /// Shininess n of the Phong and Blinn-Phong models:
+  /// SetMaterialParameter("shininess", n).
+  void SetShininess(double shininess);
+  double GetShininess();
   ///@}
 
   ///@{
@@ -63,7 +92,7 @@ private:
   slAlbedoTable(const slAlbedoTable&) = delete;
   void operator=(const slAlbedoTable&) = delete;
 
-  double Shininess = 20.0;
+  std::unique_ptr<shadelab::SceneMaterial> Material;
   int NumberOfAngles = 10;
   double MaximumIncidence = 89.0;
 };

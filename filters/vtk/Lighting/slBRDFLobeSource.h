@@ -8,9 +8,16 @@
  *
  * The surface is origin + r(w_o) w_o over the hemisphere around +z, for the
  * incident direction given by IncidenceAngle (degrees from +z, in the x-z
- * plane, light on the -x side so the mirror lobe leans toward +x). The point
- * array "BRDF" holds r. f_r is slBRDF() of slLighting.glsl with k_d =
- * DiffuseWeight and k_s = SpecularWeight (grey).
+ * plane, light on the -x side so the mirror lobe leans toward +x), with the
+ * surface tangent along +x (anisotropic models: roughnessX along x,
+ * roughnessY along y). The point array "BRDF" holds r. f_r is slBRDF() of
+ * slLighting.glsl with k_d = DiffuseWeight and k_s = SpecularWeight (grey)
+ * and the material's numbers (SetMaterialParameter()).
+ *
+ * f_r may instead come from elsewhere, per point (a BRDF Explorer `.brdf`
+ * file, whose GLSL only the GPU runs: slBRDFFileEvaluator):
+ * ComputeOutgoingDirections() lists the directions of both outputs' points,
+ * SetBRDFValues() takes f_r at them, and the geometry is the same.
  *
  * @warning The lecture models (lambert, phong, blinn-phong) are not
  * energy-normalised: read as BRDFs their lobes can be much larger than the
@@ -22,8 +29,21 @@
  */
 
 #include "ShadeLabLightingModule.h"
+#include "slMaterialNumberAccessors.h" // the plain methods
 
 #include <vtkPolyDataAlgorithm.h>
+#include <vtkSmartPointer.h>
+
+class vtkFloatArray;
+
+#include <memory>
+
+#ifndef __VTK_WRAP__
+namespace shadelab
+{
+struct SceneMaterial;
+}
+#endif
 
 class SHADELABLIGHTING_EXPORT slBRDFLobeSource : public vtkPolyDataAlgorithm
 {
@@ -41,10 +61,23 @@ public:
   ///@}
 
   ///@{
-  /// Shininess n (default 20), clamped to the scene format's range
-  /// [0, kMaxShininess] (shadelab/SceneLimits.h).
+  /// A number of the material by its scene-file key: "shininess",
+  /// "roughness", "roughnessX", "roughnessY", "ior" (the number rows of
+  /// SHADELAB_MATERIAL_PARAMETERS in shadelab/LightingTables.h), clamped to
+  /// the scene format's range for it. Defaults are the table's, except
+  /// shininess (20). An unknown key is an error (vtkErrorMacro): false, and
+  /// the getter returns NaN.
+  bool SetMaterialParameter(const char* key, double value);
+  double GetMaterialParameter(const char* key);
+  ///@}
+
+  ///@{
+  /// Shininess n: SetMaterialParameter("shininess", n); and the other
+  /// numbers as plain methods for ParaView (SetRoughness(a):
+  /// SetMaterialParameter("roughness", a); RoughnessX, RoughnessY, Ior).
   void SetShininess(double shininess);
-  vtkGetMacro(Shininess, double);
+  double GetShininess();
+  slMaterialNumberForwardersMacro()
   ///@}
 
   ///@{
@@ -79,6 +112,26 @@ public:
   /// The polar slice (output port 1).
   vtkPolyData* GetSliceOutput() { return this->GetOutput(1); }
 
+  /// The unit direction toward the light for IncidenceAngle (in the x-z
+  /// plane, on the -x side), with N = +z.
+  void GetDirectionToLight(double toLight[3]);
+
+  /// Fills @p surface and @p slice (3 components) with the outgoing unit
+  /// directions of output 0's and output 1's points, in point order, for
+  /// the current settings.
+  void ComputeOutgoingDirections(vtkFloatArray* surface, vtkFloatArray* slice);
+
+  ///@{
+  /// f_r (RGB, 3 components) at the directions of
+  /// ComputeOutgoingDirections(), used instead of the lighting model (whose
+  /// settings then matter only for the directions); nullptr (the default)
+  /// returns to the model. Arrays of another size than the directions are
+  /// an error at the next update (empty outputs).
+  void SetBRDFValues(vtkFloatArray* surface, vtkFloatArray* slice);
+  vtkFloatArray* GetSurfaceBRDFValues();
+  vtkFloatArray* GetSliceBRDFValues();
+  ///@}
+
 protected:
   slBRDFLobeSource();
   ~slBRDFLobeSource() override;
@@ -90,13 +143,15 @@ private:
   void operator=(const slBRDFLobeSource&) = delete;
 
   int Model = 1;
-  double Shininess = 20.0;
+  std::unique_ptr<shadelab::SceneMaterial> Material;
   double DiffuseWeight = 0.0;
   double SpecularWeight = 1.0;
   double IncidenceAngle = 45.0;
   bool MultiplyByCosine = false;
   int ThetaResolution = 32;
   int PhiResolution = 64;
+  vtkSmartPointer<vtkFloatArray> SurfaceBRDFValues;
+  vtkSmartPointer<vtkFloatArray> SliceBRDFValues;
 };
 
 #endif

@@ -79,7 +79,7 @@ void cosines(const slLight& light, vtkIdType count, Position position, Normal no
       const vec3 P = position(i);
       const vec3 N = normal(i);
       raw[i] = slCosTheta(light, P, N);
-      clamped[i] = slDiffuseFactor(SL_MODEL_LAMBERT, slSafeNormalize(N), slDirectionToLight(light, P));
+      clamped[i] = slDiffuseFactor(SL_MODEL_LAMBERT, slMaterial(), slSafeNormalize(N), slDirectionToLight(light, P), vec3(0.0f));
     }
   });
 }

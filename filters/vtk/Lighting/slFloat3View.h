@@ -22,7 +22,8 @@ class Float3View
 public:
   explicit Float3View(vtkDataArray* array)
   {
-    if (auto* floats = vtkFloatArray::SafeDownCast(array))
+    auto* floats = vtkFloatArray::SafeDownCast(array);
+    if (floats && floats->GetNumberOfComponents() == 3)
     {
       this->Data = floats->GetPointer(0);
       return;

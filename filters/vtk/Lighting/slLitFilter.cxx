@@ -7,6 +7,7 @@
 #include "slGlobalBounds.h"
 #include "slLightingSetup.h"
 #include "slModelCheck.h"
+#include "slTangentsCheck.h"
 #include "shadelab/LightingGLSL.h"
 #include "shadelab/DefaultScene.h"
 #include "shadelab/Scene.h"
@@ -129,6 +130,7 @@ bool slLitFilter::PrepareLighting(
       values.material.specular = toVec3(this->SpecularColor);
       values.material.emission = toVec3(this->EmissionColor);
       values.material.shininess = static_cast<float>(this->Shininess);
+      slMaterialNumbersInto(this, values.material);
     }
     scene = vtkSmartPointer<slScene>::New();
     scene->SetScene(values);
@@ -213,6 +215,29 @@ bool slLitFilter::PrepareLighting(
   return true;
 }
 
+bool slLitFilter::GetTangents(
+  vtkPolyData* input, vtkPolyData* output, const shadelab::LightingSetup& setup, vtkDataArray*& tangents)
+{
+  tangents = nullptr;
+  const std::string problem = slTangentsProblem(input, setup.model);
+  if (!problem.empty())
+  {
+    this->Fail(output, "input mesh: " + problem);
+    return false;
+  }
+  if (shadelab::modelNeedsTangents(static_cast<shadelab::ShadingModel>(setup.model)))
+  {
+    tangents = input->GetPointData()->GetArray("Tangents");
+  }
+  return true;
+}
+
+bool slLitFilter::HasTangents(vtkPolyData* mesh)
+{
+  vtkDataArray* array = mesh ? mesh->GetPointData()->GetArray("Tangents") : nullptr;
+  return array && array->GetNumberOfComponents() == 4 && array->GetNumberOfTuples() == mesh->GetNumberOfPoints();
+}
+
 void slLitFilter::SetModel(int model)
 {
   if (slCheckModel(this, model, true) && model != this->Model)
@@ -241,4 +266,5 @@ void slLitFilter::PrintSelf(ostream& os, vtkIndent indent)
     os << indent << c.first << ": " << c.second[0] << " " << c.second[1] << " " << c.second[2] << "\n";
   }
   os << indent << "Shininess: " << this->Shininess << "\n";
+  slPrintMaterialNumberMembers(this, os, indent);
 }

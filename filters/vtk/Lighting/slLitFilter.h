@@ -23,8 +23,9 @@
  * vtk* objects, the scene can also come from a file (SetSceneFileName(),
  * read at every update; it replaces SetScene()), the lighting model can be
  * chosen with SetModel() and, with OverrideMaterial on, the material's
- * colours and shininess with plain setters. Values out of the scene format's
- * ranges (docs/scene-format.md) are errors, as in a scene file.
+ * colours and numbers with plain setters. Numbers are clamped to the
+ * material table's ranges (docs/scene-format.md); colours out of range are
+ * errors, as in a scene file.
  *
  * Input checks, each giving vtkErrorMacro of one line, an empty output and
  * a failed request (slUpdateOrThrow() gives the line back): an input without points, without point
@@ -41,6 +42,7 @@
  */
 
 #include "ShadeLabLightingModule.h"
+#include "slMaterialNumberAccessors.h" // the material numbers
 
 #include <vtkPolyDataAlgorithm.h>
 
@@ -63,6 +65,11 @@ class SHADELABLIGHTING_EXPORT slLitFilter : public vtkPolyDataAlgorithm
 public:
   vtkTypeMacro(slLitFilter, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Whether @p mesh carries the tangents the anisotropic models read
+  /// (shadelab::modelNeedsTangents()): a 4-component point array "Tangents"
+  /// with one tuple per point, as slPolyDataTangents makes it.
+  static bool HasTangents(vtkPolyData* mesh);
 
   ///@{
   /// The scene: lights, material, model and camera. Null: the default scene.
@@ -114,9 +121,10 @@ public:
   ///@}
 
   ///@{
-  /// Material colours k_a, k_d, k_s, k_e (linear RGB, [0, 1e6]) and
-  /// shininess n ([0, 1e5]); used when OverrideMaterial is on. Defaults:
-  /// the default scene's (0.1, 0.8, 0.5, 0 and 32).
+  /// Material colours k_a, k_d, k_s, k_e (linear RGB, [0, 1e6]); used when
+  /// OverrideMaterial is on. Defaults: the default scene's (0.1, 0.8, 0.5
+  /// and 0). A colour out of range is an error at the next update, as in a
+  /// scene file.
   vtkSetVector3Macro(AmbientColor, double);
   vtkGetVector3Macro(AmbientColor, double);
   vtkSetVector3Macro(DiffuseColor, double);
@@ -125,8 +133,21 @@ public:
   vtkGetVector3Macro(SpecularColor, double);
   vtkSetVector3Macro(EmissionColor, double);
   vtkGetVector3Macro(EmissionColor, double);
-  vtkSetMacro(Shininess, double);
+  ///@}
+
+  ///@{
+  /// The material's numbers, one per number row of the material table
+  /// (shadelab/LightingTables.h, docs/scene-format.md), used when
+  /// OverrideMaterial is on and clamped to the row's range: shininess n
+  /// ([0, 1e5], Phong and Blinn-Phong), roughness alpha ([0, 1], GGX,
+  /// Beckmann, Oren-Nayar), the anisotropic pair RoughnessX along the
+  /// tangent and RoughnessY along N x tangent ([0, 1] each, Ward,
+  /// Ashikhmin-Shirley) and the index of refraction ([1, 10], Schlick's
+  /// Fresnel). Defaults: the default scene's (32, 0.3, 0.15, 0.45, 1.5). A
+  /// NaN is kept, and is an error at the next update.
+  vtkSetClampMacro(Shininess, double, shadelab::materialRows::shininess.lo, shadelab::materialRows::shininess.hi);
   vtkGetMacro(Shininess, double);
+  slMaterialNumberAccessorsMacro()
   ///@}
 
   ///@{
@@ -153,6 +174,14 @@ protected:
     bool checkNormals = true);
 #endif
 
+  /// The mesh's "Tangents" point array (4 components, as slPolyDataTangents
+  /// makes them; the fourth, the handedness, is not read) if the model of @p setup is anisotropic
+  /// (modelNeedsTangents()), else null. Sets @p tangents and returns true, or
+  /// calls Fail() and returns false when the model needs tangents the mesh
+  /// does not have.
+  bool GetTangents(vtkPolyData* input, vtkPolyData* output, const shadelab::LightingSetup& setup,
+    vtkDataArray*& tangents);
+
   /// Fail() for point @p point of @p points, whose normal has no direction.
   int FailOnZeroNormal(vtkPolyData* output, vtkIdType point, vtkIdType points);
 
@@ -177,6 +206,7 @@ protected:
   double SpecularColor[3];
   double EmissionColor[3];
   double Shininess;
+  slMaterialNumberMembersMacro()
 
 private:
   slLitFilter(const slLitFilter&) = delete;

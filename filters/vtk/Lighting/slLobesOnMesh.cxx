@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 vtkStandardNewMacro(slLobesOnMesh);
 vtkCxxSetObjectMacro(slLobesOnMesh, PointIds, vtkIdList);
@@ -58,9 +59,15 @@ int slLobesOnMesh::RequestData(vtkInformation*, vtkInformationVector** inputVect
         std::to_string(setup.lights.size()) + " lights");
   }
 
+  vtkDataArray* tangentArray = nullptr;
+  if (!this->GetTangents(input, output, setup, tangentArray))
+  {
+    return 0;
+  }
   const vtkIdType n = input->GetNumberOfPoints();
   const Float3View points(input->GetPoints()->GetData());
   const Float3View normals(input->GetPointData()->GetNormals());
+  const auto tangents = tangentArray ? std::make_unique<Float3View>(tangentArray) : nullptr;
   const glsl::slLight& chosen = setup.lights[static_cast<size_t>(light)];
   // Lit: where f_r is not zero (slBRDF's own grazing limit), so a lobe shows.
   auto lit = [&](vtkIdType id) { return glsl::slCosTheta(chosen, points[id], normals[id]) > glsl::SL_MIN_COS_THETA; };
@@ -110,6 +117,7 @@ int slLobesOnMesh::RequestData(vtkInformation*, vtkInformationVector** inputVect
     spec.material = setup.material;
     spec.model = setup.model;
     spec.normal = normals[id];
+    spec.tangent = tangents ? (*tangents)[id] : glm::vec3(0.0f);
     spec.origin = points[id];
     spec.toLight = glsl::slDirectionToLight(chosen, points[id]);
     spec.timesCosine = this->MultiplyByCosine;

@@ -22,6 +22,7 @@
 #include <vtkSmartPointer.h>
 
 #include <atomic>
+#include <memory>
 #include <vector>
 
 vtkStandardNewMacro(slRadianceFilter);
@@ -90,10 +91,16 @@ int slRadianceFilter::RequestData(vtkInformation*, vtkInformationVector** inputV
     return 0;
   }
 
+  vtkDataArray* tangentArray = nullptr;
+  if (!this->GetTangents(input, output, setup, tangentArray))
+  {
+    return 0;
+  }
   output->ShallowCopy(input);
   const vtkIdType n = input->GetNumberOfPoints();
   const Float3View points(input->GetPoints()->GetData());
   const Float3View normals(input->GetPointData()->GetNormals());
+  const auto tangents = tangentArray ? std::make_unique<Float3View>(tangentArray) : nullptr;
   auto ambient = rgbArray("Ambient", n), diffuseOut = rgbArray("Diffuse", n), specular = rgbArray("Specular", n),
        emission = rgbArray("Emission", n), radiance = rgbArray("Radiance", n);
   std::vector<vtkSmartPointer<vtkFloatArray>> perLight;
@@ -114,6 +121,7 @@ int slRadianceFilter::RequestData(vtkInformation*, vtkInformationVector** inputV
   RadianceKernelInput in;
   in.points = points.data();
   in.normals = normals.data();
+  in.tangents = tangents ? tangents->data() : nullptr;
   in.baseColour = base.empty() ? nullptr : &base[0].x;
   in.lights = setup.lights;
   in.material = setup.material;

@@ -50,17 +50,17 @@ glsl8::slLight foldLight(const glsl::slLight& light, const glsl::slMaterial& m)
 /// the compiler drops the other types' branches, and its intensity fixed at
 /// 1: foldLight() has put the intensity into the colours.
 template <int MODEL, int TYPE>
-__attribute__((always_inline)) inline glsl8::slLightWeights weightsOf(glsl8::slLight light, const vec3x8& P,
-  const vec3x8& n, const vec3x8& v, const vfloat8& shininess)
+__attribute__((always_inline)) inline glsl8::slLightWeights weightsOf(glsl8::slLight light,
+  const glsl8::slMaterial& m, const vec3x8& P, const vec3x8& n, const vec3x8& t, const vec3x8& v)
 {
   light.type = TYPE;
   light.intensity = 1.0f;
-  return glsl8::slLightWeightsAt(light, MODEL, P, n, v, shininess);
+  return glsl8::slLightWeightsAt(light, m, MODEL, P, n, t, v);
 }
 
 template <int MODEL>
 __attribute__((always_inline)) inline glsl8::slLightWeights weightsOfAnyLight(const glsl8::slLight& light,
-  const vec3x8& P, const vec3x8& n, const vec3x8& v, const vfloat8& shininess)
+  const glsl8::slMaterial& m, const vec3x8& P, const vec3x8& n, const vec3x8& t, const vec3x8& v)
 {
   // One case per row of the light-type table (sceneValueProblem() has
   // checked every light's type).
@@ -68,7 +68,7 @@ __attribute__((always_inline)) inline glsl8::slLightWeights weightsOfAnyLight(co
   {
 #define SHADELAB_CASE(Enumerator, ...)                                                                                \
   case LightType::Enumerator:                                                                                         \
-    return weightsOf<MODEL, static_cast<int>(LightType::Enumerator)>(light, P, n, v, shininess);
+    return weightsOf<MODEL, static_cast<int>(LightType::Enumerator)>(light, m, P, n, t, v);
     SHADELAB_LIGHT_TYPES(SHADELAB_CASE)
 #undef SHADELAB_CASE
   }
@@ -82,7 +82,7 @@ glsl8::slMaterial unitMaterial(const glsl::slMaterial& material)
 {
   const glsl::slMaterial u = glsl::slUnitMaterial(material);
   glsl8::slMaterial m;
-#define SHADELAB_COPY(type, field, bit, what) m.field = u.field;
+#define SHADELAB_COPY(type, field, ...) m.field = u.field;
   SHADELAB_MATERIAL_PARAMETERS(SHADELAB_COPY)
 #undef SHADELAB_COPY
   return m;
@@ -111,13 +111,15 @@ __attribute__((flatten)) long long shadeBatches(const RadianceKernelInput& in, c
     const vec3x8 P = loadBatch(in.points, batch);
     const vec3x8 n = glsl8::slSafeNormalize(loadBatch(in.normals, batch));
     const vec3x8 v = glsl8::slSafeNormalize(eye - P);
+    const bool readsTangent = modelNeedsTangents(static_cast<ShadingModel>(MODEL)) && in.tangents;
+    const vec3x8 t = readsTangent ? loadBatch(in.tangents, batch) : vec3x8(vfloat8(0.0f));
     if (firstWithoutNormal == end)
     {
       firstWithoutNormal = firstZeroLane(simd::dot(n, n), batch, end);
     }
     for (size_t l = 0; l < lights.size(); ++l)
     {
-      weights[l] = weightsOfAnyLight<MODEL>(lights[l], P, n, v, unit.shininess);
+      weights[l] = weightsOfAnyLight<MODEL>(lights[l], unit, P, n, t, v);
     }
     const vec3x8 base = in.baseColour ? loadBatch(in.baseColour, batch) : vec3x8(vfloat8(1.0f));
     glsl8::slTerms sum = glsl8::slZeroTerms();

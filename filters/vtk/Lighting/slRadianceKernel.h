@@ -26,6 +26,9 @@ struct RadianceKernelInput
 {
   const float* points = nullptr;  ///< xyz per point
   const float* normals = nullptr; ///< xyz per point, any length
+  /// xyz per point, any length: the surface's tangent X, read by the
+  /// anisotropic models only (modelNeedsTangents()); null: none (slTangentX()).
+  const float* tangents = nullptr;
   /// Optional base colour per point (rgb): it multiplies the material's k_a
   /// and k_d there, as scalar colours and textures do in slLightingPass.
   const float* baseColour = nullptr;

@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 vtkStandardNewMacro(slRadianceReference);
 vtkCxxSetObjectMacro(slRadianceReference, EnvironmentMap, vtkImageData);
@@ -115,10 +116,16 @@ int slRadianceReference::RequestData(
   reference.samples = this->SamplesPerPoint;
   reference.seed = static_cast<std::uint64_t>(static_cast<std::uint32_t>(this->Seed));
 
+  vtkDataArray* tangentArray = nullptr;
+  if (!this->GetTangents(input, output, setup, tangentArray))
+  {
+    return 0;
+  }
   output->ShallowCopy(input);
   const vtkIdType n = input->GetNumberOfPoints();
   const Float3View points(input->GetPoints()->GetData());
   const Float3View normals(input->GetPointData()->GetNormals());
+  const auto tangents = tangentArray ? std::make_unique<Float3View>(tangentArray) : nullptr;
   auto radiance = rgbArray("Radiance", n), stdError = rgbArray("RadianceStdError", n);
   auto discrete = rgbArray("DiscreteRadiance", n), error = rgbArray("RadianceError", n);
   auto ambient = rgbArray("Ambient", n), diffuse = rgbArray("Diffuse", n), specular = rgbArray("Specular", n),
@@ -128,6 +135,7 @@ int slRadianceReference::RequestData(
   RadianceKernelInput in;
   in.points = points.data();
   in.normals = normals.data();
+  in.tangents = tangents ? tangents->data() : nullptr;
   in.lights = setup.lights;
   in.material = setup.material;
   in.model = static_cast<ShadingModel>(setup.model);
@@ -150,7 +158,8 @@ int slRadianceReference::RequestData(
       for (vtkIdType i = begin; i < end; ++i)
       {
         const RadianceEstimate e =
-          estimateRadiance(reference, points[i], normals[i], setup.eye, static_cast<std::uint64_t>(i));
+          estimateRadiance(reference, points[i], normals[i], tangents ? (*tangents)[i] : glm::vec3(0.0f), setup.eye,
+            static_cast<std::uint64_t>(i));
         for (int c = 0; c < 3; ++c)
         {
           r[3 * i + c] = std::isfinite(e.mean[c]) ? e.mean[c] : 0.0f;

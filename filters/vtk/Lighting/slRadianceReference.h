@@ -13,7 +13,8 @@
  * shadelab/RadianceEstimator.h for how a light's radiance is chosen so that
  * the reference tends to the discrete formula as the lights shrink.
  *
- * Sampling (SetStrategy()): uniform, cosine-weighted, BRDF importance, light
+ * Sampling (SetStrategy()): uniform, cosine-weighted, BRDF importance (the
+ * model's own lobe, shadelab/BRDFSampler.h), light
  * (with the environment map's own importance sampling) or multiple
  * importance sampling (default). SamplesPerPoint per point; every point has
  * its own random stream derived from Seed and its id, so output does not

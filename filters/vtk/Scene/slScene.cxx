@@ -95,16 +95,28 @@ int slScene::GetImageHeight() const
   return this->Data->height;
 }
 
+namespace
+{
+/// @p path resolved against the folder of the scene file @p source.
+std::string besideSceneFile(const std::string& path, const std::string& source)
+{
+  if (path.empty() || path.front() == '/')
+  {
+    return path;
+  }
+  const size_t slash = source.find_last_of('/');
+  return slash == std::string::npos ? path : source.substr(0, slash + 1) + path;
+}
+} // namespace
+
 std::string slScene::GetDiffuseTexturePath() const
 {
-  const std::string& texture = this->Data->material.diffuseTexture;
-  if (texture.empty() || texture.front() == '/')
-  {
-    return texture;
-  }
-  const std::string& source = this->Data->sourceFile;
-  const size_t slash = source.find_last_of('/');
-  return slash == std::string::npos ? texture : source.substr(0, slash + 1) + texture;
+  return besideSceneFile(this->Data->material.diffuseTexture, this->Data->sourceFile);
+}
+
+std::string slScene::GetBrdfFilePath() const
+{
+  return besideSceneFile(this->Data->brdf.file, this->Data->sourceFile);
 }
 
 void slScene::Note(const std::string& item)

@@ -97,6 +97,8 @@ public:
 
   /// The diffuse texture resolved against the scene file's folder, or "".
   std::string GetDiffuseTexturePath() const;
+  /// The .brdf file (brdf.file) resolved against the scene file's folder, or "".
+  std::string GetBrdfFilePath() const;
 
   ///@{
   /// Scene to VTK. ApplyToRenderer() sets the background, replaces the lights

@@ -48,7 +48,7 @@ int main(int argc, char** argv)
   SHADELAB_LIGHT_FIELDS(SHADELAB_FIELD)
 #undef SHADELAB_FIELD
   out << "};\n\n// Material coefficients.\nstruct slMaterial\n{\n";
-#define SHADELAB_FIELD(type, field, bit, what) out << "  " #type " " #field "; // " what "\n";
+#define SHADELAB_FIELD(type, field, bit, key, value, range, what) out << "  " #type " " #field "; // " what "\n";
   SHADELAB_MATERIAL_PARAMETERS(SHADELAB_FIELD)
 #undef SHADELAB_FIELD
   out << "};\n";

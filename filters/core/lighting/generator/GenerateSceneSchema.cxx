@@ -74,12 +74,17 @@ json keySchema(const SceneKey<Struct>& key, const json& written)
     case SceneKeyKind::Space:
       p["enum"] = lightSpaceNames();
       break;
+    case SceneKeyKind::Parameters:
+      p["type"] = "object";
+      p["additionalProperties"] = { { "oneOf",
+        { { { "type", "number" } }, { { "type", "boolean" } }, { { "$ref", "#/$defs/color" } } } } };
+      break;
   }
   if (key.what)
   {
     p["description"] = key.what;
   }
-  if (key.kind != SceneKeyKind::Text && written.contains(key.name))
+  if (key.kind != SceneKeyKind::Text && key.kind != SceneKeyKind::Parameters && written.contains(key.name))
   {
     p["default"] = written[key.name];
   }
@@ -124,6 +129,8 @@ json schema()
       { { "model", { { "enum", modelNames() }, { "default", written["shading"]["model"] } } },
         { "frequency", { { "enum", frequencyNames() }, { "default", written["shading"]["frequency"] } } } } } };
   defs["material"] = objectSchema(materialKeys(), written["material"], every);
+  defs["brdf"] = objectSchema(brdfKeys(), json::object(), every);
+  defs["brdf"]["required"] = { "file" };
   defs["camera"] = objectSchema(cameraKeys(), written["camera"], every);
   defs["camera"]["description"] = "Give position and focalPoint together, or neither: then the mesh is fitted in "
                                   "view and azimuth/elevation turn the camera.";
@@ -149,6 +156,7 @@ json schema()
   properties["background"] = { { "$ref", "#/$defs/color" }, { "default", written["background"] } };
   properties["shading"] = { { "$ref", "#/$defs/shading" } };
   properties["material"] = { { "$ref", "#/$defs/material" } };
+  properties["brdf"] = { { "$ref", "#/$defs/brdf" } };
   properties["camera"] = { { "$ref", "#/$defs/camera" } };
   properties["lights"] = { { "type", "array" }, { "items", { { "oneOf", lightRefs } } } };
 

@@ -73,23 +73,36 @@ double piecewise(const F& f, const std::vector<double>& breaks, double end, doub
 double directionalAlbedo(int model, const glsl::slMaterial& material, double thetaI)
 {
   glsld::slMaterial m;
-#define SHADELAB_COPY(type, field, bit, what) m.field = material.field;
+#define SHADELAB_COPY(type, field, ...) m.field = material.field;
   SHADELAB_MATERIAL_PARAMETERS(SHADELAB_COPY)
 #undef SHADELAB_COPY
   const double sinI = std::sin(thetaI), cosI = std::cos(thetaI);
-  const glm::dvec3 N(0.0, 0.0, 1.0), L(sinI, 0.0, cosI);
-  const bool blinn = modelInfo(static_cast<ShadingModel>(model)).lobe == SpecularLobe::Halfway;
+  // The tangent X is +x: L lies in the plane of X and N.
+  const glm::dvec3 N(0.0, 0.0, 1.0), X(1.0, 0.0, 0.0), L(sinI, 0.0, cosI);
+  const SpecularLobe lobe = modelInfo(static_cast<ShadingModel>(model)).lobe;
+  const bool blinn = lobe != SpecularLobe::None && lobe != SpecularLobe::Mirror;
 
   // f_r cos(theta_o) for V toward the eye, mean of R, G, B.
   auto integrand = [&](const glm::dvec3& V) {
-    const glm::dvec3 f = glsld::slBRDF(model, m, N, L, V);
+    const glm::dvec3 f = glsld::slBRDF(model, m, N, X, L, V);
     return (f.x + f.y + f.z) / 3.0 * std::max(0.0, V.z);
   };
 
   // Polar breakpoints: the lobe's width times 1, 2, 4, ... and, for Phong,
-  // the kink of max(0, R.V)^n at a right angle from R.
+  // the kink of max(0, R.V)^n at a right angle from R. The width of a power
+  // n of a cosine is about 1 / sqrt(n + 1); of a microfacet lobe, its
+  // (smallest) roughness alpha.
+  double width = 1.0 / std::sqrt(m.shininess + 1.0);
+  if (lobe == SpecularLobe::GGX || lobe == SpecularLobe::Beckmann)
+  {
+    width = std::max<double>(m.roughness, glsld::SL_MIN_ROUGHNESS);
+  }
+  if (lobe == SpecularLobe::Ward || lobe == SpecularLobe::AshikhminShirley)
+  {
+    width = std::max<double>(std::min(m.roughnessX, m.roughnessY), glsld::SL_MIN_ROUGHNESS);
+  }
   std::vector<double> breaks;
-  for (double b = 0.25 / std::sqrt(m.shininess + 1.0); b < kPi; b *= 2.0)
+  for (double b = 0.25 * width; b < kPi; b *= 2.0)
   {
     breaks.push_back(b);
   }
@@ -125,7 +138,8 @@ double directionalAlbedo(int model, const glsl::slMaterial& material, double the
   };
 
   // The integrand is even in the azimuth (mirror symmetry about the plane of
-  // incidence): twice the integral over [0, pi]. A first pass sets the scale
+  // incidence, which holds the tangent X of the anisotropic models): twice
+  // the integral over [0, pi]. A first pass sets the scale
   // of the tolerance.
   const double rough = 2.0 * adaptive([&](double phi) { return overAzimuth(phi, 1e-4); }, 0.0, kPi, 1e-2);
   const double tolerance = 1e-9 * std::max(1.0, std::abs(rough));

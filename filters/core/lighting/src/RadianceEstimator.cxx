@@ -1,5 +1,6 @@
 #include "shadelab/RadianceEstimator.h"
 
+#include "shadelab/BRDFSampler.h"
 #include "shadelab/LightingTables.h"
 #include "shadelab/Sampling.h"
 
@@ -62,13 +63,10 @@ std::vector<Cone> conesAt(const ReferenceSetup& s, const glm::vec3& P)
 struct PointContext
 {
   const ReferenceSetup& s;
-  glm::vec3 N, V;
+  glm::vec3 N, T, V;
   Frame frame;
   std::vector<Cone> cones;
-  float diffuseWeight;  ///< BRDF sampling: probability of the cosine lobe
-  float specularPower;  ///< n of the specular sampling lobe
-  bool blinn;           ///< Blinn-Phong: sample H around N; else L around R
-  glm::vec3 mirror;     ///< R = 2 (N.V) N - V
+  BRDFSampler brdf;
   float environmentChoice; ///< light sampling: probability of the environment
 };
 
@@ -97,47 +95,13 @@ glm::vec3 integrand(const PointContext& c, const glm::vec3& w)
   {
     return glm::vec3(0.0f);
   }
-  return glsl::slBRDF(c.s.model, c.s.material, c.N, w, c.V) * incident(c, w) * cosTheta;
-}
-
-float brdfPdf(const PointContext& c, const glm::vec3& w)
-{
-  const float cosTheta = glm::dot(c.N, w);
-  if (cosTheta <= 0.0f)
-  {
-    return 0.0f;
-  }
-  float specular = 0.0f;
-  if (c.diffuseWeight < 1.0f)
-  {
-    if (c.blinn)
-    {
-      const glm::vec3 H = glsl::slSafeNormalize(w + c.V);
-      const float vh = glm::dot(c.V, H);
-      specular = vh > 0.0f ? phongLobePdf(glm::dot(c.N, H), c.specularPower) / (4.0f * vh) : 0.0f;
-    }
-    else
-    {
-      specular = phongLobePdf(glm::dot(c.mirror, w), c.specularPower);
-    }
-  }
-  return c.diffuseWeight * cosineHemispherePdf(cosTheta) + (1.0f - c.diffuseWeight) * specular;
+  return glsl::slBRDF(c.s.model, c.s.material, c.N, c.T, w, c.V) * incident(c, w) * cosTheta;
 }
 
 glm::vec3 sampleBRDF(const PointContext& c, Rng& rng)
 {
   const float choice = rng.next(), u1 = rng.next(), u2 = rng.next();
-  if (choice < c.diffuseWeight)
-  {
-    return c.frame.toWorld(sampleCosineHemisphere(u1, u2));
-  }
-  const glm::vec3 local = samplePhongLobe(u1, u2, c.specularPower);
-  if (c.blinn)
-  {
-    const glm::vec3 H = c.frame.toWorld(local);
-    return 2.0f * glm::dot(c.V, H) * H - c.V;
-  }
-  return Frame(c.mirror).toWorld(local);
+  return c.brdf.sample(choice, u1, u2);
 }
 
 float lightPdf(const PointContext& c, const glm::vec3& w)
@@ -195,7 +159,7 @@ glm::vec3 oneEstimate(const PointContext& c, SamplingStrategy strategy, bool hav
     case SamplingStrategy::BRDF:
     {
       const glm::vec3 w = sampleBRDF(c, rng);
-      return weighted(integrand(c, w), brdfPdf(c, w));
+      return weighted(integrand(c, w), c.brdf.pdf(w));
     }
     case SamplingStrategy::Light:
     {
@@ -210,7 +174,7 @@ glm::vec3 oneEstimate(const PointContext& c, SamplingStrategy strategy, bool hav
     default:
     {
       const glm::vec3 wb = sampleBRDF(c, rng);
-      const float pbb = brdfPdf(c, wb);
+      const float pbb = c.brdf.pdf(wb);
       if (!haveLights)
       {
         return weighted(integrand(c, wb), pbb);
@@ -218,21 +182,18 @@ glm::vec3 oneEstimate(const PointContext& c, SamplingStrategy strategy, bool hav
       const float plb = lightPdf(c, wb);
       glm::vec3 sum = powerHeuristic(pbb, plb) * weighted(integrand(c, wb), pbb);
       const glm::vec3 wl = sampleLight(c, rng);
-      const float pll = lightPdf(c, wl), pbl = brdfPdf(c, wl);
+      const float pll = lightPdf(c, wl), pbl = c.brdf.pdf(wl);
       sum += powerHeuristic(pll, pbl) * weighted(integrand(c, wl), pll);
       return sum;
     }
   }
 }
 
-float mean3(const glm::vec3& v)
-{
-  return (v.x + v.y + v.z) / 3.0f;
-}
 } // namespace
 
 RadianceEstimate estimateRadiance(
-  const ReferenceSetup& s, const glm::vec3& P, const glm::vec3& normal, const glm::vec3& eye, std::uint64_t stream)
+  const ReferenceSetup& s, const glm::vec3& P, const glm::vec3& normal, const glm::vec3& tangent, const glm::vec3& eye,
+  std::uint64_t stream)
 {
   RadianceEstimate result;
   result.mean = s.material.emission;
@@ -241,18 +202,8 @@ RadianceEstimate estimateRadiance(
   {
     return result;
   }
-  PointContext c{ s, N, glsl::slSafeNormalize(eye - P), Frame(N), conesAt(s, P), 1.0f, 1.0f, false, N, 0.0f };
-  c.mirror = glsl::slSafeNormalize(2.0f * glm::dot(N, c.V) * N - c.V);
-  const LightingModelInfo& model = modelInfo(static_cast<ShadingModel>(s.model));
-  const bool specularModel = (model.reads & kReadsSpecular) != 0;
-  const float kd = mean3(s.material.diffuse), ks = specularModel ? mean3(s.material.specular) : 0.0f;
-  c.diffuseWeight = kd + ks > 0.0f ? kd / (kd + ks) : 1.0f;
-  if (glm::length(c.mirror) == 0.0f)
-  {
-    c.diffuseWeight = 1.0f; // eye in the tangent plane or at P: no mirror direction
-  }
-  c.specularPower = std::max(s.material.shininess, 0.0f);
-  c.blinn = model.lobe == SpecularLobe::Halfway;
+  const glm::vec3 V = glsl::slSafeNormalize(eye - P);
+  PointContext c{ s, N, tangent, V, Frame(N), conesAt(s, P), BRDFSampler(s.model, s.material, N, tangent, V), 0.0f };
   const bool haveEnvironment = s.environment && !s.environment->empty() && s.environmentScale > 0.0f;
   c.environmentChoice = haveEnvironment ? (c.cones.empty() ? 1.0f : 0.5f) : 0.0f;
   const bool haveLights = haveEnvironment || !c.cones.empty();

@@ -142,7 +142,7 @@ glsl::slLight toEvaluationLight(const SceneLight& light)
 glsl::slMaterial toEvaluationMaterial(const SceneMaterial& material)
 {
   glsl::slMaterial out;
-#define SHADELAB_COPY(type, field, bit, what) out.field = material.field;
+#define SHADELAB_COPY(type, field, ...) out.field = material.field;
   SHADELAB_MATERIAL_PARAMETERS(SHADELAB_COPY)
 #undef SHADELAB_COPY
   return out;

@@ -1,6 +1,7 @@
 #include "shadelab/SceneFile.h"
 
 #include "shadelab/AtomicFile.h"
+#include "shadelab/BrdfAssignment.h"
 #include "shadelab/PrintableText.h"
 #include "shadelab/SceneKeys.h"
 #include "shadelab/SceneLimits.h"
@@ -38,6 +39,28 @@ std::string childPath(const std::string& parent, const std::string& key)
   return parent.empty() ? key : parent + "." + key;
 }
 
+/// The JSON value of one "name=value" assignment's value: true/false for
+/// 0/1 is not told from a float 0/1 here, so numbers stay numbers and the
+/// .brdf reader takes 0 and 1 for bools.
+nlohmann::json assignmentValue(const std::string& value)
+{
+  if (value.find(',') != std::string::npos)
+  {
+    nlohmann::json rgb = nlohmann::json::array();
+    std::istringstream parts(value);
+    for (std::string part; std::getline(parts, part, ',');)
+    {
+      rgb.push_back(std::strtod(part.c_str(), nullptr));
+    }
+    return rgb;
+  }
+  if (value == "true" || value == "false")
+  {
+    return value == "true";
+  }
+  return std::strtod(value.c_str(), nullptr);
+}
+
 /// Reads one JSON document into a Scene, failing on the first problem with a
 /// message that names the file and the key path.
 class SceneReader
@@ -53,7 +76,7 @@ public:
     Scene scene;
     scene.sourceFile = this->File;
     this->expectObject(root, "", { "$schema", "description", "imageSize", "background", "shading",
-                                   "material", "camera", "lights" });
+                                   "material", "brdf", "camera", "lights" });
     if (root.contains("description"))
     {
       scene.description = this->string(root["description"], "description");
@@ -73,6 +96,10 @@ public:
     if (root.contains("material"))
     {
       scene.material = this->material(root["material"], "material");
+    }
+    if (root.contains("brdf"))
+    {
+      scene.brdf = this->brdf(root["brdf"], "brdf");
     }
     if (root.contains("camera"))
     {
@@ -291,8 +318,49 @@ private:
         case SceneKeyKind::Space:
           out.*(key.space) = this->choice(v, p, lightSpaceNames(), &parseLightSpaceName);
           break;
+        case SceneKeyKind::Parameters:
+          out.*(key.parameters) = this->assignments(v, p);
+          break;
       }
     }
+  }
+
+  /// {"name": 0.5, "flag": true, "tint": [1, 0, 0]} as "name=0.5", "flag=1",
+  /// "tint=1,0,0": the .brdf reader checks names and ranges when the file is read.
+  std::vector<std::string> assignments(const json& value, const std::string& path) const
+  {
+    if (!value.is_object())
+    {
+      this->fail(path, "expected an object of parameter values, got " + typeName(value));
+    }
+    std::vector<std::string> out;
+    for (const auto& item : value.items())
+    {
+      const std::string p = childPath(path, item.key());
+      const json& v = item.value();
+      std::string text;
+      if (v.is_boolean())
+      {
+        text = v.get<bool>() ? "1" : "0";
+      }
+      else if (v.is_number())
+      {
+        text = brdfNumberText(this->number(v, p, -HUGE_VAL, HUGE_VAL));
+      }
+      else if (v.is_array() && v.size() == 3)
+      {
+        for (int i = 0; i < 3; ++i)
+        {
+          text += (i ? "," : "") + brdfNumberText(this->number(v[i], p + "[" + std::to_string(i) + "]", 0.0, kMaxColourValue));
+        }
+      }
+      else
+      {
+        this->fail(p, "expected a number, true/false or [r, g, b], got " + typeName(v));
+      }
+      out.push_back(item.key() + "=" + text);
+    }
+    return out;
   }
 
   /// The names of @p keys that @p takes selects, with @p extra.
@@ -322,6 +390,18 @@ private:
     SceneMaterial m;
     this->keys(value, path, materialKeys(), m, every<SceneMaterial>);
     return m;
+  }
+
+  SceneBrdf brdf(const json& value, const std::string& path) const
+  {
+    this->expectObject(value, path, keyNames(brdfKeys(), every<SceneBrdf>));
+    if (!value.contains("file"))
+    {
+      this->fail(path, "missing key \"file\" (the .brdf file)");
+    }
+    SceneBrdf b;
+    this->keys(value, path, brdfKeys(), b, every<SceneBrdf>);
+    return b;
   }
 
   SceneCamera camera(const json& value, const std::string& path) const
@@ -489,6 +569,18 @@ json keysToJson(const std::vector<SceneKey<Struct>>& keys, const Struct& object,
       case SceneKeyKind::Space:
         out[key.name] = lightSpaceName(object.*(key.space));
         break;
+      case SceneKeyKind::Parameters:
+      {
+        json values = json::object();
+        for (const std::string& assignment : object.*(key.parameters))
+        {
+          const size_t equals = assignment.find('=');
+          values[assignment.substr(0, equals)] =
+            assignmentValue(equals == std::string::npos ? std::string() : assignment.substr(equals + 1));
+        }
+        out[key.name] = values;
+        break;
+      }
     }
   }
   return out;
@@ -563,6 +655,10 @@ std::string sceneToJson(const Scene& scene)
   root["shading"] = { { "model", modelName(scene.model) }, { "frequency", frequencyName(scene.frequency) } };
 
   root["material"] = keysToJson(materialKeys(), scene.material, [](const SceneKey<SceneMaterial>&) { return true; });
+  if (!scene.brdf.file.empty())
+  {
+    root["brdf"] = keysToJson(brdfKeys(), scene.brdf, [](const SceneKey<SceneBrdf>&) { return true; });
+  }
   // A placed camera is written with its position, a fitted one with its turns.
   const SceneCamera& c = scene.camera;
   root["camera"] = keysToJson(cameraKeys(), c, [&c](const SceneKey<SceneCamera>& key) {

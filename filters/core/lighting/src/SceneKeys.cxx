@@ -68,7 +68,7 @@ std::string indexed(const std::string& path, int i)
 
 namespace
 {
-/// The range column of SHADELAB_LIGHT_KEYS.
+/// The range column of SHADELAB_LIGHT_KEYS and SHADELAB_MATERIAL_PARAMETERS.
 struct LightKeyRange
 {
   double lo = 0.0, hi = 0.0;
@@ -144,18 +144,54 @@ const std::vector<SceneKey<SceneLight>>& lightKeys()
   return keys;
 }
 
+namespace
+{
+using M = SceneMaterial;
+/// The key of SceneMaterial member @p field (a colour or a number).
+SceneKey<M> materialKey(const char* name, float M::*field, unsigned bit, LightKeyRange range)
+{
+  SceneKey<M> k = numberKey(name, field, range.lo, range.hi, range.openLo, range.openHi);
+  k.materialParameter = bit;
+  return k;
+}
+SceneKey<M> materialKey(const char* name, glm::vec3 M::*field, unsigned bit, LightKeyRange)
+{
+  SceneKey<M> k = vectorKey(name, SceneKeyKind::Colour, field);
+  k.materialParameter = bit;
+  return k;
+}
+} // namespace
+
 const std::vector<SceneKey<SceneMaterial>>& materialKeys()
 {
-  using M = SceneMaterial;
-  static const std::vector<SceneKey<M>> keys{
-    described(vectorKey("ambient", SceneKeyKind::Colour, &M::ambient), "k_a"),
-    described(vectorKey("diffuse", SceneKeyKind::Colour, &M::diffuse), "k_d"),
-    described(vectorKey("specular", SceneKeyKind::Colour, &M::specular), "k_s"),
-    described(vectorKey("emission", SceneKeyKind::Colour, &M::emission), "k_e"),
-    described(numberKey("shininess", &M::shininess, 0.0, kMaxShininess), "n, the specular exponent"),
-    described(textKey("diffuseTexture", &M::diffuseTexture, "must name an image file"),
+  static const std::vector<SceneKey<M>> keys = [] {
+    std::vector<SceneKey<M>> out;
+#define SHADELAB_KEY(type, field, bit, name, value, range, meaning)                                                   \
+  out.push_back(described(materialKey(name, &M::field, bit, range), meaning));
+    SHADELAB_MATERIAL_PARAMETERS(SHADELAB_KEY)
+#undef SHADELAB_KEY
+    out.push_back(described(textKey("diffuseTexture", &M::diffuseTexture, "must name an image file"),
       "Image (any OpenImageIO format) used as k_d through the mesh's texture coordinates; relative to the scene "
-      "file.") };
+      "file."));
+    out.back().materialParameter = kReadsDiffuse;
+    return out;
+  }();
+  return keys;
+}
+
+const std::vector<SceneKey<SceneBrdf>>& brdfKeys()
+{
+  using B = SceneBrdf;
+  static const std::vector<SceneKey<B>> keys = [] {
+    SceneKey<B> parameters{ "parameters", SceneKeyKind::Parameters };
+    parameters.parameters = &B::parameters;
+    return std::vector<SceneKey<B>>{ described(textKey("file", &B::file, "must name a .brdf file"),
+                                       "BRDF Explorer .brdf file shading in place of the model's diffuse and "
+                                       "specular factors; relative to the scene file."),
+      described(parameters,
+        "Values of the file's parameters by name: a number (float), true/false (bool) or [r, g, b] (color); "
+        "the file's defaults hold for the others.") };
+  }();
   return keys;
 }
 
@@ -213,6 +249,7 @@ std::string keyValueProblem(const SceneKey<Struct>& key, const Struct& object, c
 
 template std::string keyValueProblem(const SceneKey<SceneLight>&, const SceneLight&, const std::string&);
 template std::string keyValueProblem(const SceneKey<SceneMaterial>&, const SceneMaterial&, const std::string&);
+template std::string keyValueProblem(const SceneKey<SceneBrdf>&, const SceneBrdf&, const std::string&);
 template std::string keyValueProblem(const SceneKey<SceneCamera>&, const SceneCamera&, const std::string&);
 
 } // namespace shadelab

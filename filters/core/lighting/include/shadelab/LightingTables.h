@@ -31,31 +31,56 @@ enum MaterialParameterBit : unsigned
   kReadsDiffuse = 1u << 1,
   kReadsSpecular = 1u << 2,
   kReadsEmission = 1u << 3,
-  kReadsShininess = 1u << 4
+  kReadsShininess = 1u << 4,
+  kReadsRoughness = 1u << 5,
+  kReadsRoughnessPair = 1u << 6, ///< the anisotropic pair along the tangent X and Y = N x X
+  kReadsIor = 1u << 7
 };
 
 /// The shape of a model's specular lobe, for the CPU integrators that sample
-/// or split it (Albedo.cxx, RadianceEstimator.cxx): none, around the mirror
-/// direction R, or around the normal in the half-vector H.
+/// or split it (Albedo.cxx, RadianceEstimator.cxx): none, a power of the
+/// cosine around the mirror direction R (Phong) or of the normal's cosine
+/// with the half vector H (Blinn-Phong), or a microfacet distribution of H:
+/// GGX (Trowbridge-Reitz), Beckmann, Ward's anisotropic Gaussian, or
+/// Ashikhmin-Shirley's anisotropic power of N.H.
 enum class SpecularLobe
 {
   None,
   Mirror,
-  Halfway
+  Halfway,
+  GGX,
+  Beckmann,
+  Ward,
+  AshikhminShirley
 };
 
 // clang-format off
 /// Material parameters: the fields of slMaterial (generated into
-/// slLightingTables.glsl) and of SceneMaterial. X(GLSL type, field, bit, what).
+/// slLightingTables.glsl), the members of SceneMaterial (Scene.h) and the
+/// keys of a scene file's "material" (SceneKeys.h: reader, writer, range
+/// checks, JSON schema). X(GLSL type: vec3 is a colour, float a number,
+/// field, bit, "key", default, range (SceneKeys.cxx: anyValue() for a
+/// colour, closed(lo, hi)), "what it means").
 #define SHADELAB_MATERIAL_PARAMETERS(X)                                                                               \
-  X(vec3, ambient, kReadsAmbient, "k_a, reflects the lights' ambient colours")                                        \
-  X(vec3, diffuse, kReadsDiffuse, "k_d")                                                                              \
-  X(vec3, specular, kReadsSpecular, "k_s")                                                                            \
-  X(vec3, emission, kReadsEmission, "k_e, added once per point")                                                     \
-  X(float, shininess, kReadsShininess, "n, the specular exponent")
+  X(vec3, ambient, kReadsAmbient, "ambient", glm::vec3(0.1f), anyValue(), "k_a, reflects the lights' ambient colours") \
+  X(vec3, diffuse, kReadsDiffuse, "diffuse", glm::vec3(0.8f), anyValue(), "k_d")                                      \
+  X(vec3, specular, kReadsSpecular, "specular", glm::vec3(0.5f), anyValue(), "k_s")                                   \
+  X(vec3, emission, kReadsEmission, "emission", glm::vec3(0.0f), anyValue(), "k_e, added once per point")             \
+  X(float, shininess, kReadsShininess, "shininess", 32.0f, closed(0.0, kMaxShininess), "n, the specular exponent")   \
+  X(float, roughness, kReadsRoughness, "roughness", 0.3f, closed(0.0, 1.0),                                           \
+    "alpha, the facets' RMS slope: the width of GGX and Beckmann (at least 0.01 in the formulas); Oren-Nayar's "    \
+    "sigma in radians (0: Lambert)")                                                                                 \
+  X(float, roughnessX, kReadsRoughnessPair, "roughnessX", 0.15f, closed(0.0, 1.0),                                    \
+    "alpha along the tangent X (Ward, Ashikhmin-Shirley; at least 0.01 in the formulas)")                            \
+  X(float, roughnessY, kReadsRoughnessPair, "roughnessY", 0.45f, closed(0.0, 1.0),                                    \
+    "alpha along the bitangent Y = N x X (Ward, Ashikhmin-Shirley; at least 0.01 in the formulas)")                  \
+  X(float, ior, kReadsIor, "ior", 1.5f, closed(1.0, 10.0),                                                            \
+    "index of refraction: Schlick's Fresnel F0 = ((ior - 1) / (ior + 1))^2")
 
 /// Lighting models. X(Enumerator, GLSL_SUFFIX, "scene-file name", normalised,
 /// material parameters read, specular lobe). GLSL: SL_MODEL_<GLSL_SUFFIX>.
+/// A model that reads kReadsRoughnessPair is anisotropic: it needs the
+/// mesh's tangents (modelNeedsTangents()).
 #define SHADELAB_LIGHTING_MODELS(X)                                                                                  \
   X(Lambert, LAMBERT, "lambert", false,                                                                               \
     kReadsAmbient | kReadsDiffuse | kReadsEmission, SpecularLobe::None)                                               \
@@ -68,7 +93,19 @@ enum class SpecularLobe
   X(PhongNormalized, PHONG_NORMALIZED, "phong-normalized", true,                                                      \
     kReadsAmbient | kReadsDiffuse | kReadsSpecular | kReadsEmission | kReadsShininess, SpecularLobe::Mirror)          \
   X(BlinnPhongNormalized, BLINN_PHONG_NORMALIZED, "blinn-phong-normalized", true,                                     \
-    kReadsAmbient | kReadsDiffuse | kReadsSpecular | kReadsEmission | kReadsShininess, SpecularLobe::Halfway)
+    kReadsAmbient | kReadsDiffuse | kReadsSpecular | kReadsEmission | kReadsShininess, SpecularLobe::Halfway)         \
+  X(CookTorranceGGX, COOK_TORRANCE_GGX, "cook-torrance-ggx", true,                                                    \
+    kReadsAmbient | kReadsDiffuse | kReadsSpecular | kReadsEmission | kReadsRoughness | kReadsIor, SpecularLobe::GGX) \
+  X(CookTorranceBeckmann, COOK_TORRANCE_BECKMANN, "cook-torrance-beckmann", true,                                     \
+    kReadsAmbient | kReadsDiffuse | kReadsSpecular | kReadsEmission | kReadsRoughness | kReadsIor,                    \
+    SpecularLobe::Beckmann)                                                                                           \
+  X(OrenNayar, OREN_NAYAR, "oren-nayar", true,                                                                        \
+    kReadsAmbient | kReadsDiffuse | kReadsEmission | kReadsRoughness, SpecularLobe::None)                             \
+  X(Ward, WARD, "ward", true,                                                                                         \
+    kReadsAmbient | kReadsDiffuse | kReadsSpecular | kReadsEmission | kReadsRoughnessPair, SpecularLobe::Ward)        \
+  X(AshikhminShirley, ASHIKHMIN_SHIRLEY, "ashikhmin-shirley", true,                                                   \
+    kReadsAmbient | kReadsDiffuse | kReadsSpecular | kReadsEmission | kReadsRoughnessPair | kReadsIor,                \
+    SpecularLobe::AshikhminShirley)
 
 /// The values a light type can take besides its name, type, intensity and
 /// ambient colour (which every light has). A light-type row names its own;
@@ -220,6 +257,13 @@ constexpr const LightingModelInfo& modelInfo(ShadingModel model)
 constexpr const LightTypeInfo& lightTypeInfo(LightType type)
 {
   return kLightTypes[static_cast<int>(type)];
+}
+
+/// Whether @p model is anisotropic: its formula reads the tangent X of the
+/// surface, so a mesh shaded with it must carry "Tangents".
+constexpr bool modelNeedsTangents(ShadingModel model)
+{
+  return (modelInfo(model).reads & kReadsRoughnessPair) != 0;
 }
 
 /// Whether a light of type @p type takes parameter @p bit.

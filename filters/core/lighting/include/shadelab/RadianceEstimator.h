@@ -18,8 +18,9 @@
  * No shadows or interreflection (local lighting), no ambient term.
  *
  * Strategies: uniform and cosine-weighted hemisphere sampling, BRDF
- * importance sampling (a mixture of the cosine lobe for k_d and the Phong or
- * Blinn-Phong lobe for k_s), light sampling (the environment map's own
+ * importance sampling (BRDFSampler.h: a mixture of the cosine lobe for k_d
+ * and the model's own specular lobe for k_s: Phong, Blinn-Phong, GGX's
+ * visible normals, Beckmann, Ward, Ashikhmin-Shirley), light sampling (the environment map's own
  * importance sampling plus uniform cone sampling of the lights) and
  * multiple importance sampling (one BRDF and one light sample per iteration,
  * power heuristic).
@@ -64,11 +65,13 @@ struct RadianceEstimate
   glm::vec3 stdError{ 0.0f }; ///< standard error of the mean
 };
 
-/// The estimate at @p P (normal @p N, any length) seen from @p eye; @p stream
+/// The estimate at @p P (normal @p N, any length; tangent @p T, any length,
+/// read by the anisotropic models only) seen from @p eye; @p stream
 /// (e.g. the point id) selects the random stream, so results do not depend on
 /// the order points are processed in. A zero normal gives emission only.
 RadianceEstimate estimateRadiance(
-  const ReferenceSetup& setup, const glm::vec3& P, const glm::vec3& N, const glm::vec3& eye, std::uint64_t stream);
+  const ReferenceSetup& setup, const glm::vec3& P, const glm::vec3& N, const glm::vec3& T, const glm::vec3& eye,
+  std::uint64_t stream);
 
 } // namespace shadelab
 

@@ -48,7 +48,8 @@ enum class SceneKeyKind
   Direction,    ///< 3 finite numbers, not all zero
   Coefficients, ///< 3 numbers, each >= 0 (a light's attenuation)
   Text,         ///< a string (not empty when whenEmpty is set)
-  Space         ///< a LightSpace name
+  Space,        ///< a LightSpace name
+  Parameters    ///< an object of name: number, boolean or [r, g, b], kept as "name=value" texts
 };
 
 /// The C++ type of a key of kind K.
@@ -87,14 +88,28 @@ struct SceneLight
 #undef SHADELAB_MEMBER
 };
 
+/// The C++ type of a material parameter of GLSL type vec3 or float.
+#define SHADELAB_MATERIAL_TYPE_vec3 glm::vec3
+#define SHADELAB_MATERIAL_TYPE_float float
+
+/// The material: one member per row of SHADELAB_MATERIAL_PARAMETERS
+/// (LightingTables.h), with the row's default, and a diffuse texture.
 struct SceneMaterial
 {
-  glm::vec3 ambient{ 0.1f };
-  glm::vec3 diffuse{ 0.8f };
-  glm::vec3 specular{ 0.5f };
-  glm::vec3 emission{ 0.0f };
-  float shininess = 32.0f;
+#define SHADELAB_MEMBER(type, field, bit, key, value, ...) SHADELAB_MATERIAL_TYPE_##type field = value;
+  SHADELAB_MATERIAL_PARAMETERS(SHADELAB_MEMBER)
+#undef SHADELAB_MEMBER
   std::string diffuseTexture; ///< image for k_d, resolved against the scene file's folder
+};
+
+/// A BRDF Explorer .brdf file shading in place of the model's diffuse and
+/// specular factors (shadelab/BrdfFile.h), and its parameter values.
+struct SceneBrdf
+{
+  std::string file; ///< resolved against the scene file's folder; empty: the model
+  /// "name=value" as `shadelab render --param` takes them (a colour "r,g,b",
+  /// a bool 0 or 1); the file's defaults hold for the others.
+  std::vector<std::string> parameters;
 };
 
 struct SceneCamera
@@ -113,6 +128,7 @@ struct Scene
   std::string description;
   std::vector<SceneLight> lights;
   SceneMaterial material;
+  SceneBrdf brdf;
   SceneCamera camera;
   ShadingModel model = ShadingModel::BlinnPhong;
   ShadingFrequency frequency = ShadingFrequency::Phong;

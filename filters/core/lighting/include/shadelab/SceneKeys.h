@@ -22,7 +22,7 @@
 namespace shadelab
 {
 
-/// One key of the object @p Struct (SceneLight, SceneMaterial, SceneCamera).
+/// One key of the object @p Struct (SceneLight, SceneMaterial, SceneBrdf, SceneCamera).
 /// Exactly one of the field pointers is set, the one of its kind.
 template <typename Struct>
 struct SceneKey
@@ -32,6 +32,9 @@ struct SceneKey
   /// Lights: the parameter a light type must take to take this key
   /// (LightingTables.h); 0: every light takes it.
   unsigned lightParameter = 0;
+  /// Materials: the MaterialParameterBit of the key (LightingTables.h); a
+  /// model whose row reads it is changed by it (editors show it for those).
+  unsigned materialParameter = 0;
   double lo = 0.0, hi = 0.0; ///< range of a number (and of each component of a colour)
   bool openLo = false, openHi = false;
   /// When set, hi is this field's value (a spot's edge is at most its cutoff).
@@ -42,6 +45,7 @@ struct SceneKey
   glm::vec3 Struct::*vector = nullptr;
   std::string Struct::*text = nullptr;
   LightSpace Struct::*space = nullptr;
+  std::vector<std::string> Struct::*parameters = nullptr;
   /// What the key means, for the JSON schema (null: nothing to add).
   const char* what = nullptr;
 };
@@ -51,6 +55,8 @@ struct SceneKey
 const std::vector<SceneKey<SceneLight>>& lightKeys();
 /// The keys of "material".
 const std::vector<SceneKey<SceneMaterial>>& materialKeys();
+/// The keys of "brdf" (a .brdf file and its parameter values).
+const std::vector<SceneKey<SceneBrdf>>& brdfKeys();
 /// The keys of "camera". Only position and focalPoint are checked in scenes
 /// built in code (sceneValueProblem); the others are the file format's.
 const std::vector<SceneKey<SceneCamera>>& cameraKeys();

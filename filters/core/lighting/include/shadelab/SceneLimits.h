@@ -5,30 +5,18 @@
  * @brief The ranges a scene's values must lie in, and the check of a Scene
  * against them (for scenes not read from a file: built in code or from
  * VTK's lights, property and camera; SceneFile checks each value as it
- * reads it, with the same limits).
- *
- * Why upper limits on colours and intensities: every lighting term is a
- * product of intensity × light colour × material coefficient × a BRDF factor
- * (at most about n / 8π for the normalised models, n ≤ 1e5), summed over the
- * lights, in float. With each factor at most 1e6 the products stay below
- * 1e22, far from float's 3.4e38, so no finite scene can make a term infinite
- * (and infinity times a zero colour NaN). HDR lights and materials fit
- * easily.
+ * reads it, with the same limits). The largest colour, shininess and spot
+ * exponent are in ValueLimits.h.
  */
 
 #include "shadelab/Scene.h"
+#include "shadelab/ValueLimits.h"
 
 #include <string>
 
 namespace shadelab
 {
 
-/// Largest colour component, light intensity, emission or background value.
-constexpr double kMaxColourValue = 1e6;
-/// Largest shininess n.
-constexpr double kMaxShininess = 1e5;
-/// Largest spot-light exponent.
-constexpr double kMaxSpotExponent = 1e4;
 /// Smallest and largest image width or height, in pixels.
 constexpr int kMinImageSize = 16;
 constexpr int kMaxImageSize = 8192;

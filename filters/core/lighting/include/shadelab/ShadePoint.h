@@ -16,11 +16,14 @@ namespace shadelab
 {
 
 /// Ambient, diffuse, specular and emission at @p position with normal
-/// @p normal (any length) seen from @p eye, summed over @p lights (world
-/// space, see toEvaluationLight()). @p model is an SL_MODEL_* value.
+/// @p normal (any length) and tangent @p tangent (any length; read by the
+/// anisotropic models only, see slTangentX()) seen from @p eye, summed over
+/// @p lights (world space, see toEvaluationLight()). @p model is an
+/// SL_MODEL_* value.
 /// The total is glsl::slTotal() of the result. Always finite for finite input.
 glsl::slTerms shadePoint(const std::vector<glsl::slLight>& lights, const glsl::slMaterial& material,
-  int model, const glm::vec3& position, const glm::vec3& normal, const glm::vec3& eye);
+  int model, const glm::vec3& position, const glm::vec3& normal, const glm::vec3& eye,
+  const glm::vec3& tangent = glm::vec3(0.0f));
 
 } // namespace shadelab
 
