@@ -5,9 +5,9 @@ input files are written and every out.* argument already exists with other
 content. Each case expects exactly one line on stderr."""
 import struct
 
-from inputs import (QUAD_OBJ, TETRA_OFF, THREE_LIGHTS, exr, glb, gltf, legacy_vtk, light_types, lighting_models,
-                    obj, ply_ascii, ply_binary, ply_header, png, stl_binary, vtp, vtp_appended_base64_header,
-                    vtp_compressed_header)
+from inputs import (QUAD_OBJ, TETRA_OFF, THREE_LIGHTS, dds_volume, exr, glb, gltf, legacy_vtk, light_types,
+                    lighting_models, obj, ply_ascii, ply_binary, ply_header, png, stl_binary, vtp,
+                    vtp_appended_base64_header, vtp_compressed_header)
 
 
 def mesh_case(name, file_name, data, message, status=1):
@@ -275,11 +275,13 @@ CASES = [
     image_case("exr attribute of negative size", "t.exr", exr(-5), 'shadelab light: t.exr: cannot read image: EXR attribute \'comments\' (string) at byte 8 declares -5 bytes; 3 bytes remain in the file\n'),
     image_case("exr name without its end", "t.exr", exr(), 'shadelab light: t.exr: cannot read image: EXR header at byte 8: an attribute name that does not end within 255 bytes or before the end of the file\n'),
     image_case("png garbage", "t.png", b"\x89PNG\r\n\x1a\n\x1b[31m garbage", 'shadelab light: t.png: cannot read image: PNG chunk \'m ga\' at byte 8 declares 458961713 bytes of data; 1 byte remains in the file\n'),
-    image_case("png empty", "t.png", b"", 'shadelab light: t.png: cannot read image: Invalid image file "t.png": Not a PNG file\n'),
-    image_case("jpg truncated", "t.jpg", "seed:fuzz_image_jpg/gradient.jpg:300", 'shadelab light: t.jpg: cannot read image: Invalid image file "t.jpg": JPEG error: Premature end of JPEG file ("t.jpg") Bad JPEG header for "t.jpg"\n'),
-    image_case("jpg garbage", "t.jpg", b"\xff\xd8\xff\xe0 not really", 'shadelab light: t.jpg: cannot read image: Invalid image file "t.jpg": JPEG error: Premature end of JPEG file ("t.jpg") Bad JPEG header for "t.jpg"\n'),
+    image_case("png empty", "t.png", b"", 'shadelab light: t.png: cannot read image: Not a PNG file\n'),
+    image_case("jpg truncated", "t.jpg", "seed:fuzz_image_jpg/gradient.jpg:300", 'shadelab light: t.jpg: cannot read image: JPEG error: Premature end of JPEG file ("t.jpg") Bad JPEG header for "t.jpg"\n'),
+    image_case("jpg garbage", "t.jpg", b"\xff\xd8\xff\xe0 not really", 'shadelab light: t.jpg: cannot read image: JPEG error: Premature end of JPEG file ("t.jpg") Bad JPEG header for "t.jpg"\n'),
     image_case("hdr garbage", "t.hdr", b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 99999 +X 99999\n", 'shadelab light: t.hdr: cannot read image: its header declares 99999x99999 pixels of 3 channels, more than ShadeLab reads (2^28 values)\n'),
-    image_case("image missing", "nothere.png", "skip", 'shadelab light: nothere.png: cannot read image: Invalid image file "nothere.png": Could not open file "nothere.png"\n'),
+    image_case("hdr without pixels", "t.hdr", b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 0 +X 8\n", 'shadelab light: t.hdr: cannot read image: it has no pixels: its header declares 8x0 pixels of 3 channels\n'),
+    image_case("image that is a volume", "t.jpg", dds_volume(), 'shadelab light: t.jpg: cannot read image: it holds a volume of 3 slices; ShadeLab reads 2D images only\n'),
+    image_case("image missing", "nothere.png", "skip", 'shadelab light: nothere.png: cannot read image: Could not open file "nothere.png"\n'),
     image_case("image is a directory", "d.png", None, 'shadelab light: d.png: cannot read image: it is a directory\n'),
     # command lines
     cli_case("size overflow", ["render", "m.off", "--size", "4294967360x48", "-o", "out.png"], 'shadelab render: --size: "4294967360x48" is not WxH with 16 <= W, H <= 8192\n'),

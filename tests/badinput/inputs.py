@@ -149,6 +149,16 @@ def exr(attribute_size=None, name=b"comments"):
     return head + name + b"\0string\0" + struct.pack("<i", attribute_size) + b"abc"
 
 
+def dds_volume(width=7, height=17, depth=3):
+    """A DirectDraw Surface volume texture: @depth slices of @width x @height
+    8-bit luminance pixels, a 3D image that OpenImageIO reads as one."""
+    flags = 0x1 | 0x2 | 0x4 | 0x1000 | 0x800000  # caps, height, width, pixel format, depth
+    header = struct.pack("<4sIIIIIII11I", b"DDS ", 124, flags, height, width, width, depth, 0, *([0] * 11))
+    pixel_format = struct.pack("<IIIIIIII", 32, 0x20000, 0, 8, 0xFF, 0, 0, 0)  # luminance, 8 bits
+    caps = struct.pack("<IIIII", 0x1000 | 0x8, 0x200000, 0, 0, 0)  # texture, complex; volume
+    return header + pixel_format + caps + bytes(width * height * depth)
+
+
 def vtp_compressed_header(blocks, last=0, sizes=()):
     """A zlib-compressed VTP whose points array's header declares @blocks
     blocks, the last one of @last bytes, and the compressed @sizes."""

@@ -1,6 +1,7 @@
 // slImageReader / slImageWriter through OpenImageIO, and their errors.
 #include "TestFolder.h"
 
+#include "slImageCodec.h"
 #include "slImageReader.h"
 #include "slImageWriter.h"
 #include "VTKErrors.h"
@@ -15,6 +16,7 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -80,6 +82,34 @@ TEST(ImageIO, PNGRoundTripKeepsPixelsAndOrientation)
   ASSERT_EQ(scalars->GetDataType(), VTK_UNSIGNED_CHAR);
   EXPECT_EQ(scalars->GetComponent(2 * 5 + 4, 1), 40 * 4 + 7 * 2 + 1); // pixel (4, 2), row 0 at the bottom
   EXPECT_EQ(scalars->GetComponent(0, 2), 2);
+}
+
+TEST(ImageIO, PixelsOfAFileReplacedAfterItsHeaderAreNotRead)
+{
+  // The reader sizes its buffer from the header, then opens the file again
+  // for the pixels: a larger image found there must not be written into it.
+  const TestFolder folder;
+  const std::string path = folder.path("swapped.png");
+  vtkNew<slImageWriter> writer;
+  writer->SetInputData(gradient(false));
+  writer->SetFileName(path.c_str());
+  ASSERT_EQ(callError(writer, [&] { return writer->Write(); }), "");
+  std::string error;
+  const slImageCodec* codec = slLoadImageCodec(error);
+  ASSERT_NE(codec, nullptr) << error;
+  slImageHeader header;
+  ASSERT_TRUE(codec->ReadHeader(path, header, error)) << error;
+  ASSERT_EQ(header.Width * header.Height * header.Channels, 5 * 3 * 3);
+
+  vtkNew<vtkImageData> wider;
+  wider->SetDimensions(9, 3, 1);
+  wider->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  writer->SetInputData(wider);
+  ASSERT_EQ(callError(writer, [&] { return writer->Write(); }), "");
+  std::vector<unsigned char> pixels(5 * 3 * 3, 0xAB);
+  EXPECT_FALSE(codec->ReadPixels(path, header, false, pixels.data(), error));
+  EXPECT_EQ(error, "it changed while it was read");
+  EXPECT_EQ(std::count(pixels.begin(), pixels.end(), 0xAB), 5 * 3 * 3);
 }
 
 TEST(ImageIO, EXRKeepsFloats)

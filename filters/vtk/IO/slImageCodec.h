@@ -30,14 +30,14 @@ struct slImageHeader
 /// slImageReader and slImageWriter turn a false into their VTK error.
 struct slImageCodec
 {
-  /// Forgets what the library caches for @p path (the file may have changed).
-  void (*Forget)(const std::string& path);
   /// The header of @p path.
   bool (*ReadHeader)(const std::string& path, slImageHeader& header, std::string& error);
   /// Every pixel of @p path, bottom row first (VTK's order), as unsigned
   /// char (@p asFloat false; the file must be 8-bit) or float, into
-  /// @p pixels (width x height x channels values).
-  bool (*ReadPixels)(const std::string& path, bool asFloat, void* pixels, std::string& error);
+  /// @p pixels (@p expected width x height x channels values). Fails,
+  /// writing nothing, when the file's header no longer matches @p expected.
+  bool (*ReadPixels)(
+    const std::string& path, const slImageHeader& expected, bool asFloat, void* pixels, std::string& error);
   /// Encodes @p pixels (bottom row first; unsigned char or float) in the
   /// format named by @p format ("png", "exr", ...) into the file @p path.
   bool (*Write)(const std::string& path, const std::string& format, int width, int height, int channels,

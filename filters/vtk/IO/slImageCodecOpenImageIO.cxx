@@ -3,44 +3,80 @@
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
-#include <OpenImageIO/imagecache.h>
+#include <OpenImageIO/imageio.h>
+
+#include <memory>
 
 namespace
 {
-void forget(const std::string& path)
+/// The file opened by whichever OpenImageIO reader recognises it; nullptr
+/// with the library's reason in @p error.
+std::unique_ptr<OIIO::ImageInput> openImage(const std::string& path, std::string& error)
 {
-  OIIO::ImageCache::create(true)->invalidate(OIIO::ustring(path), true);
+  std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::open(path);
+  if (!input)
+  {
+    error = OIIO::geterror();
+  }
+  return input;
+}
+
+/// @p spec as a header; false for what ShadeLab does not read: an image
+/// without pixels, or a volume (DDS, TIFF and others hold width x height x
+/// depth pixels, which would not fit the width x height buffer the reader
+/// allocates).
+bool describe(const OIIO::ImageSpec& spec, slImageHeader& header, std::string& error)
+{
+  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
+  {
+    error = "it has no pixels: its header declares " + std::to_string(spec.width) + "x" +
+      std::to_string(spec.height) + " pixels of " + std::to_string(spec.nchannels) + " channels";
+    return false;
+  }
+  if (spec.depth != 1)
+  {
+    error = "it holds a volume of " + std::to_string(spec.depth) + " slices; ShadeLab reads 2D images only";
+    return false;
+  }
+  header.Width = spec.width;
+  header.Height = spec.height;
+  header.Channels = spec.nchannels;
+  header.EightBit = spec.format == OIIO::TypeDesc::UINT8;
+  return true;
 }
 
 bool readHeader(const std::string& path, slImageHeader& header, std::string& error)
 {
-  OIIO::ImageBuf image(path);
-  if (!image.init_spec(path, 0, 0))
-  {
-    error = image.geterror();
-    return false;
-  }
-  header.Width = image.spec().width;
-  header.Height = image.spec().height;
-  header.Channels = image.spec().nchannels;
-  header.EightBit = image.spec().format == OIIO::TypeDesc::UINT8;
-  return true;
+  const std::unique_ptr<OIIO::ImageInput> input = openImage(path, error);
+  return input && describe(input->spec(), header, error);
 }
 
-bool readPixels(const std::string& path, bool asFloat, void* pixels, std::string& error)
+bool readPixels(
+  const std::string& path, const slImageHeader& expected, bool asFloat, void* pixels, std::string& error)
 {
-  const OIIO::TypeDesc type = asFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
-  OIIO::ImageBuf image(path);
-  if (!image.read(0, 0, /*force*/ true, type))
+  // Opened again: the file may have been replaced since its header was read,
+  // and only a header that still matches may fill a buffer sized from it.
+  const std::unique_ptr<OIIO::ImageInput> input = openImage(path, error);
+  slImageHeader header;
+  if (!input || !describe(input->spec(), header, error))
   {
-    error = image.geterror();
     return false;
   }
-  // OpenImageIO's row 0 is the top of the picture; VTK's is the bottom.
-  const OIIO::ImageBuf flipped = OIIO::ImageBufAlgo::flip(image);
-  if (!flipped.get_pixels(OIIO::ROI::All(), type, pixels))
+  if (header.Width != expected.Width || header.Height != expected.Height || header.Channels != expected.Channels ||
+    (!asFloat && !header.EightBit))
   {
-    error = flipped.geterror();
+    error = "it changed while it was read";
+    return false;
+  }
+  const OIIO::TypeDesc type = asFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
+  const OIIO::stride_t pixelBytes = static_cast<OIIO::stride_t>(header.Channels) * type.size();
+  const OIIO::stride_t rowBytes = pixelBytes * header.Width;
+  // OpenImageIO's row 0 is the top of the picture; VTK's is the bottom: the
+  // rows go into the buffer from its last row backwards.
+  char* lastRow = static_cast<char*>(pixels) + rowBytes * (header.Height - 1);
+  if (!input->read_image(0, 0, 0, header.Channels, type, lastRow, pixelBytes, -rowBytes))
+  {
+    error = input->geterror();
     return false;
   }
   return true;
@@ -61,7 +97,7 @@ bool write(const std::string& path, const std::string& format, int width, int he
   return true;
 }
 
-const slImageCodec codec{ &forget, &readHeader, &readPixels, &write };
+const slImageCodec codec{ &readHeader, &readPixels, &write };
 } // namespace
 
 extern "C" const slImageCodec* slImageCodecOpenImageIO()

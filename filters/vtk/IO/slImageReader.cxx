@@ -65,9 +65,6 @@ int slImageReader::RequestInformation(vtkInformation*, vtkInformationVector**, v
   if (codec && this->FileName && slImageFileProblem(this->FileName).empty())
   {
     const slStderrCapture quiet;
-    // The file may have changed since this process last read it, and a stale
-    // header read against new contents reads outside them.
-    codec->Forget(this->FileName);
     slImageHeader header;
     if (codec->ReadHeader(this->FileName, header, ignored))
     {
@@ -112,7 +109,6 @@ int slImageReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInfor
   // The image libraries' own lines on stderr are held back: the problem is
   // reported once, in the error.
   slStderrCapture quiet;
-  codec->Forget(name);
   slImageHeader header;
   std::string reason;
   const bool haveHeader = codec->ReadHeader(name, header, reason);
@@ -136,7 +132,7 @@ int slImageReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInfor
     scalars->SetName("ImageScalars");
     scalars->SetNumberOfComponents(header.Channels);
     scalars->SetNumberOfTuples(static_cast<vtkIdType>(header.Width) * header.Height);
-    if (codec->ReadPixels(name, asFloat, scalars->GetVoidPointer(0), reason))
+    if (codec->ReadPixels(name, header, asFloat, scalars->GetVoidPointer(0), reason))
     {
       reason.clear();
     }
