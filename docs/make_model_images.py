@@ -11,6 +11,7 @@ default build), FOLDER where the images go (default docs/images).
 import json
 import math
 import os
+import subprocess
 import sys
 import tempfile
 
@@ -43,6 +44,19 @@ def spot_with_tangents():
     if tangents.GetOutput().GetNumberOfPoints() == 0:
         fail("no tangents for " + SPOT)
     return tangents.GetOutput()
+
+
+def cli_grid(name):
+    """Every model under data/scenes/models.json as the command line draws
+    them: shadelab tangents, then shadelab compare --grid all."""
+    program = os.path.join(BUILD, "bin", "shadelab")
+    with tempfile.TemporaryDirectory() as folder:
+        spot = os.path.join(folder, "spot.vtp")
+        for args in (["tangents", SPOT, "-o", spot],
+                     ["compare", spot, "--scene", SCENE, "--grid", "all", "--size", "%dx%d" % PANEL,
+                      "-o", os.path.join(OUT, name)]):
+            if subprocess.run([program] + args).returncode != 0:
+                fail("shadelab " + args[0])
 
 
 def base_scene():
@@ -172,6 +186,7 @@ def main():
     panels = {m: cell(mesh, for_model(scene, m), m, m) for m in models}
     rows = [[panels[m] for m in models[0:3]], [panels[m] for m in models[3:7]], [panels[m] for m in models[7:11]]]
     write(tile(rows, background), "models-grid.png")
+    cli_grid("models-grid-one-scene.png")
 
     def sweep(name, model, label, materials):
         """One row: @p model with each of @p materials (dicts of material keys) in turn."""

@@ -1,4 +1,4 @@
-// shadelab compare MESH [--scene S.json] -o OUT.png [--models] [--diff]
+// shadelab compare MESH [--scene S.json] -o OUT.png [--models | --grid A,B,...] [--diff]
 #include "CommandLine.h"
 #include "Commands.h"
 #include "Inputs.h"
@@ -26,16 +26,20 @@ int runCompare(const std::vector<std::string>& args)
     { "scene", "s", "FILE", "JSON scene (default: ShadeLab's built-in scene)" },
     { "output", "o", "FILE", outputHelp("composite image to write", OutputKind::Image) },
     { "models", "", "", "compare Lambert | Phong | Blinn-Phong (at the scene's frequency) instead of frequencies" },
+    { "grid", "", "A,B,...", "draw these lighting models (or all) at the scene's frequency instead of frequencies" },
+    { "columns", "", "N", "panels per row (default: one row; 4 with --grid)" },
     { "diff", "", "", "add a panel with the difference of the last two panels, amplified" },
     { "amplify", "", "X", "amplification of the difference panel (default 8)" },
     { "size", "", "WxH", "size of each panel (default 400x300)" },
     { "help", "h", "", "show this help" },
   };
   const CommandLine cl(args, specs);
-  if (cl.printHelpIfAsked("shadelab compare MESH [--scene S.json] -o OUT.png [--models] [--diff]",
-        "Renders MESH flat | Gouraud | Phong (or, with --models, Lambert | Phong | Blinn-Phong)\n"
-        "side by side with one shared camera and labels, optionally with the amplified\n"
-        "difference of the last two panels, and writes one composite image.",
+  if (cl.printHelpIfAsked("shadelab compare MESH [--scene S.json] -o OUT.png [--models | --grid A,B,...] [--diff]",
+        "Renders MESH flat | Gouraud | Phong (or, with --models, Lambert | Phong | Blinn-Phong;\n"
+        "with --grid, the models named, or all of them) side by side with one shared camera\n"
+        "and labels, optionally with the amplified difference of the last two panels, and\n"
+        "writes one composite image.\n\nLighting models: " +
+          modelNameList() + ".",
         specs))
   {
     return 0;
@@ -48,9 +52,23 @@ int runCompare(const std::vector<std::string>& args)
     parseSize(cl.get("size"), width, height);
   }
   const double amplify = cl.getNumber("amplify", 8.0, 1.0, 1000.0);
+  if (cl.has("grid") && cl.has("models"))
+  {
+    throw UsageError("--grid: give either --grid or --models");
+  }
+  const std::vector<ShadingModel> grid =
+    cl.has("grid") ? parseModelList("grid", cl.get("grid"), true) : std::vector<ShadingModel>();
+  const int columns = cl.getIndex("columns", grid.empty() ? 0 : 4, 1, 64);
   vtkSmartPointer<slScene> scene = loadScene(cl.get("scene"));
   vtkSmartPointer<vtkPolyData> mesh = loadMesh(meshPath);
-  if (!cl.has("models")) // the frequency panels draw the scene's model
+  if (!grid.empty())
+  {
+    for (const ShadingModel model : grid)
+    {
+      checkTangentsFor(model, mesh, meshPath);
+    }
+  }
+  else if (!cl.has("models")) // the frequency panels draw the scene's model
   {
     checkTangentsFor(scene, mesh, meshPath);
   }
@@ -60,9 +78,17 @@ int runCompare(const std::vector<std::string>& args)
   comparison->SetMesh(mesh);
   comparison->SetPanelWidth(width);
   comparison->SetPanelHeight(height);
+  comparison->SetColumns(columns);
   const std::string model = scene->GetModelName();
   const std::string frequency = scene->GetFrequencyName();
-  if (cl.has("models"))
+  if (!grid.empty())
+  {
+    for (const ShadingModel m : grid)
+    {
+      comparison->AddPanel(modelName(m), modelName(m), frequency.c_str());
+    }
+  }
+  else if (cl.has("models"))
   {
     comparison->AddPanel("Lambert", "lambert", frequency.c_str());
     comparison->AddPanel("Phong", "phong", frequency.c_str());
@@ -85,7 +111,7 @@ int runCompare(const std::vector<std::string>& args)
 }
 
 const CommandRegistration registration{ { 11, "compare",
-  "flat | Gouraud | Phong (or Lambert | Phong | Blinn-Phong) side by side in one image", &runCompare } };
+  "flat | Gouraud | Phong, or lighting models, side by side in one image", &runCompare } };
 } // namespace
 } // namespace app
 } // namespace shadelab

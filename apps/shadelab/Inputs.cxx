@@ -17,6 +17,7 @@
 #include <vtkPolyData.h>
 
 #include <cstdio>
+#include <sstream>
 
 namespace shadelab
 {
@@ -65,9 +66,14 @@ std::string commaSeparated(const std::vector<std::string>& names)
 }
 } // namespace
 
+std::string modelNameList()
+{
+  return commaSeparated(modelNames());
+}
+
 std::string modelOptionHelp()
 {
-  return "override the scene's lighting model: " + commaSeparated(modelNames());
+  return "override the scene's lighting model: " + modelNameList();
 }
 
 ShadingModel parseModelOption(const std::string& option, const std::string& value)
@@ -78,6 +84,29 @@ ShadingModel parseModelOption(const std::string& option, const std::string& valu
     throw UsageError("--" + option + ": \"" + value + "\" is not a lighting model (" + commaSeparated(modelNames()) + ")");
   }
   return model;
+}
+
+std::vector<ShadingModel> parseModelList(const std::string& option, const std::string& value, bool allowAll)
+{
+  std::vector<ShadingModel> models;
+  if (allowAll && value == "all")
+  {
+    for (const std::string& name : modelNames())
+    {
+      models.push_back(parseModelOption(option, name));
+    }
+    return models;
+  }
+  std::istringstream names(value);
+  for (std::string name; std::getline(names, name, ',');)
+  {
+    models.push_back(parseModelOption(option, name));
+  }
+  if (models.empty())
+  {
+    throw UsageError("--" + option + ": no lighting model named");
+  }
+  return models;
 }
 
 void applySceneOverrides(const CommandLine& cl, slScene* scene)
@@ -101,7 +130,12 @@ void checkTangentsFor(slScene* scene, vtkPolyData* mesh, const std::string& path
   {
     return; // the .brdf file's BRDF is drawn, not the model
   }
-  const std::string problem = slTangentsProblem(mesh, static_cast<int>(scene->GetScene().model));
+  checkTangentsFor(scene->GetScene().model, mesh, path);
+}
+
+void checkTangentsFor(ShadingModel model, vtkPolyData* mesh, const std::string& path)
+{
+  const std::string problem = slTangentsProblem(mesh, static_cast<int>(model));
   if (!problem.empty())
   {
     throw Error(path + ": " + problem);

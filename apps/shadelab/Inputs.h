@@ -11,6 +11,7 @@
 #include <vtkSmartPointer.h>
 
 #include <string>
+#include <vector>
 
 class slScene;
 class vtkImageData;
@@ -33,12 +34,20 @@ vtkSmartPointer<vtkPolyData> loadMesh(const std::string& path);
 /// Throws shadelab::Error ("FILE: KEY.PATH: problem").
 vtkSmartPointer<slScene> loadScene(const std::string& path);
 
-/// The help of --model: what it does and every model's name (LightingTables.h).
+/// Every model's name (LightingTables.h), comma-separated.
+std::string modelNameList();
+
+/// The help of --model: what it does and every model's name.
 std::string modelOptionHelp();
 
 /// The lighting model named by option --@p option; UsageError listing the
 /// valid names otherwise.
 ShadingModel parseModelOption(const std::string& option, const std::string& value);
+
+/// The lighting models named by option --@p option as "A,B,..." (or every
+/// model, in the table's order, for "all" when @p allowAll); UsageError
+/// naming the first unknown one otherwise.
+std::vector<ShadingModel> parseModelList(const std::string& option, const std::string& value, bool allowAll);
 
 /// Applies --model, --frequency and the material numbers (MaterialOptions.h)
 /// given on @p cl. Throws UsageError for unknown names and values out of range.
@@ -50,6 +59,8 @@ void applySceneOverrides(const CommandLine& cl, slScene* scene);
 /// needs tangents ...") if the model needs tangents @p mesh does not have
 /// (a scene with a .brdf file draws that BRDF instead: no check).
 void checkTangentsFor(slScene* scene, vtkPolyData* mesh, const std::string& path);
+/// The same check for drawing @p mesh with @p model.
+void checkTangentsFor(ShadingModel model, vtkPolyData* mesh, const std::string& path);
 
 /// Parses "WxH" (16..8192 each). Throws UsageError.
 void parseSize(const std::string& text, int& width, int& height);

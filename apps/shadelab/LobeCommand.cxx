@@ -201,10 +201,10 @@ int runLobe(const std::vector<std::string>& args)
     vtkNew<slLobeImageRenderer> image;
     if (cl.has("models") || cl.has("model") || brdfs.empty())
     {
-      std::istringstream names(cl.get("models", modelName(static_cast<ShadingModel>(modelNumber(cl)))));
-      for (std::string name; std::getline(names, name, ',');)
+      const std::string names = cl.get("models", modelName(static_cast<ShadingModel>(modelNumber(cl))));
+      for (const ShadingModel model : parseModelList("models", names, false))
       {
-        if (!image->AddModel(modelName(parseModelOption("models", name))))
+        if (!image->AddModel(modelName(model)))
         {
           throw UsageError("--models: at most six BRDFs (models and .brdf files) can be overlaid");
         }

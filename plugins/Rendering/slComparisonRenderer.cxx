@@ -118,8 +118,23 @@ bool slComparisonRenderer::Render()
     return false;
   }
 
-  const int columns = n + (difference ? 1 : 0);
-  vtkSmartPointer<vtkRenderWindow> window = slOffscreenWindow(columns * this->PanelWidth, this->PanelHeight);
+  const int cells = n + (difference ? 1 : 0);
+  const int columns = this->columns(cells);
+  const int rows = (cells + columns - 1) / columns;
+  const int width = columns * this->PanelWidth;
+  const int height = rows * this->PanelHeight;
+  vtkSmartPointer<vtkRenderWindow> window = slOffscreenWindow(width, height);
+  // A window-wide renderer, drawn first, gives the cells no panel covers
+  // the scene's background.
+  vtkNew<vtkRenderer> backdrop;
+  this->Scene->ApplyToRenderer(backdrop);
+  window->AddRenderer(backdrop);
+  auto viewport = [&](vtkRenderer* renderer, int index) {
+    int x = 0, y = 0;
+    this->cellOrigin(index, cells, x, y);
+    renderer->SetViewport(static_cast<double>(x) / width, static_cast<double>(y) / height,
+      static_cast<double>(x + this->PanelWidth) / width, static_cast<double>(y + this->PanelHeight) / height);
+  };
   vtkNew<vtkCamera> camera; // linked: every panel shows this one camera
   std::vector<vtkSmartPointer<vtkTextActor>> labels;
 
@@ -137,7 +152,7 @@ bool slComparisonRenderer::Render()
       return false;
     }
     vtkNew<vtkRenderer> renderer;
-    renderer->SetViewport(static_cast<double>(i) / columns, 0.0, static_cast<double>(i + 1) / columns, 1.0);
+    viewport(renderer, i);
     renderer->SetActiveCamera(camera);
     renderer->AddActor(actor);
     labels.push_back(label(panel.label, this->PanelHeight));
@@ -153,7 +168,7 @@ bool slComparisonRenderer::Render()
   if (difference)
   {
     vtkNew<vtkRenderer> renderer;
-    renderer->SetViewport(static_cast<double>(n) / columns, 0.0, 1.0, 1.0);
+    viewport(renderer, n);
     renderer->SetBackground(0.0, 0.0, 0.0);
     std::ostringstream text;
     text << "|" << this->Panels[static_cast<size_t>(this->DifferenceA)].label << " - "
@@ -180,6 +195,19 @@ bool slComparisonRenderer::Render()
   return true;
 }
 
+int slComparisonRenderer::columns(int cells) const
+{
+  return this->Columns > 0 ? std::min(this->Columns, cells) : cells;
+}
+
+void slComparisonRenderer::cellOrigin(int index, int cells, int& x, int& y) const
+{
+  const int columns = this->columns(cells);
+  const int rows = (cells + columns - 1) / columns;
+  x = (index % columns) * this->PanelWidth;
+  y = (rows - 1 - index / columns) * this->PanelHeight; // the first row on top
+}
+
 void slComparisonRenderer::FillDifference(vtkImageData* plain, vtkImageData* image) const
 {
   // The difference panel so far holds only its label (white on black); the
@@ -189,19 +217,23 @@ void slComparisonRenderer::FillDifference(vtkImageData* plain, vtkImageData* ima
   int dims[3];
   image->GetDimensions(dims);
   const int n = static_cast<int>(this->Panels.size());
-  const int w = dims[0] / (n + 1);
-  for (int y = 0; y < dims[1]; ++y)
+  int targetX = 0, targetY = 0, aX = 0, aY = 0, bX = 0, bY = 0;
+  this->cellOrigin(n, n + 1, targetX, targetY);
+  this->cellOrigin(this->DifferenceA, n + 1, aX, aY);
+  this->cellOrigin(this->DifferenceB, n + 1, bX, bY);
+  auto at = [&dims](int x, int y) { return 3 * (static_cast<vtkIdType>(y) * dims[0] + x); };
+  for (int y = 0; y < this->PanelHeight; ++y)
   {
-    for (int x = 0; x < w; ++x)
+    for (int x = 0; x < this->PanelWidth; ++x)
     {
-      const vtkIdType target = static_cast<vtkIdType>(y) * dims[0] + n * w + x;
-      const vtkIdType a = static_cast<vtkIdType>(y) * dims[0] + this->DifferenceA * w + x;
-      const vtkIdType b = static_cast<vtkIdType>(y) * dims[0] + this->DifferenceB * w + x;
+      const vtkIdType target = at(targetX + x, targetY + y);
+      const vtkIdType a = at(aX + x, aY + y);
+      const vtkIdType b = at(bX + x, bY + y);
       for (int c = 0; c < 3; ++c)
       {
-        const double d = std::abs(source->GetValue(3 * a + c) - source->GetValue(3 * b + c)) * this->Amplification;
-        const unsigned char labelValue = pixels->GetValue(3 * target + c);
-        pixels->SetValue(3 * target + c, std::max(labelValue, static_cast<unsigned char>(std::min(255.0, d))));
+        const double d = std::abs(source->GetValue(a + c) - source->GetValue(b + c)) * this->Amplification;
+        const unsigned char labelValue = pixels->GetValue(target + c);
+        pixels->SetValue(target + c, std::max(labelValue, static_cast<unsigned char>(std::min(255.0, d))));
       }
     }
   }
@@ -216,6 +248,7 @@ void slComparisonRenderer::PrintSelf(ostream& os, vtkIndent indent)
     os << indent << "  " << p.label << ": " << shadelab::modelName(static_cast<shadelab::ShadingModel>(p.model))
        << ", " << shadelab::frequencyName(static_cast<shadelab::ShadingFrequency>(p.frequency)) << "\n";
   }
+  os << indent << "Columns: " << this->Columns << "\n";
   os << indent << "Difference: " << this->DifferenceA << " - " << this->DifferenceB << " x " << this->Amplification
      << "\n";
 }

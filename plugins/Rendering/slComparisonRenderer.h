@@ -10,7 +10,9 @@
  * slLightingPass; all panels share one vtkCamera (fitted or placed by the
  * scene), so they show exactly the same view. AddPanel() chooses each
  * panel's model and frequency; SetDifference() appends a panel showing
- * |panel A - panel B| times an amplification factor.
+ * |panel A - panel B| times an amplification factor. The panels fill rows of
+ * Columns panels each, top row first (one row when Columns is 0); cells of a
+ * short last row show the scene's background.
  *
  * @warning Needs an X display, like every ShadeLab rendering (xvfb-run).
  *
@@ -52,6 +54,13 @@ public:
   /// 0-based). A negative @p a removes it.
   void SetDifference(int a, int b, double amplification);
 
+  ///@{
+  /// Panels per row (the difference panel counts as one); 0, the default:
+  /// every panel in one row.
+  vtkSetClampMacro(Columns, int, 0, 64);
+  vtkGetMacro(Columns, int);
+  ///@}
+
   bool Render() override;
 
 protected:
@@ -68,6 +77,11 @@ private:
     int model;
     int frequency;
   };
+  /// The grid: @p cells panels in rows of columns() each.
+  int columns(int cells) const;
+  /// The lower-left pixel of cell @p index in the image (row 0 at the
+  /// bottom) of a grid of @p cells.
+  void cellOrigin(int index, int cells, int& x, int& y) const;
   void FillDifference(vtkImageData* plain, vtkImageData* image) const;
 
   vtkSmartPointer<slScene> Scene;
@@ -76,6 +90,7 @@ private:
   int DifferenceA = -1;
   int DifferenceB = -1;
   double Amplification = 4.0;
+  int Columns = 0;
 };
 
 #endif

@@ -164,6 +164,34 @@ class CompareTest(unittest.TestCase):
             self.assertEqual(r.returncode, 0, r.stderr)
             self.assertEqual(png_size(out), (300, 80))
 
+    def test_grid_of_models(self):
+        with tempfile.TemporaryDirectory() as folder:
+            out = os.path.join(folder, "grid.png")
+            r = run("compare", SPOT, "--grid", "lambert,phong,cook-torrance-ggx,oren-nayar,blinn-phong",
+                    "--columns", "2", "--size", "100x80", "-o", out)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertEqual(png_size(out), (200, 240))  # 5 panels, 2 a row: 3 rows
+            spot = os.path.join(folder, "spot.vtp")
+            self.assertEqual(run("tangents", SPOT, "-o", spot).returncode, 0)
+            r = run("compare", spot, "--grid", "all", "--size", "100x80", "-o", out)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            rows = (len(lighting_models().split(", ")) + 3) // 4
+            self.assertEqual(png_size(out), (400, 80 * rows))
+
+    def test_grid_bad_input(self):
+        out = "/tmp/never.png"
+        r = run("compare", SPOT, "--grid", "phong,glossy", "-o", out)
+        self.assertEqual(r.returncode, 2)
+        self.assertRegex(r.stderr, r'^shadelab compare: --grid: "glossy" is not a lighting model \(lambert, .*\)\n$')
+        r = run("compare", SPOT, "--grid", "phong", "--models", "-o", out)
+        self.assertEqual((r.returncode, r.stderr), (2, "shadelab compare: --grid: give either --grid or --models\n"))
+        r = run("compare", SPOT, "--grid", "phong,ward", "-o", out)
+        self.assertEqual(r.returncode, 1)
+        self.assertIn("the ward model is anisotropic and needs tangents", r.stderr)
+        r = run("compare", SPOT, "--grid", "phong", "--columns", "0", "-o", out)
+        self.assertEqual((r.returncode, r.stderr), (2, "shadelab compare: option --columns: 0 is out of range [1, 64]\n"))
+        self.assertFalse(os.path.exists(out))
+
     def test_bad_input(self):
         r = run("compare", "/nonexistent/m.stl", "-o", "/tmp/never.png")
         self.assertEqual(r.returncode, 1)
