@@ -149,6 +149,27 @@ def exr(attribute_size=None, name=b"comments"):
     return head + name + b"\0string\0" + struct.pack("<i", attribute_size) + b"abc"
 
 
+def exr_attribute(name, kind, value, size=None):
+    """One OpenEXR header attribute; @size overrides the size field."""
+    return name + b"\0" + kind + b"\0" + struct.pack("<i", len(value) if size is None else size) + value
+
+
+def exr_scanlines(lines=4, compression=0, extra=b"", tail=b""):
+    """A single-part scan-line OpenEXR header: one half channel Y, a data
+    window 1 pixel wide and @lines high, @compression, then @extra
+    attributes; after its end, @tail (where the offset table belongs)."""
+    channels = b"Y\0" + struct.pack("<iB3xii", 1, 0, 1, 1) + b"\0"
+    header = (exr_attribute(b"channels", b"chlist", channels)
+              + exr_attribute(b"compression", b"compression", bytes([compression]))
+              + exr_attribute(b"dataWindow", b"box2i", struct.pack("<4i", 0, 0, 0, lines - 1))
+              + exr_attribute(b"displayWindow", b"box2i", struct.pack("<4i", 0, 0, 0, lines - 1))
+              + exr_attribute(b"lineOrder", b"lineOrder", b"\0")
+              + exr_attribute(b"pixelAspectRatio", b"float", struct.pack("<f", 1.0))
+              + exr_attribute(b"screenWindowCenter", b"v2f", struct.pack("<2f", 0.0, 0.0))
+              + exr_attribute(b"screenWindowWidth", b"float", struct.pack("<f", 1.0)))
+    return b"\x76\x2f\x31\x01\x02\x00\x00\x00" + header + extra + b"\0" + tail
+
+
 def dds_volume(width=7, height=17, depth=3):
     """A DirectDraw Surface volume texture: @depth slices of @width x @height
     8-bit luminance pixels, a 3D image that OpenImageIO reads as one."""

@@ -5,8 +5,9 @@
  * @brief Checks an image file's length fields before its library sees it.
  *
  * libpng allocates what a PNG chunk's length field claims, and OpenEXR
- * what a header attribute's size claims (up to 2 GB each), before either
- * finds that the file ends first: a file of a few hundred bytes can cost
+ * what a header attribute's size, a preview's width and height or the data
+ * window's offset table claim, before either finds that the file ends
+ * first: a file of a few hundred bytes can cost
  * gigabytes. slImageReader runs these checks, chosen by the file's
  * signature, before OpenImageIO opens the file. Each reads the file once
  * and allocates nothing that its fields claim. Internal to ShadeLab::IO.
@@ -30,7 +31,11 @@ std::string slPNGProblem(const std::string& fileName);
 /// file) has a name and a type of at most 255 bytes that end within the
 /// file, and a size that fits in what follows, e.g. "EXR attribute
 /// 'comments' (string) at byte 8 declares 1979714868 bytes; 372 bytes
-/// remain in the file". "" for a file that is not OpenEXR.
+/// remain in the file"; a value of a type OpenEXR knows has that type's
+/// layout (fixed sizes, a channel list, a preview's pixels and a string
+/// vector's strings that end exactly at the size); and the offset table
+/// (one 8-byte entry per chunk of every part) fits in the file. "" for a
+/// file that is not OpenEXR.
 std::string slEXRProblem(const std::string& fileName);
 
 /// "1 byte remains in the file", "140 bytes remain in the file".
