@@ -127,7 +127,8 @@ bool slComparisonRenderer::Render()
   // A window-wide renderer, drawn first, gives the cells no panel covers
   // the scene's background.
   vtkNew<vtkRenderer> backdrop;
-  this->Scene->ApplyToRenderer(backdrop);
+  const glm::vec3 background = this->Scene->GetScene().background;
+  backdrop->SetBackground(background.x, background.y, background.z);
   window->AddRenderer(backdrop);
   auto viewport = [&](vtkRenderer* renderer, int index) {
     int x = 0, y = 0;
