@@ -117,11 +117,12 @@ vtkSmartPointer<vtkPolyData> soup(vtkPolyData* mesh)
   return out;
 }
 
-/// A jittered height field of quads and triangle pairs: polygons that are
-/// not triangles interrupt the runs of triangles the filter weighs in blocks.
-vtkSmartPointer<vtkPolyData> mixedPolygons()
+/// A jittered height field of n x n cells, each a quad when (i + j) %
+/// @p quadEvery is 0 and a triangle pair otherwise: polygons that are not
+/// triangles interrupt the runs of triangles the filter weighs in blocks
+/// (64 at a time; a run of 64 is filled in one go).
+vtkSmartPointer<vtkPolyData> mixedPolygons(int n, int quadEvery)
 {
-  const int n = 24;
   std::mt19937 rng(17);
   std::uniform_real_distribution<double> jitter(-0.3, 0.3);
   vtkNew<vtkPoints> points;
@@ -140,7 +141,7 @@ vtkSmartPointer<vtkPolyData> mixedPolygons()
     for (int i = 0; i < n; ++i)
     {
       const vtkIdType a = j * (n + 1) + i, b = a + 1, c = a + n + 2, d = a + n + 1;
-      if ((i + j) % 5 == 0)
+      if ((i + j) % quadEvery == 0)
       {
         const vtkIdType quad[4] = { a, b, c, d };
         cells->InsertNextCell(4, quad);
@@ -209,7 +210,12 @@ TEST(NormalsAngleWeights, AgreeWithAcosOnIrregularMeshesOnEveryPath)
     { "irregular sphere", normalstest::irregularEllipsoid({ 1, 1, 1 }, 7) },
     { "coarse irregular ellipsoid", normalstest::irregularEllipsoid({ 1.5, 1, 0.6 }, 13, 2) },
     { "irregular torus", normalstest::irregularTorus(1.0, 0.35, 64, 24, 5) },
-    { "quads and triangles", mixedPolygons() },
+    { "quads and triangles", mixedPolygons(24, 5) },
+    // About 2 x 190^2 polygons, more than one chunk's worth (the filter cuts meshes
+    // of 65536 polygons or more into chunks): runs of 100 to 200 triangles
+    // between quads, so that blocks filled in one go, blocks filled triangle
+    // by triangle and chunk borders all fall inside runs.
+    { "long runs of triangles", mixedPolygons(190, 97) },
   };
   for (const auto& named : meshes)
   {

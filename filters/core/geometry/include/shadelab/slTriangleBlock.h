@@ -29,23 +29,18 @@
  * normals with float points; see docs/normals.md).
  */
 
+#include "shadelab/slVectorClones.h"
 #include "slCornerWeights.h"
 
 #include <cmath>
 #include <cstdint>
 
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__ELF__)
-#define SL_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define SL_VECTOR_CLONES
-#endif
-
 namespace slnormals
 {
 
-/// Up to Capacity consecutive triangles: their points in, Newell vectors and
-/// corner weights out. Corner k of triangle i adds weight[k][i] × (nx, ny,
-/// nz)[i] to its vertex.
+/// Up to Capacity consecutive triangles: their points in, the contribution
+/// of each corner to its vertex out: corner k of triangle i adds (cornerX,
+/// cornerY, cornerZ)[k][i], its weight times the triangle's Newell vector.
 template <typename T>
 struct TriangleBlock
 {
@@ -53,8 +48,9 @@ struct TriangleBlock
   int count = 0;
   int64_t start = 0; ///< connectivity position of the first triangle's first corner
   T x[3][Capacity], y[3][Capacity], z[3][Capacity];
-  T nx[Capacity], ny[Capacity], nz[Capacity];
-  T weight[3][Capacity];
+  // Products computed with the weights, in the vectorised loop, so that the
+  // scatter, a chain of scattered read-add-writes, only adds.
+  T cornerX[3][Capacity], cornerY[3][Capacity], cornerZ[3][Capacity];
 
   /// Whether the triangle at connectivity position @p o can join the block:
   /// it is empty, or @p o directly follows its last triangle.
@@ -78,6 +74,27 @@ struct TriangleBlock
     }
   }
 
+  /// Fills the empty block with the @p n (at most Capacity) triangles that
+  /// start at connectivity position @p o, one after the other: add() without
+  /// the per-triangle bookkeeping.
+  template <typename Id>
+  void fill(const Id* connectivity, const T* xyz, int64_t o, int n)
+  {
+    this->start = o;
+    this->count = n;
+    const Id* ids = connectivity + o;
+    for (int i = 0; i < n; ++i, ids += 3)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const T* p = xyz + 3 * static_cast<int64_t>(ids[k]);
+        this->x[k][i] = p[0];
+        this->y[k][i] = p[1];
+        this->z[k][i] = p[2];
+      }
+    }
+  }
+
   /// Newell vectors and the weights of @p W (see slCornerWeights.h) of the
   /// count triangles; a degenerate triangle (zero Newell vector) weighs 0.
   template <Weighting W>
@@ -94,62 +111,66 @@ struct TriangleBlock
               cz = this->z[0][i] - this->z[2][i];
       // (p1 - p0) x (p2 - p0) = c x a.
       const T nx = cy * az - cz * ay, ny = cz * ax - cx * az, nz = cx * ay - cy * ax;
-      this->nx[i] = nx;
-      this->ny[i] = ny;
-      this->nz[i] = nz;
       const T nn = nx * nx + ny * ny + nz * nz;
       const bool valid = nn > T(0);
       // Selects, not branches, so that the loop stays vectorisable and trap-free.
       const T zeroOr1 = valid ? T(1) : T(0);
+      T w[3];
       if (W == Weighting::Area)
       {
-        this->weight[0][i] = this->weight[1][i] = this->weight[2][i] = zeroOr1;
-        continue;
+        w[0] = w[1] = w[2] = zeroOr1;
       }
-      const T len = std::sqrt(nn);
-      const T inverse = zeroOr1 / (valid ? len : T(1));
-      if (W == Weighting::Uniform)
+      else if (W == Weighting::Uniform)
       {
-        this->weight[0][i] = this->weight[1][i] = this->weight[2][i] = inverse;
-        continue;
+        const T len = std::sqrt(nn);
+        w[0] = w[1] = w[2] = zeroOr1 / (valid ? len : T(1));
       }
-      if (W == Weighting::Angle)
+      else if (W == Weighting::Angle)
       {
         // e1 . e2 of each corner's two outgoing edges; |e1 x e2| = len at all three.
-        this->weight[0][i] = cornerAngle(len, -(cx * ax + cy * ay + cz * az)) * inverse;
-        this->weight[1][i] = cornerAngle(len, -(ax * bx + ay * by + az * bz)) * inverse;
-        this->weight[2][i] = cornerAngle(len, -(bx * cx + by * cy + bz * cz)) * inverse;
-        continue;
+        const T len = std::sqrt(nn);
+        const T inverse = zeroOr1 / (valid ? len : T(1));
+        w[0] = cornerAngle(len, -(cx * ax + cy * ay + cz * az)) * inverse;
+        w[1] = cornerAngle(len, -(ax * bx + ay * by + az * bz)) * inverse;
+        w[2] = cornerAngle(len, -(bx * cx + by * cy + bz * cz)) * inverse;
       }
-      // Max: sin θ / (|e1| |e2|) times the unit normal = N / (|e1|² |e2|²).
-      const T la = ax * ax + ay * ay + az * az, lb = bx * bx + by * by + bz * bz,
-              lc = cx * cx + cy * cy + cz * cz;
-      const T l0 = lc * la, l1 = la * lb, l2 = lb * lc;
-      this->weight[0][i] = (valid && l0 > T(0) ? T(1) : T(0)) / (l0 > T(0) ? l0 : T(1));
-      this->weight[1][i] = (valid && l1 > T(0) ? T(1) : T(0)) / (l1 > T(0) ? l1 : T(1));
-      this->weight[2][i] = (valid && l2 > T(0) ? T(1) : T(0)) / (l2 > T(0) ? l2 : T(1));
+      else
+      {
+        // Max: sin θ / (|e1| |e2|) times the unit normal = N / (|e1|² |e2|²).
+        const T la = ax * ax + ay * ay + az * az, lb = bx * bx + by * by + bz * bz,
+                lc = cx * cx + cy * cy + cz * cz;
+        const T l0 = lc * la, l1 = la * lb, l2 = lb * lc;
+        w[0] = (valid && l0 > T(0) ? T(1) : T(0)) / (l0 > T(0) ? l0 : T(1));
+        w[1] = (valid && l1 > T(0) ? T(1) : T(0)) / (l1 > T(0) ? l1 : T(1));
+        w[2] = (valid && l2 > T(0) ? T(1) : T(0)) / (l2 > T(0) ? l2 : T(1));
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        this->cornerX[k][i] = nx * w[k];
+        this->cornerY[k][i] = ny * w[k];
+        this->cornerZ[k][i] = nz * w[k];
+      }
     }
   }
 
   /// Hands every corner's contribution to @p sink: sink.add(entry, x, y, z)
-  /// with the corner's entry of @p accIds (the connectivity's layout).
+  /// with the corner's entry of @p accIds (the connectivity's layout). The
+  /// sink is a small handle taken by value: a copy of its own lets the
+  /// compiler keep its fields in registers across the float stores.
   template <typename AccId, typename Sink>
-  void scatter(const AccId* accIds, Sink& sink) const
+  void scatter(const AccId* accIds, Sink sink) const
   {
     const AccId* to = accIds + this->start;
     for (int i = 0; i < this->count; ++i, to += 3)
     {
       for (int k = 0; k < 3; ++k)
       {
-        const T w = this->weight[k][i];
-        sink.add(static_cast<int64_t>(to[k]), this->nx[i] * w, this->ny[i] * w, this->nz[i] * w);
+        sink.add(static_cast<int64_t>(to[k]), this->cornerX[k][i], this->cornerY[k][i], this->cornerZ[k][i]);
       }
     }
   }
 };
 
 } // namespace slnormals
-
-#undef SL_VECTOR_CLONES
 
 #endif

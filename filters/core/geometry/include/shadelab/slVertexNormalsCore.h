@@ -87,10 +87,16 @@ struct ChunkSink
   int64_t chunks;
   std::vector<Kept<T>>* kept; ///< one list per owner
 
+  /// Whether @p id lies in [lo, hi): one unsigned compare.
+  bool owns(int64_t id) const
+  {
+    return static_cast<uint64_t>(id - this->lo) < static_cast<uint64_t>(this->hi - this->lo);
+  }
+
   /// Asks for the cache line of @p id's sum ahead of add().
   void prefetch(int64_t id) const
   {
-    if (id >= this->lo && id < this->hi)
+    if (this->owns(id))
     {
       detail::prefetch(this->acc + 3 * id, true);
     }
@@ -98,7 +104,7 @@ struct ChunkSink
 
   void add(int64_t id, T x, T y, T z)
   {
-    if (id >= this->lo && id < this->hi)
+    if (this->owns(id))
     {
       T* a = this->acc + 3 * id;
       a[0] += x;
@@ -111,6 +117,21 @@ struct ChunkSink
   }
 };
 
+/// Whether polygons [f, f + n) are triangles, each right after the other.
+template <typename Id>
+bool consecutiveTriangles(const Polygons<Id>& polys, int64_t f, int64_t n)
+{
+  const Id* o = polys.offsets + f;
+  for (int64_t i = 0; i < n; ++i)
+  {
+    if (o[i + 1] - o[i] != 3)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 /// Hands the corner contributions of polygons [b, e) to @p sink at the
 /// corners' entries of @p accIds (same layout as the connectivity). Runs of
 /// consecutive triangles go through TriangleBlock; other polygons one by one.
@@ -119,6 +140,7 @@ void scatter(const Polygons<Id>& polys, const AccId* accIds, const T* xyz, int64
 {
   using V = glm::vec<3, T>;
   TriangleBlock<T> block;
+  constexpr int capacity = TriangleBlock<T>::Capacity;
   const auto flush = [&]() {
     block.template weigh<W>();
     block.scatter(accIds, sink);
@@ -132,6 +154,15 @@ void scatter(const Polygons<Id>& polys, const AccId* accIds, const T* xyz, int64
   const int64_t lastCorner = e > b ? polys.end(e - 1) : 0;
   for (int64_t f = b; f < e; ++f)
   {
+    // Without prefetching (a mesh in order), a whole block of triangles one
+    // after the other is filled in one go: the common case of a triangle mesh.
+    if (!Prefetch && block.count == 0 && e - f >= capacity && consecutiveTriangles(polys, f, capacity))
+    {
+      block.fill(polys.connectivity, xyz, polys.begin(f), capacity);
+      flush();
+      f += capacity - 1;
+      continue;
+    }
     const int64_t o = polys.begin(f);
     const int64_t n = polys.size(f);
     if (n == 3)
@@ -153,7 +184,7 @@ void scatter(const Polygons<Id>& polys, const AccId* accIds, const T* xyz, int64
         flush();
       }
       block.add(polys.connectivity, xyz, o);
-      if (block.count == TriangleBlock<T>::Capacity)
+      if (block.count == capacity)
       {
         flush();
       }
