@@ -69,7 +69,7 @@ Mesh twoTriangles()
 std::vector<float> vertexNormals(Mesh& m, Weighting w)
 {
   std::vector<float> out(static_cast<size_t>(3 * m.numPoints()));
-  slnormals::computeVertexNormals(m.polygons(), m.xyz.data(), m.numPoints(), w, out.data(), Parallel());
+  EXPECT_TRUE(slnormals::computeVertexNormals(m.polygons(), m.xyz.data(), m.numPoints(), w, out.data(), Parallel()));
   return out;
 }
 } // namespace

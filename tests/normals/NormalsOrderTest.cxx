@@ -124,12 +124,15 @@ void expectSameNormalsInAnyOrder(vtkPolyData* poly)
   {
     const auto weighting = static_cast<slnormals::Weighting>(w);
     std::vector<float> reference(static_cast<size_t>(3 * n));
-    slnormals::computeVertexNormals(ordered.view(), ordered.xyz.data(), n, weighting, reference.data(), backwards(1));
+    ASSERT_TRUE(
+      slnormals::computeVertexNormals(ordered.view(), ordered.xyz.data(), n, weighting, reference.data(), backwards(1)));
     for (int threads : { 1, 2, 3, 8 })
     {
       std::vector<float> a(static_cast<size_t>(3 * n), -9.f), b(static_cast<size_t>(3 * n), -9.f);
-      slnormals::computeVertexNormals(ordered.view(), ordered.xyz.data(), n, weighting, a.data(), backwards(threads));
-      slnormals::computeVertexNormals(mixed.view(), mixed.xyz.data(), n, weighting, b.data(), backwards(threads));
+      ASSERT_TRUE(
+        slnormals::computeVertexNormals(ordered.view(), ordered.xyz.data(), n, weighting, a.data(), backwards(threads)));
+      ASSERT_TRUE(
+        slnormals::computeVertexNormals(mixed.view(), mixed.xyz.data(), n, weighting, b.data(), backwards(threads)));
       double worstOrdered = 0, worstShuffled = 0;
       for (int64_t v = 0; v < n; ++v)
       {

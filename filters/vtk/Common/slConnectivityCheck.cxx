@@ -51,7 +51,7 @@ SL_VECTOR_CLONES bool anyDecrease(const Id* offsets, vtkIdType begin, vtkIdType 
 /// The problem with one cell array whose ids are of type Id, or "".
 template <typename Id>
 std::string cellsProblem(const Id* offsets, vtkIdType numOffsets, const Id* ids, vtkIdType numIds,
-  vtkIdType numPoints, const char* kind)
+  vtkIdType numPoints, const char* kind, bool checkIds)
 {
   if (numOffsets == 0)
   {
@@ -79,6 +79,10 @@ std::string cellsProblem(const Id* offsets, vtkIdType numOffsets, const Id* ids,
   {
     return std::string(kind) + " " + std::to_string(firstDecrease.load() - 1) + ": its offset decreases";
   }
+  if (!checkIds)
+  {
+    return std::string();
+  }
   // The first id outside [0, numPoints), found in parallel: the common case
   // (none) is one branch-free pass.
   std::atomic<vtkIdType> firstBad(numIds);
@@ -105,7 +109,7 @@ std::string cellsProblem(const Id* offsets, vtkIdType numOffsets, const Id* ids,
     (numPoints > 0 ? " (0 to " + std::to_string(numPoints - 1) + ")" : std::string());
 }
 
-std::string arrayProblem(vtkCellArray* cells, vtkIdType numPoints, const char* kind)
+std::string arrayProblem(vtkCellArray* cells, vtkIdType numPoints, const char* kind, bool checkIds = true)
 {
   if (!cells)
   {
@@ -116,23 +120,28 @@ std::string arrayProblem(vtkCellArray* cells, vtkIdType numPoints, const char* k
     vtkTypeInt64Array* offsets = cells->GetOffsetsArray64();
     vtkTypeInt64Array* ids = cells->GetConnectivityArray64();
     return cellsProblem(offsets->GetPointer(0), offsets->GetNumberOfValues(), ids->GetPointer(0),
-      ids->GetNumberOfValues(), numPoints, kind);
+      ids->GetNumberOfValues(), numPoints, kind, checkIds);
   }
   vtkTypeInt32Array* offsets = cells->GetOffsetsArray32();
   vtkTypeInt32Array* ids = cells->GetConnectivityArray32();
   return cellsProblem(offsets->GetPointer(0), offsets->GetNumberOfValues(), ids->GetPointer(0),
-    ids->GetNumberOfValues(), numPoints, kind);
+    ids->GetNumberOfValues(), numPoints, kind, checkIds);
 }
 } // namespace
 
 std::string slConnectivityProblem(vtkPolyData* mesh)
+{
+  return slConnectivityProblem(mesh, true);
+}
+
+std::string slConnectivityProblem(vtkPolyData* mesh, bool polygonIds)
 {
   if (!mesh)
   {
     return std::string();
   }
   const vtkIdType numPoints = mesh->GetNumberOfPoints();
-  std::string problem = arrayProblem(mesh->GetPolys(), numPoints, "polygon");
+  std::string problem = arrayProblem(mesh->GetPolys(), numPoints, "polygon", polygonIds);
   if (problem.empty())
   {
     problem = arrayProblem(mesh->GetStrips(), numPoints, "strip");

@@ -24,4 +24,10 @@ class vtkPolyData;
 /// mesh has 3 points (0 to 2)".
 SHADELABCOMMON_EXPORT std::string slConnectivityProblem(vtkPolyData* mesh);
 
+/// slConnectivityProblem(), with @p polygonIds false leaving the polygons'
+/// point ids unread (their offsets are still checked): for a caller that
+/// checks each id before it follows it, and asks slConnectivityProblem(mesh)
+/// for the line when one is bad.
+SHADELABCOMMON_EXPORT std::string slConnectivityProblem(vtkPolyData* mesh, bool polygonIds);
+
 #endif

@@ -174,6 +174,11 @@ int64_t computeInto(const slnormals::PolygonNormalsSettings& settings, bool cell
   };
   slnormals::computePolygonNormals(
     settings, hasOwned ? owned.view() : slPolygonsOf<Id>(input->GetPolys()), hasOwned, xyz, numPoints, par, r);
+  if (!r.pointIdsInRange)
+  {
+    // Found by the computation (settings.checksPointIds()): the check names it.
+    throw shadelab::Error(slConnectivityProblem(input));
+  }
 
   if (!r.pointMap.empty())
   {
@@ -257,17 +262,6 @@ int slPolyDataNormals::RequestData(vtkInformation*, vtkInformationVector** input
   {
     return this->Fail("point " + std::to_string(bad) + " has a NaN or infinite coordinate", output);
   }
-  const std::string cellProblem = slConnectivityProblem(input);
-  if (!cellProblem.empty())
-  {
-    return this->Fail(cellProblem, output);
-  }
-  const vtkIdType others = input->GetNumberOfVerts() + input->GetNumberOfLines();
-  if (others > 0)
-  {
-    vtkWarningMacro(<< others << " vertex and line cells are not polygons: passed through without normals");
-  }
-
   slnormals::PolygonNormalsSettings s;
   s.weighting = static_cast<slnormals::Weighting>(this->Weighting);
   s.featureAngleDegrees = this->FeatureAngle;
@@ -277,6 +271,20 @@ int slPolyDataNormals::RequestData(vtkInformation*, vtkInformationVector** input
   s.weld = this->WeldCoincidentPoints;
   s.pointNormals = this->ComputePointNormals;
   const bool cellNormals = this->ComputeCellNormals;
+
+  // Polygon ids the computation checks as it reads them are not read here
+  // first: on the plain vertex-normal path that pass would cost as much
+  // memory traffic as the computation's own reading of them.
+  const std::string cellProblem = slConnectivityProblem(input, !s.checksPointIds());
+  if (!cellProblem.empty())
+  {
+    return this->Fail(cellProblem, output);
+  }
+  const vtkIdType others = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  if (others > 0)
+  {
+    vtkWarningMacro(<< others << " vertex and line cells are not polygons: passed through without normals");
+  }
 
   // Points as float or double; anything else, and float points of a mesh
   // too large or too small for float arithmetic, is converted to double.

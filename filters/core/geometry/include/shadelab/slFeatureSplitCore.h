@@ -25,6 +25,7 @@
  * slVertexNormalsCore.h; with welding, a second pass over points.
  */
 
+#include "shadelab/Error.h"
 #include "slCornerWeights.h"
 #include "slFaceNormalsCore.h"
 #include "slNormalsParallel.h"
@@ -353,7 +354,11 @@ int64_t splitVertexNormals(const Polygons<Id>& topology, const Id* original, con
       }
     });
     stored.reset();
-    accumulateNormals(topology, outConnectivity, xyz, total, weighting, out.normals, parallel);
+    if (!accumulateNormals(topology, outConnectivity, xyz, numPoints, total, weighting, out.normals, parallel))
+    {
+      // The corner table was built from these ids, so they were checked.
+      throw shadelab::Error("a polygon names a point outside the mesh");
+    }
     return total;
   }
 

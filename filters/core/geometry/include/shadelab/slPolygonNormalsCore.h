@@ -44,6 +44,13 @@ struct PolygonNormalsSettings
   bool outward = false;     ///< and turn closed pieces outward
   bool weld = false;        ///< treat points of equal coordinates as one
   bool pointNormals = true; ///< compute point normals at all
+
+  /// Whether computePolygonNormals() checks the polygons' point ids itself:
+  /// on the plain vertex-normal path, which reads every id once anyway and
+  /// checks it before following it. Every other path (splitting,
+  /// orientation, welding, no point normals) builds tables from the ids
+  /// first, so its caller must check that they lie in [0, numPoints).
+  bool checksPointIds() const { return this->pointNormals && !(this->split || this->orient || this->outward || this->weld); }
 };
 
 /// Where the result goes, and the result.
@@ -66,6 +73,10 @@ struct PolygonNormals
   Polygons<Id> polygons;
   /// Polygons reversed by the orientation.
   int64_t flipped = 0;
+  /// False when a polygon names a point outside [0, numPoints), found on
+  /// the path that checks ids itself (PolygonNormalsSettings::
+  /// checksPointIds()); the normals are then incomplete and must not be used.
+  bool pointIdsInRange = true;
   /// With splitting: output point -> input point (split points first,
   /// then the points no polygon uses), and input point -> first output
   /// point made from it. Empty without splitting (output point = input point).
@@ -232,8 +243,8 @@ void computePolygonNormals(const PolygonNormalsSettings& s, Polygons<Id> polys, 
   else if (s.pointNormals)
   {
     float* n = result.allocateNormals(numPoints);
-    computeVertexNormals(topology, xyz, numPoints, s.weighting, n, par);
-    if (welded)
+    result.pointIdsInRange = computeVertexNormals(topology, xyz, numPoints, s.weighting, n, par);
+    if (welded && result.pointIdsInRange)
     {
       par.forRange(0, numPoints, 65536, [&](int64_t b, int64_t e) {
         for (int64_t v = b; v < e; ++v)

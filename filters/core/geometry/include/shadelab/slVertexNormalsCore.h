@@ -28,8 +28,14 @@
  * accumulator), and a pass over the points adds the copies in chunk order
  * and normalises. In random order every point and sum is a cache miss, so
  * the scatter then also prefetches them ahead of use.
+ *
+ * The scatter checks each polygon's point ids before it reads the points
+ * they name, so that a caller need not read every id once more beforehand
+ * (a pass as long as the scatter's own reading of them): a polygon naming a
+ * point outside the mesh stops the computation, which then reports it.
  */
 
+#include "shadelab/slVectorClones.h"
 #include "slCornerWeights.h"
 #include "slFaceNormalsCore.h"
 #include "slNormalsParallel.h"
@@ -38,6 +44,7 @@
 #include <glm/glm.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <type_traits>
@@ -117,6 +124,21 @@ struct ChunkSink
   }
 };
 
+/// Whether the @p n ids at @p ids all lie in [0, @p limit). Written so that
+/// GCC vectorises it (a mask or-ed into an integer of the ids' width).
+template <typename Id>
+SL_VECTOR_CLONES bool idsBelow(const Id* ids, int64_t n, int64_t limit)
+{
+  using U = std::make_unsigned_t<Id>;
+  const auto l = static_cast<U>(limit);
+  U bad = 0;
+  for (int64_t i = 0; i < n; ++i)
+  {
+    bad |= static_cast<U>(ids[i]) >= l ? ~U(0) : U(0);
+  }
+  return bad == 0;
+}
+
 /// Whether polygons [f, f + n) are triangles, each right after the other.
 template <typename Id>
 bool consecutiveTriangles(const Polygons<Id>& polys, int64_t f, int64_t n)
@@ -135,8 +157,11 @@ bool consecutiveTriangles(const Polygons<Id>& polys, int64_t f, int64_t n)
 /// Hands the corner contributions of polygons [b, e) to @p sink at the
 /// corners' entries of @p accIds (same layout as the connectivity). Runs of
 /// consecutive triangles go through TriangleBlock; other polygons one by one.
+/// False, at the first polygon naming a point outside [0, @p numPoints) of
+/// @p xyz, without reading it: the sums are then incomplete.
 template <Weighting W, bool Prefetch, typename T, typename Id, typename AccId, typename Sink>
-void scatter(const Polygons<Id>& polys, const AccId* accIds, const T* xyz, int64_t b, int64_t e, Sink& sink)
+bool scatter(
+  const Polygons<Id>& polys, const AccId* accIds, const T* xyz, int64_t numPoints, int64_t b, int64_t e, Sink& sink)
 {
   using V = glm::vec<3, T>;
   TriangleBlock<T> block;
@@ -158,6 +183,10 @@ void scatter(const Polygons<Id>& polys, const AccId* accIds, const T* xyz, int64
     // after the other is filled in one go: the common case of a triangle mesh.
     if (!Prefetch && block.count == 0 && e - f >= capacity && consecutiveTriangles(polys, f, capacity))
     {
+      if (!idsBelow(polys.connectivity + polys.begin(f), 3 * capacity, numPoints))
+      {
+        return false;
+      }
       block.fill(polys.connectivity, xyz, polys.begin(f), capacity);
       flush();
       f += capacity - 1;
@@ -172,12 +201,19 @@ void scatter(const Polygons<Id>& polys, const AccId* accIds, const T* xyz, int64
       {
         for (int k = 0; k < 3; ++k)
         {
-          prefetch(xyz + 3 * static_cast<int64_t>(polys.connectivity[later + k]));
+          // A bad id is only found when its triangle is reached: point
+          // nowhere odd (nor overflow the product) before that.
+          const auto id = static_cast<int64_t>(polys.connectivity[later + k]);
+          prefetch(xyz + 3 * (static_cast<uint64_t>(id) < static_cast<uint64_t>(numPoints) ? id : 0));
         }
       }
       for (int k = 0; Prefetch && k < 3; ++k)
       {
         sink.prefetch(static_cast<int64_t>(accIds[o + k]));
+      }
+      if (!idsBelow(polys.connectivity + o, 3, numPoints))
+      {
+        return false;
       }
       if (!block.continues(o))
       {
@@ -189,6 +225,10 @@ void scatter(const Polygons<Id>& polys, const AccId* accIds, const T* xyz, int64
         flush();
       }
       continue;
+    }
+    if (!idsBelow(polys.connectivity + o, n, numPoints))
+    {
+      return false;
     }
     const V nv = newellVector(polys, xyz, f);
     const T len = glm::length(nv);
@@ -211,6 +251,7 @@ void scatter(const Polygons<Id>& polys, const AccId* accIds, const T* xyz, int64
   {
     flush();
   }
+  return true;
 }
 
 /// Chunks of polygons and the entry ranges they own (see the file comment).
@@ -311,21 +352,24 @@ inline T* inPlaceAccumulator(float* out)
 }
 } // namespace detail
 
-/// Normalised sums of corner contributions, indexed by @p accIds (the
-/// connectivity's layout, values in [0, numPoints)), into @p out (3 floats
-/// each). Entries no non-degenerate corner reaches get (0, 0, 0).
+/// Normalised sums of corner contributions of @p polys over the @p numPoints
+/// points @p xyz, into @p out (3 floats an entry), at the entries @p accIds
+/// (the connectivity's layout, values in [0, numEntries), checked by the
+/// caller). Entries no non-degenerate corner reaches get (0, 0, 0). False,
+/// and @p out incomplete, when a polygon names a point outside
+/// [0, numPoints): the points it names are not read.
 template <typename T, typename Id, typename AccId>
-void accumulateNormals(const Polygons<Id>& polys, const AccId* accIds, const T* xyz, int64_t numPoints,
-  Weighting weighting, float* out, const Parallel& parallel)
+[[nodiscard]] bool accumulateNormals(const Polygons<Id>& polys, const AccId* accIds, const T* xyz, int64_t numPoints,
+  int64_t numEntries, Weighting weighting, float* out, const Parallel& parallel)
 {
-  const detail::Partition part = detail::partition(polys, accIds, numPoints, parallel.threads);
+  const detail::Partition part = detail::partition(polys, accIds, numEntries, parallel.threads);
   const int64_t chunks = part.chunks;
   const int64_t* bounds = part.bounds.data();
   std::unique_ptr<T[]> scratch;
   T* acc = detail::inPlaceAccumulator<T>(out);
   if (!acc)
   {
-    scratch = uninitialisedArray<T>(static_cast<size_t>(3 * numPoints));
+    scratch = uninitialisedArray<T>(static_cast<size_t>(3 * numEntries));
     acc = scratch.get();
   }
   // Random order: half or more of a chunk's corners would be kept for other
@@ -335,6 +379,7 @@ void accumulateNormals(const Polygons<Id>& polys, const AccId* accIds, const T* 
   std::vector<std::unique_ptr<T[]>> copy(static_cast<size_t>(copies ? chunks : 0));
   // kept[k * chunks + j]: what chunk k keeps for range j.
   std::vector<std::vector<detail::Kept<T>>> kept(static_cast<size_t>(chunks * chunks));
+  std::atomic<bool> badIds(false);
   parallel.forRange(0, chunks, 1, [&](int64_t kb, int64_t ke) {
     for (int64_t k = kb; k < ke; ++k)
     {
@@ -343,10 +388,10 @@ void accumulateNormals(const Polygons<Id>& polys, const AccId* accIds, const T* 
       if (copies)
       {
         lo = 0;
-        hi = numPoints;
+        hi = numEntries;
         if (k > 0)
         {
-          copy[static_cast<size_t>(k)] = uninitialisedArray<T>(static_cast<size_t>(3 * numPoints));
+          copy[static_cast<size_t>(k)] = uninitialisedArray<T>(static_cast<size_t>(3 * numEntries));
           sums = copy[static_cast<size_t>(k)].get();
         }
       }
@@ -366,27 +411,37 @@ void accumulateNormals(const Polygons<Id>& polys, const AccId* accIds, const T* 
         }
       }
       detail::ChunkSink<T> sink{ sums, lo, hi, bounds, chunks, mine };
+      const auto run = [&](auto weightingTag) {
+        constexpr Weighting w = decltype(weightingTag)::value;
+        return part.randomOrder ? detail::scatter<w, true>(polys, accIds, xyz, numPoints, b, e, sink)
+                                : detail::scatter<w, false>(polys, accIds, xyz, numPoints, b, e, sink);
+      };
+      bool done = false;
       switch (weighting)
       {
         case Weighting::Uniform:
-          part.randomOrder ? detail::scatter<Weighting::Uniform, true>(polys, accIds, xyz, b, e, sink)
-                           : detail::scatter<Weighting::Uniform, false>(polys, accIds, xyz, b, e, sink);
+          done = run(std::integral_constant<Weighting, Weighting::Uniform>());
           break;
         case Weighting::Area:
-          part.randomOrder ? detail::scatter<Weighting::Area, true>(polys, accIds, xyz, b, e, sink)
-                           : detail::scatter<Weighting::Area, false>(polys, accIds, xyz, b, e, sink);
+          done = run(std::integral_constant<Weighting, Weighting::Area>());
           break;
         case Weighting::Angle:
-          part.randomOrder ? detail::scatter<Weighting::Angle, true>(polys, accIds, xyz, b, e, sink)
-                           : detail::scatter<Weighting::Angle, false>(polys, accIds, xyz, b, e, sink);
+          done = run(std::integral_constant<Weighting, Weighting::Angle>());
           break;
         case Weighting::Max:
-          part.randomOrder ? detail::scatter<Weighting::Max, true>(polys, accIds, xyz, b, e, sink)
-                           : detail::scatter<Weighting::Max, false>(polys, accIds, xyz, b, e, sink);
+          done = run(std::integral_constant<Weighting, Weighting::Max>());
           break;
+      }
+      if (!done)
+      {
+        badIds.store(true, std::memory_order_relaxed);
       }
     }
   });
+  if (badIds.load())
+  {
+    return false;
+  }
   const auto normalise = [&](int64_t v) {
     glm::vec<3, T> s(acc[3 * v], acc[3 * v + 1], acc[3 * v + 2]);
     for (int64_t k = 1; copies && k < chunks; ++k)
@@ -405,13 +460,13 @@ void accumulateNormals(const Polygons<Id>& polys, const AccId* accIds, const T* 
   };
   if (copies)
   {
-    parallel.forRange(0, numPoints, 16384, [&](int64_t b, int64_t e) {
+    parallel.forRange(0, numEntries, 16384, [&](int64_t b, int64_t e) {
       for (int64_t v = b; v < e; ++v)
       {
         normalise(v);
       }
     });
-    return;
+    return true;
   }
   parallel.forRange(0, chunks, 1, [&](int64_t jb, int64_t je) {
     for (int64_t j = jb; j < je; ++j)
@@ -441,15 +496,18 @@ void accumulateNormals(const Polygons<Id>& polys, const AccId* accIds, const T* 
       }
     }
   });
+  return true;
 }
 
 /// Unit vertex normals of points [0, numPoints) into @p out (3 floats each).
-/// Points used by no non-degenerate polygon get (0, 0, 0).
+/// Points used by no non-degenerate polygon get (0, 0, 0). False, and
+/// @p out incomplete, when a polygon names a point outside [0, numPoints)
+/// (not read).
 template <typename T, typename Id>
-void computeVertexNormals(const Polygons<Id>& polys, const T* xyz, int64_t numPoints, Weighting weighting,
-  float* out, const Parallel& parallel)
+[[nodiscard]] bool computeVertexNormals(const Polygons<Id>& polys, const T* xyz, int64_t numPoints,
+  Weighting weighting, float* out, const Parallel& parallel)
 {
-  accumulateNormals(polys, polys.connectivity, xyz, numPoints, weighting, out, parallel);
+  return accumulateNormals(polys, polys.connectivity, xyz, numPoints, numPoints, weighting, out, parallel);
 }
 
 } // namespace slnormals
