@@ -3,6 +3,7 @@
 // point welding, tangent frames across a mirror seam, and the composed
 // computation of slPolyDataNormals, on meshes small enough to check on paper.
 #include "shadelab/slFaceNormalsCore.h"
+#include "shadelab/slIdsBelow.h"
 #include "shadelab/slOrientationCore.h"
 #include "shadelab/slPointWeldCore.h"
 #include "shadelab/slPolygonNormalsCore.h"
@@ -15,6 +16,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace
@@ -321,5 +323,28 @@ TEST(GeometryCore, InwardSurfaceIsTurnedOutInACopyOfThePolygons)
   {
     const double* x = &m.xyz[static_cast<size_t>(3 * p)];
     expectUnit(&c.normals[static_cast<size_t>(3 * p)], x[0] - 0.5, x[1] - 0.5, x[2] - 0.5);
+  }
+}
+
+TEST(GeometryCore, IdsBelowTakesNegativeIdsForHugeOnesWhateverTheLimit)
+{
+  // Long enough for the vectorised loop and its remainder; one bad id at a time.
+  for (const int64_t limit : { int64_t(0), int64_t(7), (int64_t(1) << 31) - 1, int64_t(1) << 31, int64_t(1) << 33 })
+  {
+    std::vector<int32_t> ids(37, 0);
+    EXPECT_EQ(slIdsBelow(ids.data(), 37, limit), limit > 0) << limit;
+    for (const int32_t bad : { int32_t(-1), int32_t(-2), std::numeric_limits<int32_t>::min() })
+    {
+      ids[29] = bad;
+      EXPECT_FALSE(slIdsBelow(ids.data(), 37, limit)) << bad << " against " << limit;
+    }
+    // The largest id a 32-bit array holds names a point only when there are more.
+    ids[29] = std::numeric_limits<int32_t>::max();
+    EXPECT_EQ(slIdsBelow(ids.data(), 37, limit), limit > std::numeric_limits<int32_t>::max()) << limit;
+    std::vector<int64_t> wide(37, 0);
+    wide[36] = limit;
+    EXPECT_FALSE(slIdsBelow(wide.data(), 37, limit)) << "the limit itself, " << limit;
+    wide[36] = limit - 1;
+    EXPECT_EQ(slIdsBelow(wide.data(), 37, limit), limit > 0) << limit;
   }
 }

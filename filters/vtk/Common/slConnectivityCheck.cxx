@@ -1,6 +1,7 @@
 #include "slConnectivityCheck.h"
 
 #include "shadelab/slAtomicMinimum.h"
+#include "shadelab/slIdsBelow.h"
 #include "shadelab/slVectorClones.h"
 
 #include <vtkCellArray.h>
@@ -15,27 +16,15 @@
 
 namespace
 {
-// The two passes below are written so that GCC vectorises them (-O3): one
-// compare an element, its all-ones or zero mask or-ed into an integer of the
-// element's width (a bool |= is not vectorised). They are cloned for AVX2
-// since SSE2 has no 64-bit compare: its version of 64-bit ids runs one id at
-// a time.
-
 /// Whether ids[begin, end) holds an id outside [0, numPoints).
 template <typename Id>
-SL_VECTOR_CLONES bool anyOutside(const Id* ids, vtkIdType begin, vtkIdType end, vtkIdType numPoints)
+bool anyOutside(const Id* ids, vtkIdType begin, vtkIdType end, vtkIdType numPoints)
 {
-  using U = std::make_unsigned_t<Id>;
-  const auto limit = static_cast<U>(numPoints);
-  U bad = 0;
-  for (vtkIdType i = begin; i < end; ++i)
-  {
-    bad |= static_cast<U>(ids[i]) >= limit ? ~U(0) : U(0);
-  }
-  return bad != 0;
+  return !slIdsBelow(ids + begin, end - begin, numPoints);
 }
 
-/// Whether offsets[begin, end) decreases anywhere (offsets[begin - 1] counts).
+/// Whether offsets[begin, end) decreases anywhere (offsets[begin - 1] counts),
+/// vectorised as slIdsBelow() is (a mask or-ed into an integer; AVX2 clone).
 template <typename Id>
 SL_VECTOR_CLONES bool anyDecrease(const Id* offsets, vtkIdType begin, vtkIdType end)
 {

@@ -35,7 +35,7 @@
  * point outside the mesh stops the computation, which then reports it.
  */
 
-#include "shadelab/slVectorClones.h"
+#include "shadelab/slIdsBelow.h"
 #include "slCornerWeights.h"
 #include "slFaceNormalsCore.h"
 #include "slNormalsParallel.h"
@@ -124,21 +124,6 @@ struct ChunkSink
   }
 };
 
-/// Whether the @p n ids at @p ids all lie in [0, @p limit). Written so that
-/// GCC vectorises it (a mask or-ed into an integer of the ids' width).
-template <typename Id>
-SL_VECTOR_CLONES bool idsBelow(const Id* ids, int64_t n, int64_t limit)
-{
-  using U = std::make_unsigned_t<Id>;
-  const auto l = static_cast<U>(limit);
-  U bad = 0;
-  for (int64_t i = 0; i < n; ++i)
-  {
-    bad |= static_cast<U>(ids[i]) >= l ? ~U(0) : U(0);
-  }
-  return bad == 0;
-}
-
 /// Whether polygons [f, f + n) are triangles, each right after the other.
 template <typename Id>
 bool consecutiveTriangles(const Polygons<Id>& polys, int64_t f, int64_t n)
@@ -183,7 +168,7 @@ bool scatter(
     // after the other is filled in one go: the common case of a triangle mesh.
     if (!Prefetch && block.count == 0 && e - f >= capacity && consecutiveTriangles(polys, f, capacity))
     {
-      if (!idsBelow(polys.connectivity + polys.begin(f), 3 * capacity, numPoints))
+      if (!slIdsBelow(polys.connectivity + polys.begin(f), 3 * capacity, numPoints))
       {
         return false;
       }
@@ -211,7 +196,7 @@ bool scatter(
       {
         sink.prefetch(static_cast<int64_t>(accIds[o + k]));
       }
-      if (!idsBelow(polys.connectivity + o, 3, numPoints))
+      if (!slIdsBelow(polys.connectivity + o, 3, numPoints))
       {
         return false;
       }
@@ -226,7 +211,7 @@ bool scatter(
       }
       continue;
     }
-    if (!idsBelow(polys.connectivity + o, n, numPoints))
+    if (!slIdsBelow(polys.connectivity + o, n, numPoints))
     {
       return false;
     }
