@@ -16,13 +16,6 @@
 
 namespace
 {
-/// Whether ids[begin, end) holds an id outside [0, numPoints).
-template <typename Id>
-bool anyOutside(const Id* ids, vtkIdType begin, vtkIdType end, vtkIdType numPoints)
-{
-  return !slIdsBelow(ids + begin, end - begin, numPoints);
-}
-
 /// Whether offsets[begin, end) decreases anywhere (offsets[begin - 1] counts),
 /// vectorised as slIdsBelow() is (a mask or-ed into an integer; AVX2 clone).
 template <typename Id>
@@ -76,7 +69,7 @@ std::string cellsProblem(const Id* offsets, vtkIdType numOffsets, const Id* ids,
   // (none) is one branch-free pass.
   std::atomic<vtkIdType> firstBad(numIds);
   vtkSMPTools::For(0, numIds, 65536, [&](vtkIdType begin, vtkIdType end) {
-    const bool bad = anyOutside(ids, begin, end, numPoints);
+    const bool bad = !slIdsBelow(ids + begin, end - begin, numPoints);
     for (vtkIdType i = begin; bad && i < end; ++i)
     {
       if (ids[i] < 0 || ids[i] >= numPoints)

@@ -2,8 +2,8 @@
 #define slIdsBelow_h
 /**
  * @file slIdsBelow.h
- * @brief slIdsBelow(): whether point ids lie in [0, limit), in a loop the
- * compiler vectorises. The one test of an id against a mesh's points, used
+ * @brief slIdsBelow() and slIdsBelowInline(): whether point ids lie in
+ * [0, limit), in a loop the compiler vectorises. The one test of an id against a mesh's points, used
  * by the connectivity check and by the normals' scatter. C++ only.
  */
 
@@ -13,16 +13,17 @@
 #include <limits>
 #include <type_traits>
 
-/// Whether the @p n ids at @p ids all lie in [0, @p limit).
+/// Whether the @p n ids at @p ids all lie in [0, @p limit); inline, for a
+/// few ids at a time in a hot loop (slIdsBelow() is a call through the
+/// clone dispatch, which cannot be inlined).
 ///
 /// Each id is compared once, as unsigned: a negative id is then a huge one.
 /// A limit beyond the ids' range (more points than 32-bit ids can name)
 /// becomes the first value past it, so that no negative id passes. The
 /// result of each compare, a mask, is or-ed into an integer of the ids'
 /// width: GCC vectorises that (-O3), where it does not vectorise a bool |=.
-/// Cloned for AVX2, since SSE2 has no 64-bit compare.
 template <typename Id>
-SL_VECTOR_CLONES bool slIdsBelow(const Id* ids, int64_t n, int64_t limit)
+inline bool slIdsBelowInline(const Id* ids, int64_t n, int64_t limit)
 {
   using U = std::make_unsigned_t<Id>;
   constexpr auto largest = static_cast<uint64_t>(std::numeric_limits<Id>::max());
@@ -35,6 +36,14 @@ SL_VECTOR_CLONES bool slIdsBelow(const Id* ids, int64_t n, int64_t limit)
     bad |= static_cast<U>(ids[i]) >= l ? ~U(0) : U(0);
   }
   return bad == 0;
+}
+
+/// slIdsBelowInline() for long runs of ids: cloned for AVX2, since SSE2 has
+/// no 64-bit compare and its version of 64-bit ids runs one id at a time.
+template <typename Id>
+SL_VECTOR_CLONES bool slIdsBelow(const Id* ids, int64_t n, int64_t limit)
+{
+  return slIdsBelowInline(ids, n, limit);
 }
 
 #endif

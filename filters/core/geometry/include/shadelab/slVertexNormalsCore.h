@@ -196,7 +196,7 @@ bool scatter(
       {
         sink.prefetch(static_cast<int64_t>(accIds[o + k]));
       }
-      if (!slIdsBelow(polys.connectivity + o, 3, numPoints))
+      if (!slIdsBelowInline(polys.connectivity + o, 3, numPoints))
       {
         return false;
       }
@@ -211,7 +211,7 @@ bool scatter(
       }
       continue;
     }
-    if (!slIdsBelow(polys.connectivity + o, n, numPoints))
+    if (!slIdsBelowInline(polys.connectivity + o, n, numPoints))
     {
       return false;
     }
