@@ -6,7 +6,7 @@ content. Each case expects exactly one line on stderr."""
 import struct
 
 from inputs import (QUAD_OBJ, TETRA_OFF, THREE_LIGHTS, dds_volume, exr, exr_attribute, exr_scanlines, glb, gltf, legacy_vtk, light_types,
-                    lighting_models, obj, ply_ascii, ply_binary, ply_header, png, stl_binary, vtp,
+                    lighting_models, obj, ply_ascii, ply_binary, ply_header, png, stl_binary, tiff_tiled, vtp,
                     vtp_appended_base64_header, vtp_compressed_header)
 
 
@@ -278,6 +278,8 @@ CASES = [
     image_case("exr value unlike its type", "t.exr", exr_scanlines(extra=exr_attribute(b"owner", b"int", b"\0" * 8)), 'shadelab light: t.exr: cannot read image: EXR attribute \'owner\' (int) at byte 276 declares 8 bytes, but its type takes 4 bytes\n'),
     image_case("exr channel list past its size", "t.exr", exr_scanlines(extra=exr_attribute(b"channels", b"chlist", b"R\0" + b"\0" * 16 + b"\0", size=10)), 'shadelab light: t.exr: cannot read image: EXR attribute \'channels\' (chlist) at byte 276 declares 10 bytes, but channel \'R\' does not fit in its size\n'),
     image_case("exr preview larger than its size", "t.exr", exr_scanlines(extra=exr_attribute(b"preview", b"preview", struct.pack("<II", 40000, 40000) + b"\0" * 8)), 'shadelab light: t.exr: cannot read image: EXR attribute \'preview\' (preview) at byte 276 declares 16 bytes, but its preview of 1600000000 pixels needs 6400000008 bytes\n'),
+    image_case("exr huge tile", "t.exr", exr_scanlines(tiles=(32768, 32767), tail=struct.pack("<Q", 313) + b"\0" * 22), 'shadelab light: t.exr: cannot read image: EXR attribute \'tiles\' (tiledesc) at byte 276 declares tiles of 32768x32767 pixels of 1 channel, more than ShadeLab reads (2^28 values)\n'),
+    image_case("tiff huge tile", "t.tif", tiff_tiled(32768), 'shadelab light: t.tif: cannot read image: its header declares tiles of 32768x32768 pixels of 1 channel, more than ShadeLab reads (2^28 values)\n'),
     image_case("exr string longer than its vector", "t.exr", exr_scanlines(extra=exr_attribute(b"notes", b"stringvector", struct.pack("<i", 1000000000) + b"abcd")), 'shadelab light: t.exr: cannot read image: EXR attribute \'notes\' (stringvector) at byte 276 declares 8 bytes, but the string at byte 299 does not fit in its size\n'),
     image_case("png garbage", "t.png", b"\x89PNG\r\n\x1a\n\x1b[31m garbage", 'shadelab light: t.png: cannot read image: PNG chunk \'m ga\' at byte 8 declares 458961713 bytes of data; 1 byte remains in the file\n'),
     image_case("png empty", "t.png", b"", 'shadelab light: t.png: cannot read image: Not a PNG file\n'),

@@ -154,11 +154,14 @@ def exr_attribute(name, kind, value, size=None):
     return name + b"\0" + kind + b"\0" + struct.pack("<i", len(value) if size is None else size) + value
 
 
-def exr_scanlines(lines=4, compression=0, extra=b"", tail=b""):
+def exr_scanlines(lines=4, compression=0, extra=b"", tail=b"", tiles=None):
     """A single-part scan-line OpenEXR header: one half channel Y, a data
     window 1 pixel wide and @lines high, @compression, then @extra
-    attributes; after its end, @tail (where the offset table belongs)."""
+    attributes; after its end, @tail (where the offset table belongs).
+    With @tiles (width, height) the part is tiled (one level) instead."""
     channels = b"Y\0" + struct.pack("<iB3xii", 1, 0, 1, 1) + b"\0"
+    if tiles is not None:
+        extra = exr_attribute(b"tiles", b"tiledesc", struct.pack("<IIB", tiles[0], tiles[1], 0)) + extra
     header = (exr_attribute(b"channels", b"chlist", channels)
               + exr_attribute(b"compression", b"compression", bytes([compression]))
               + exr_attribute(b"dataWindow", b"box2i", struct.pack("<4i", 0, 0, 0, lines - 1))
@@ -167,7 +170,23 @@ def exr_scanlines(lines=4, compression=0, extra=b"", tail=b""):
               + exr_attribute(b"pixelAspectRatio", b"float", struct.pack("<f", 1.0))
               + exr_attribute(b"screenWindowCenter", b"v2f", struct.pack("<2f", 0.0, 0.0))
               + exr_attribute(b"screenWindowWidth", b"float", struct.pack("<f", 1.0)))
-    return b"\x76\x2f\x31\x01\x02\x00\x00\x00" + header + extra + b"\0" + tail
+    flags = b"\x02\x00\x00\x00" if tiles is None else b"\x02\x02\x00\x00"
+    return b"\x76\x2f\x31\x01" + flags + header + extra + b"\0" + tail
+
+
+def tiff_tiled(tile, width=4, height=4):
+    """A little-endian TIFF of @width x @height 8-bit grey pixels in tiles of
+    @tile x @tile pixels, with the data of one 4 x 4 tile."""
+    entries = [(256, 4, width), (257, 4, height), (258, 3, 8), (259, 3, 1), (262, 3, 1),
+               (277, 3, 1), (284, 3, 1), (322, 4, tile), (323, 4, tile)]
+    count = len(entries) + 2
+    data_at = 8 + 2 + 12 * count + 4
+    entries += [(324, 4, data_at), (325, 4, 16)]
+    data = b"II*\0" + struct.pack("<IH", 8, count)
+    for tag, kind, value in entries:
+        field = struct.pack("<HH", value, 0) if kind == 3 else struct.pack("<I", value)  # SHORT or LONG
+        data += struct.pack("<HHI", tag, kind, 1) + field
+    return data + struct.pack("<I", 0) + b"\x80" * 16
 
 
 def dds_volume(width=7, height=17, depth=3):

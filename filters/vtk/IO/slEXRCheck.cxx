@@ -5,12 +5,13 @@
 //
 // OpenEXR sizes a string attribute's buffer from its size field, a string
 // vector's strings from their own length fields, a preview's pixels from
-// its width and height, and the offset table from the data window, before
-// reading any of them. It also reads the value of an attribute of a known
-// type by the type's layout, not by the size field: a size that disagrees
-// with the layout makes OpenEXR read the rest of the header elsewhere than
-// a walk by size fields would. So the walk below checks every value against
-// its type's layout, and every length against what remains.
+// its width and height, the offset table from the data window, and a
+// tile's buffer from the tile size, before reading any of them. It also
+// reads the value of an attribute of a known type by the type's layout, not
+// by the size field: a size that disagrees with the layout makes OpenEXR
+// read the rest of the header elsewhere than a walk by size fields would.
+// So the walk below checks every value against its type's layout, and
+// every length against what remains.
 #include "slImageFileCheck.h"
 
 #include "shadelab/PrintableText.h"
@@ -132,6 +133,8 @@ struct Part
   bool tiled = false;
   std::int64_t tileWidth = 1, tileHeight = 1;
   std::int64_t chunkCount = -1; ///< the chunkCount attribute, -1 when absent
+  std::int64_t channels = 0;
+  std::uint64_t tilesAt = 0; ///< where the tiles attribute starts
 
   /// The chunks OpenEXR expects: the attribute, else scan-line blocks or
   /// the tiles of the full-resolution level (a lower bound with mipmaps).
@@ -216,6 +219,7 @@ std::string valueProblem(Cursor& cursor, const std::string& name, const std::str
         return "channel '" + shadelab::printableText(channel) + "' does not fit in its size";
       }
       cursor.at += 16;
+      part.channels += name == "channels";
     }
   }
   if (type == "preview")
@@ -293,11 +297,21 @@ std::string slEXRProblem(const std::string& fileName)
       {
         return typed + " declares " + std::to_string(valueSize) + " bytes; " + slBytesRemain(cursor.Left());
       }
+      part.tilesAt = name == "tiles" ? start : part.tilesAt;
       const std::string problem = valueProblem(cursor, name, type, valueSize, part);
       if (!problem.empty())
       {
         return typed + " declares " + std::to_string(valueSize) + " bytes, but " + problem;
       }
+    }
+    // OpenEXR allocates a buffer for a tile of every channel as it opens
+    // the file, and OpenImageIO another as it reads.
+    const std::string tooLarge = !part.tiled ? "" :
+      slTooManyValues("tiles of ", static_cast<double>(part.tileWidth), static_cast<double>(part.tileHeight),
+        static_cast<double>(std::max<std::int64_t>(1, part.channels)));
+    if (!tooLarge.empty())
+    {
+      return "EXR attribute 'tiles' (tiledesc) at byte " + std::to_string(part.tilesAt) + " declares " + tooLarge;
     }
     chunks = std::min<std::int64_t>(chunks + (headerEmpty ? 0 : part.Chunks()), std::int64_t(4e18));
     if (!multiPart)

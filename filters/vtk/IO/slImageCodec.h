@@ -22,6 +22,11 @@ struct slImageHeader
   int Height = 0;
   int Channels = 0;
   bool EightBit = false; ///< 8-bit unsigned values (otherwise read as float)
+  /// The size of a tile in a tiled file, 0 x 0 otherwise: the library
+  /// decodes a whole tile into a buffer of its own, whatever the image's
+  /// size.
+  int TileWidth = 0;
+  int TileHeight = 0;
 };
 
 /// The image functions; every one returns false with a one-line reason in
@@ -35,7 +40,8 @@ struct slImageCodec
   /// Every pixel of @p path, bottom row first (VTK's order), as unsigned
   /// char (@p asFloat false; the file must be 8-bit) or float, into
   /// @p pixels (@p expected width x height x channels values). Fails,
-  /// writing nothing, when the file's header no longer matches @p expected.
+  /// writing nothing, when the file's header (size, channels, tiles) no
+  /// longer matches @p expected.
   bool (*ReadPixels)(
     const std::string& path, const slImageHeader& expected, bool asFloat, void* pixels, std::string& error);
   /// Encodes @p pixels (bottom row first; unsigned char or float) in the

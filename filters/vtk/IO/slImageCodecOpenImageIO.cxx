@@ -42,6 +42,8 @@ bool describe(const OIIO::ImageSpec& spec, slImageHeader& header, std::string& e
   header.Height = spec.height;
   header.Channels = spec.nchannels;
   header.EightBit = spec.format == OIIO::TypeDesc::UINT8;
+  header.TileWidth = spec.tile_width;
+  header.TileHeight = spec.tile_height;
   return true;
 }
 
@@ -63,6 +65,7 @@ bool readPixels(
     return false;
   }
   if (header.Width != expected.Width || header.Height != expected.Height || header.Channels != expected.Channels ||
+    header.TileWidth != expected.TileWidth || header.TileHeight != expected.TileHeight ||
     (!asFloat && !header.EightBit))
   {
     error = "it changed while it was read";

@@ -5,9 +5,9 @@
  * @brief Checks an image file's length fields before its library sees it.
  *
  * libpng allocates what a PNG chunk's length field claims, and OpenEXR
- * what a header attribute's size, a preview's width and height or the data
- * window's offset table claim, before either finds that the file ends
- * first: a file of a few hundred bytes can cost
+ * what a header attribute's size, a preview's width and height, the data
+ * window's offset table or a tile's size claim, before either finds that
+ * the file ends first: a file of a few hundred bytes can cost
  * gigabytes. slImageReader runs these checks, chosen by the file's
  * signature, before OpenImageIO opens the file. Each reads the file once
  * and allocates nothing that its fields claim. Internal to ShadeLab::IO.
@@ -33,12 +33,23 @@ std::string slPNGProblem(const std::string& fileName);
 /// 'comments' (string) at byte 8 declares 1979714868 bytes; 372 bytes
 /// remain in the file"; a value of a type OpenEXR knows has that type's
 /// layout (fixed sizes, a channel list, a preview's pixels and a string
-/// vector's strings that end exactly at the size); and the offset table
-/// (one 8-byte entry per chunk of every part) fits in the file. "" for a
-/// file that is not OpenEXR.
+/// vector's strings that end exactly at the size); the offset table
+/// (one 8-byte entry per chunk of every part) fits in the file; and no
+/// tile holds more than kMostImageValues values (OpenEXR allocates a tile's
+/// buffer when it opens the file). "" for a file that is not OpenEXR.
 std::string slEXRProblem(const std::string& fileName);
 
 /// "1 byte remains in the file", "140 bytes remain in the file".
 std::string slBytesRemain(unsigned long long count);
+
+/// The most values (pixels x channels) ShadeLab reads from an image, and
+/// lets its library decode into one tile: an 8k x 8k RGBA image, 1 GB as
+/// floats.
+constexpr double kMostImageValues = 268435456.0;
+
+/// "tiles of 32768x32767 pixels of 1 channel, more than ShadeLab reads
+/// (2^28 values)" (@p what "tiles of ", or "" for the image) when @p width x
+/// @p height x @p channels exceeds kMostImageValues; else "".
+std::string slTooManyValues(const std::string& what, double width, double height, double channels);
 
 #endif

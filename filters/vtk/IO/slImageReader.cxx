@@ -22,10 +22,17 @@ vtkStandardNewMacro(slImageReader);
 
 namespace
 {
-/// The most values (pixels x channels) read: an 8k x 8k RGBA image, 1 GB
-/// as floats. A
-/// header claiming more is rejected before anything is allocated.
-constexpr double kMaximumValues = 268435456.0;
+/// Why @p header's image, or one of its tiles (which OpenImageIO decodes
+/// into a buffer of the tile's size), is too large to read, or "".
+std::string sizeProblem(const slImageHeader& header)
+{
+  std::string tooMany = slTooManyValues("", header.Width, header.Height, header.Channels);
+  if (tooMany.empty())
+  {
+    tooMany = slTooManyValues("tiles of ", header.TileWidth, header.TileHeight, header.Channels);
+  }
+  return tooMany.empty() ? "" : "its header declares " + tooMany;
+}
 
 /// The one-line reason a read failed: the library's @p error, else what it
 /// printed on stderr, else "unknown format".
@@ -114,10 +121,10 @@ int slImageReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInfor
   const bool haveHeader = codec->ReadHeader(name, header, reason);
   const bool asFloat = !(header.EightBit && !this->OutputFloat);
   vtkSmartPointer<vtkDataArray> scalars;
-  if (haveHeader && static_cast<double>(header.Width) * header.Height * header.Channels > kMaximumValues)
+  const std::string tooLarge = haveHeader ? sizeProblem(header) : "";
+  if (!tooLarge.empty())
   {
-    reason = "its header declares " + std::to_string(header.Width) + "x" + std::to_string(header.Height) +
-      " pixels of " + std::to_string(header.Channels) + " channels, more than ShadeLab reads (2^28 values)";
+    reason = tooLarge;
   }
   else if (haveHeader)
   {
