@@ -1,5 +1,6 @@
 """import shadelab from Debian's python3 and run its filters."""
 import os
+import subprocess
 import sys
 import tempfile
 import unittest
@@ -17,6 +18,13 @@ class ImportTest(unittest.TestCase):
     def test_every_class_is_exported(self):
         for name in ("slMeshReader", "slImageReader", "slImageWriter", "slScene", "slSceneRenderer"):
             self.assertTrue(hasattr(shadelab, name), name)
+
+    def test_import_prints_nothing(self):
+        # Loading every library, as a user's script does, says nothing: the
+        # dynamic linker complains here about a symbol bound across libraries.
+        done = subprocess.run([sys.executable, "-c", "import shadelab; shadelab.slPolyDataNormals()"],
+                              capture_output=True, text=True, check=False)
+        self.assertEqual((done.returncode, done.stdout, done.stderr), (0, "", ""))
 
 
 class MeshReaderTest(unittest.TestCase):

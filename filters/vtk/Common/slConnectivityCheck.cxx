@@ -17,9 +17,9 @@
 namespace
 {
 /// Whether offsets[begin, end) decreases anywhere (offsets[begin - 1] counts),
-/// vectorised as slIdsBelow() is (a mask or-ed into an integer; AVX2 clone).
+/// vectorised as slIdsBelow() is (a mask or-ed into an integer).
 template <typename Id>
-SL_VECTOR_CLONES bool anyDecrease(const Id* offsets, vtkIdType begin, vtkIdType end)
+SL_ALWAYS_INLINE bool anyDecreaseLoop(const Id* offsets, vtkIdType begin, vtkIdType end)
 {
   using U = std::make_unsigned_t<Id>;
   U bad = 0;
@@ -28,6 +28,19 @@ SL_VECTOR_CLONES bool anyDecrease(const Id* offsets, vtkIdType begin, vtkIdType 
     bad |= offsets[c] < offsets[c - 1] ? ~U(0) : U(0);
   }
   return bad != 0;
+}
+
+template <typename Id>
+SL_TARGET_AVX2 bool anyDecreaseAVX2(const Id* offsets, vtkIdType begin, vtkIdType end)
+{
+  return anyDecreaseLoop(offsets, begin, end);
+}
+
+/// anyDecreaseLoop() in its AVX2 version where the CPU has it (64-bit compares).
+template <typename Id>
+bool anyDecrease(const Id* offsets, vtkIdType begin, vtkIdType end)
+{
+  return slHasAVX2() ? anyDecreaseAVX2(offsets, begin, end) : anyDecreaseLoop(offsets, begin, end);
 }
 
 /// The problem with one cell array whose ids are of type Id, or "".

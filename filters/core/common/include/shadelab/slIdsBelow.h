@@ -14,8 +14,7 @@
 #include <type_traits>
 
 /// Whether the @p n ids at @p ids all lie in [0, @p limit); inline, for a
-/// few ids at a time in a hot loop (slIdsBelow() is a call through the
-/// clone dispatch, which cannot be inlined).
+/// few ids at a time in a hot loop (slIdsBelow() first picks a version).
 ///
 /// Each id is compared once, as unsigned: a negative id is then a huge one.
 /// A limit beyond the ids' range (more points than 32-bit ids can name)
@@ -23,7 +22,7 @@
 /// result of each compare, a mask, is or-ed into an integer of the ids'
 /// width: GCC vectorises that (-O3), where it does not vectorise a bool |=.
 template <typename Id>
-inline bool slIdsBelowInline(const Id* ids, int64_t n, int64_t limit)
+SL_ALWAYS_INLINE bool slIdsBelowInline(const Id* ids, int64_t n, int64_t limit)
 {
   using U = std::make_unsigned_t<Id>;
   constexpr auto largest = static_cast<uint64_t>(std::numeric_limits<Id>::max());
@@ -38,12 +37,20 @@ inline bool slIdsBelowInline(const Id* ids, int64_t n, int64_t limit)
   return bad == 0;
 }
 
-/// slIdsBelowInline() for long runs of ids: cloned for AVX2, since SSE2 has
-/// no 64-bit compare and its version of 64-bit ids runs one id at a time.
+/// slIdsBelowInline() compiled for AVX2 (see slIdsBelow()).
 template <typename Id>
-SL_VECTOR_CLONES bool slIdsBelow(const Id* ids, int64_t n, int64_t limit)
+SL_TARGET_AVX2 bool slIdsBelowAVX2(const Id* ids, int64_t n, int64_t limit)
 {
   return slIdsBelowInline(ids, n, limit);
+}
+
+/// slIdsBelowInline() for long runs of ids: in its AVX2 version where the
+/// CPU has it, since SSE2 has no 64-bit compare and its version of 64-bit
+/// ids runs one id at a time.
+template <typename Id>
+bool slIdsBelow(const Id* ids, int64_t n, int64_t limit)
+{
+  return slHasAVX2() ? slIdsBelowAVX2(ids, n, limit) : slIdsBelowInline(ids, n, limit);
 }
 
 #endif

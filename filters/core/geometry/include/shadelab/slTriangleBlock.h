@@ -16,9 +16,9 @@
  *
  * The loop vectorises only with -fno-math-errno and -fno-trapping-math, which
  * the module's CMakeLists.txt sets: they let sqrt and division run on vectors
- * and change no result. With GCC on x86-64 ELF, weigh() is also compiled for
- * AVX2 and picked at load time on CPUs that have it. FMA is not enabled, so
- * both versions round alike and give the same weights.
+ * and change no result. On x86-64, weigh()'s loop is also compiled for AVX2
+ * and picked at run time on CPUs that have it (slVectorClones.h). FMA is not
+ * enabled, so both versions round alike and give the same weights.
  *
  * A block holds consecutive triangles of the connectivity only (triangle i
  * starts at start + 3 i), so it stores no per-triangle position. That is also
@@ -97,8 +97,29 @@ struct TriangleBlock
 
   /// Newell vectors and the weights of @p W (see slCornerWeights.h) of the
   /// count triangles; a degenerate triangle (zero Newell vector) weighs 0.
+  /// In the loop's AVX2 version where the CPU has it.
   template <Weighting W>
-  SL_VECTOR_CLONES void weigh()
+  void weigh()
+  {
+    if (slHasAVX2())
+    {
+      this->weighAVX2<W>();
+    }
+    else
+    {
+      this->weighLoop<W>();
+    }
+  }
+
+  template <Weighting W>
+  SL_TARGET_AVX2 void weighAVX2()
+  {
+    this->weighLoop<W>();
+  }
+
+  /// weigh()'s loop, compiled into each version.
+  template <Weighting W>
+  SL_ALWAYS_INLINE void weighLoop()
   {
     for (int i = 0; i < this->count; ++i)
     {
