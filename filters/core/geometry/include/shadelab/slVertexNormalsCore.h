@@ -36,6 +36,7 @@
  */
 
 #include "shadelab/slIdsBelow.h"
+#include "shadelab/slVectorClones.h"
 #include "slCornerWeights.h"
 #include "slFaceNormalsCore.h"
 #include "slNormalsParallel.h"
@@ -45,6 +46,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <type_traits>
@@ -320,6 +322,76 @@ Partition partition(const Polygons<Id>& polys, const AccId* accIds, int64_t numE
   return p;
 }
 
+/// @p o (3 floats) = (x, y, z) / |(x, y, z)|; a zero sum stays zero.
+/// Selects, not branches, so that the loops below vectorise.
+template <typename T>
+SL_ALWAYS_INLINE void storeUnit(T x, T y, T z, float* o)
+{
+  const T len = std::sqrt(x * x + y * y + z * z);
+  const T divisor = len > T(0) ? len : T(1);
+  o[0] = static_cast<float>(x / divisor);
+  o[1] = static_cast<float>(y / divisor);
+  o[2] = static_cast<float>(z / divisor);
+}
+
+/// Entries [lo, hi) of @p sums, normalised into @p out (which they do not
+/// overlap).
+template <typename T>
+SL_ALWAYS_INLINE void normaliseInto(const T* __restrict sums, float* __restrict out, int64_t lo, int64_t hi)
+{
+  for (int64_t v = lo; v < hi; ++v)
+  {
+    storeUnit(sums[3 * v], sums[3 * v + 1], sums[3 * v + 2], out + 3 * v);
+  }
+}
+
+/// Entries [lo, hi) of float @p sums normalised in place: one pointer, so
+/// that the compiler sees each entry read before it is written and
+/// vectorises without a run-time overlap test (which in place would fail).
+SL_ALWAYS_INLINE void normaliseInPlace(float* sums, int64_t lo, int64_t hi)
+{
+  for (int64_t v = lo; v < hi; ++v)
+  {
+    storeUnit(sums[3 * v], sums[3 * v + 1], sums[3 * v + 2], sums + 3 * v);
+  }
+}
+
+/// Entries [lo, hi) of @p sums normalised into @p out, which is either
+/// @p sums itself (float sums) or an array apart from it.
+template <typename T>
+SL_ALWAYS_INLINE void normaliseLoop(const T* sums, float* out, int64_t lo, int64_t hi)
+{
+  if (static_cast<const void*>(sums) == out)
+  {
+    normaliseInPlace(out, lo, hi);
+  }
+  else
+  {
+    normaliseInto(sums, out, lo, hi);
+  }
+}
+
+template <typename T>
+SL_TARGET_AVX2 void normaliseSumsAVX2(const T* sums, float* out, int64_t lo, int64_t hi)
+{
+  normaliseLoop(sums, out, lo, hi);
+}
+
+/// normaliseLoop(), with 8 square roots and divisions at once where the
+/// CPU has AVX2.
+template <typename T>
+void normaliseSums(const T* sums, float* out, int64_t lo, int64_t hi)
+{
+  if (slHasAVX2())
+  {
+    normaliseSumsAVX2(sums, out, lo, hi);
+  }
+  else
+  {
+    normaliseLoop(sums, out, lo, hi);
+  }
+}
+
 /// Where the sums go: the float output itself when the points are float,
 /// else a scratch array of T (null: allocate one).
 template <typename T>
@@ -427,28 +499,18 @@ template <typename T, typename Id, typename AccId>
   {
     return false;
   }
-  const auto normalise = [&](int64_t v) {
-    glm::vec<3, T> s(acc[3 * v], acc[3 * v + 1], acc[3 * v + 2]);
-    for (int64_t k = 1; copies && k < chunks; ++k)
-    {
-      const T* c = copy[static_cast<size_t>(k)].get() + 3 * v;
-      s += glm::vec<3, T>(c[0], c[1], c[2]);
-    }
-    const T len = glm::length(s);
-    if (len > T(0))
-    {
-      s /= len;
-    }
-    out[3 * v] = static_cast<float>(s.x);
-    out[3 * v + 1] = static_cast<float>(s.y);
-    out[3 * v + 2] = static_cast<float>(s.z);
-  };
   if (copies)
   {
     parallel.forRange(0, numEntries, 16384, [&](int64_t b, int64_t e) {
       for (int64_t v = b; v < e; ++v)
       {
-        normalise(v);
+        glm::vec<3, T> s(acc[3 * v], acc[3 * v + 1], acc[3 * v + 2]);
+        for (int64_t k = 1; k < chunks; ++k)
+        {
+          const T* c = copy[static_cast<size_t>(k)].get() + 3 * v;
+          s += glm::vec<3, T>(c[0], c[1], c[2]);
+        }
+        detail::storeUnit(s.x, s.y, s.z, out + 3 * v);
       }
     });
     return true;
@@ -475,10 +537,7 @@ template <typename T, typename Id, typename AccId>
         }
         std::vector<detail::Kept<T>>().swap(kept[static_cast<size_t>(k * chunks + j)]);
       }
-      for (int64_t v = lo; v < hi; ++v)
-      {
-        normalise(v);
-      }
+      detail::normaliseSums(acc, out, lo, hi);
     }
   });
   return true;
