@@ -16,6 +16,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -328,6 +329,13 @@ TEST(GeometryCore, InwardSurfaceIsTurnedOutInACopyOfThePolygons)
 
 TEST(GeometryCore, IdsBelowTakesNegativeIdsForHugeOnesWhateverTheLimit)
 {
+  // Both versions of the loop: the baseline one (inlined here) and, where the
+  // CPU has it, the AVX2 one that slIdsBelow() picks; a CPU picks only one.
+  const auto slIdsBelow = [](const auto* ids, int64_t n, int64_t limit) {
+    const bool baseline = slIdsBelowInline(ids, n, limit);
+    EXPECT_TRUE(!slHasAVX2() || slIdsBelowAVX2(ids, n, limit) == baseline) << n << " ids below " << limit;
+    return baseline;
+  };
   // Long enough for the vectorised loop and its remainder; one bad id at a time.
   for (const int64_t limit : { int64_t(0), int64_t(7), (int64_t(1) << 31) - 1, int64_t(1) << 31, int64_t(1) << 33 })
   {
@@ -347,4 +355,68 @@ TEST(GeometryCore, IdsBelowTakesNegativeIdsForHugeOnesWhateverTheLimit)
     wide[36] = limit - 1;
     EXPECT_EQ(slIdsBelow(wide.data(), 37, limit), limit > 0) << limit;
   }
+}
+
+TEST(GeometryCore, AVX2AndBaselineLoopsGiveTheSameBits)
+{
+  if (!slHasAVX2())
+  {
+    GTEST_SKIP() << "this CPU runs the baseline loops only";
+  }
+  // Triangles of every shape, degenerate ones included; no FMA in either
+  // version, so the weights and unit vectors must agree to the bit.
+  slnormals::TriangleBlock<float> baseline, avx2;
+  uint32_t state = 12345;
+  const auto next = [&state]() {
+    state = state * 1664525u + 1013904223u;
+    return static_cast<float>(state >> 8) / 16777216.0f - 0.5f;
+  };
+  baseline.count = slnormals::TriangleBlock<float>::Capacity;
+  for (int i = 0; i < baseline.count; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      baseline.x[k][i] = next();
+      baseline.y[k][i] = i % 7 == 0 ? 0.0f : next();
+      baseline.z[k][i] = i % 11 == 0 ? baseline.z[0][i] : next();
+    }
+  }
+  baseline.x[1][5] = baseline.x[0][5]; // a triangle with two equal points
+  baseline.y[1][5] = baseline.y[0][5];
+  baseline.z[1][5] = baseline.z[0][5];
+  const auto same = [](const float* a, const float* b, int n) {
+    for (int i = 0; i < n; ++i)
+    {
+      if (std::memcmp(a + i, b + i, sizeof(float)) != 0)
+      {
+        return ::testing::AssertionFailure() << "value " << i << ": " << a[i] << " against " << b[i];
+      }
+    }
+    return ::testing::AssertionSuccess();
+  };
+  avx2 = baseline;
+  baseline.weighLoop<Weighting::Angle>();
+  avx2.weighAVX2<Weighting::Angle>();
+  EXPECT_TRUE(same(&baseline.cornerX[0][0], &avx2.cornerX[0][0], 3 * baseline.Capacity));
+  EXPECT_TRUE(same(&baseline.cornerY[0][0], &avx2.cornerY[0][0], 3 * baseline.Capacity));
+  EXPECT_TRUE(same(&baseline.cornerZ[0][0], &avx2.cornerZ[0][0], 3 * baseline.Capacity));
+  EXPECT_EQ(baseline.cornerX[0][5], 0.0f); // the degenerate triangle weighs 0
+
+  // Normalising, in place and apart, a zero sum among them.
+  std::vector<float> sums(3 * 37);
+  for (float& v : sums)
+  {
+    v = next();
+  }
+  sums[30] = sums[31] = sums[32] = 0.0f;
+  std::vector<float> inPlace = sums, inPlaceAVX2 = sums, apart(sums.size()), apartAVX2(sums.size());
+  slnormals::detail::normaliseLoop(inPlace.data(), inPlace.data(), 0, 37);
+  slnormals::detail::normaliseSumsAVX2(inPlaceAVX2.data(), inPlaceAVX2.data(), 0, 37);
+  slnormals::detail::normaliseLoop(sums.data(), apart.data(), 0, 37);
+  slnormals::detail::normaliseSumsAVX2(sums.data(), apartAVX2.data(), 0, 37);
+  EXPECT_TRUE(same(inPlace.data(), inPlaceAVX2.data(), 3 * 37));
+  EXPECT_TRUE(same(apart.data(), apartAVX2.data(), 3 * 37));
+  EXPECT_TRUE(same(inPlace.data(), apart.data(), 3 * 37));
+  EXPECT_EQ(apart[31], 0.0f);
+  EXPECT_NEAR(std::sqrt(apart[0] * apart[0] + apart[1] * apart[1] + apart[2] * apart[2]), 1.0f, 1e-6f);
 }

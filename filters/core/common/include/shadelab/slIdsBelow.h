@@ -3,8 +3,9 @@
 /**
  * @file slIdsBelow.h
  * @brief slIdsBelow() and slIdsBelowInline(): whether point ids lie in
- * [0, limit), in a loop the compiler vectorises. The one test of an id against a mesh's points, used
- * by the connectivity check and by the normals' scatter. C++ only.
+ * [0, limit), in a loop the compiler vectorises. The one test of an id
+ * against a mesh's points, used by the connectivity check and by the
+ * normals' scatter. C++ only.
  */
 
 #include "shadelab/slVectorClones.h"

@@ -111,6 +111,7 @@ struct TriangleBlock
     }
   }
 
+  /// weigh() in its AVX2 version (the CPU must have AVX2).
   template <Weighting W>
   SL_TARGET_AVX2 void weighAVX2()
   {

@@ -361,14 +361,15 @@ SL_ALWAYS_INLINE void normaliseInPlace(float* sums, int64_t lo, int64_t hi)
 template <typename T>
 SL_ALWAYS_INLINE void normaliseLoop(const T* sums, float* out, int64_t lo, int64_t hi)
 {
-  if (static_cast<const void*>(sums) == out)
+  if constexpr (std::is_same<T, float>::value)
   {
-    normaliseInPlace(out, lo, hi);
+    if (sums == out)
+    {
+      normaliseInPlace(out, lo, hi);
+      return;
+    }
   }
-  else
-  {
-    normaliseInto(sums, out, lo, hi);
-  }
+  normaliseInto(sums, out, lo, hi);
 }
 
 template <typename T>
