@@ -8,9 +8,9 @@
  * For loops that the compiler vectorises well only with AVX2: corner
  * weights of triangle blocks (slTriangleBlock.h), and passes over 64-bit
  * point ids, since SSE2 has no 64-bit integer compare. The loop is written
- * once, in a function marked SL_ALWAYS_INLINE; a second function marked
- * SL_TARGET_AVX2 only calls it, so that the loop is compiled into it for
- * AVX2; the caller picks one with slHasAVX2():
+ * once, in a function marked SL_ALWAYS_INLINE (slCompilerHints.h); a
+ * second function marked SL_TARGET_AVX2 only calls it, so that the loop is
+ * compiled into it for AVX2; the caller picks one with slHasAVX2():
  *
  * @code
  * SL_ALWAYS_INLINE bool loop(...) { ... }
@@ -26,9 +26,10 @@
  * baseline version is all there is.
  */
 
+#include "shadelab/slCompilerHints.h"
+
 #if (defined(__GNUC__) || defined(__clang__)) && defined(__x86_64__)
 #define SL_TARGET_AVX2 __attribute__((target("avx2")))
-#define SL_ALWAYS_INLINE inline __attribute__((always_inline))
 
 /// Whether the CPU running the program has AVX2 (asked once).
 inline bool slHasAVX2()
@@ -38,7 +39,6 @@ inline bool slHasAVX2()
 }
 #else
 #define SL_TARGET_AVX2
-#define SL_ALWAYS_INLINE inline
 
 inline bool slHasAVX2()
 {

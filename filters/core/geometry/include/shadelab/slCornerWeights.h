@@ -34,22 +34,22 @@ enum class Weighting : int
 };
 
 /// atan(t) for t in [0, 1]: an odd minimax polynomial of degree 15,
-/// |error| <= 3.8e-8 rad (fitted in double; in float, rounding (about 1e-7) dominates).
+/// |error| <= 3.8e-8 rad (fitted in double; in float, rounding (about 1e-7)
+/// dominates). Evaluated in Estrin's scheme, t (c0 + c1 t^2 + ...) as
+/// pairs combined by t^4 and t^8: a chain of 5 dependent multiply-adds
+/// instead of Horner's 8, so that a vectorised loop over many corners is
+/// not held up by one corner's chain.
 template <typename T>
 inline T atanUnit(T t)
 {
   const T t2 = t * t;
-  return t *
-    (T(0.9999993355789613) +
-      t2 *
-        (T(-0.3332986078429252) +
-          t2 *
-            (T(0.1994656563634464) +
-              t2 *
-                (T(-0.13908629429161432) +
-                  t2 *
-                    (T(0.09642196935391509) +
-                      t2 * (T(-0.055912320537255436) + t2 * (T(0.02186295306984301) + t2 * T(-0.004054565772727919))))))));
+  const T t4 = t2 * t2;
+  const T t8 = t4 * t4;
+  const T c01 = T(0.9999993355789613) + t2 * T(-0.3332986078429252);
+  const T c23 = T(0.1994656563634464) + t2 * T(-0.13908629429161432);
+  const T c45 = T(0.09642196935391509) + t2 * T(-0.055912320537255436);
+  const T c67 = T(0.02186295306984301) + t2 * T(-0.004054565772727919);
+  return t * ((c01 + t4 * c23) + t8 * (c45 + t4 * c67));
 }
 
 /// The angle in [0, pi] between two vectors from the length of their cross
@@ -58,7 +58,8 @@ inline T atanUnit(T t)
 /// square root per corner (a triangle's three corners share |e1 x e2|, twice
 /// its area) and stays accurate near 0 and pi, where acos loses digits.
 /// Selects only, no branch, so that loops over it vectorise. |error| <= 4e-8
-/// rad in double, <= 3.2e-7 rad in float, against std::atan2.
+/// rad in double, <= 4e-7 rad in float, against std::atan2
+/// (GeometryCore.CornerAngleIsAtan2WithinItsDocumentedError).
 template <typename T>
 inline T cornerAngle(T crossLength, T dot)
 {

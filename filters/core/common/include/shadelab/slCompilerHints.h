@@ -1,0 +1,27 @@
+#ifndef slCompilerHints_h
+#define slCompilerHints_h
+/**
+ * @file slCompilerHints.h
+ * @brief Inlining and branch hints for the hot loops of the geometry core.
+ * C++ only; on compilers other than GCC and Clang each hint is a no-op.
+ *
+ * - SL_ALWAYS_INLINE: the function's body is compiled into each caller, so
+ *   that a caller marked SL_TARGET_AVX2 (slVectorClones.h) compiles it for
+ *   AVX2.
+ * - SL_NOINLINE: kept out of its callers, for a rare path whose code would
+ *   otherwise take registers from a hot loop.
+ * - SL_LIKELY(condition): the condition is almost always true; the compiler
+ *   lays out its branch as the straight path.
+ */
+
+#if defined(__GNUC__) || defined(__clang__)
+#define SL_ALWAYS_INLINE inline __attribute__((always_inline))
+#define SL_NOINLINE __attribute__((noinline))
+#define SL_LIKELY(condition) __builtin_expect(static_cast<bool>(condition), 1)
+#else
+#define SL_ALWAYS_INLINE inline
+#define SL_NOINLINE
+#define SL_LIKELY(condition) (condition)
+#endif
+
+#endif
