@@ -3,8 +3,6 @@
 #include <fstream>
 #include <malloc.h>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace
 {
@@ -25,30 +23,13 @@ long long statusField(const std::string& name)
 
 long long slPeakMemoryAbove(const std::function<void()>& job)
 {
-  int fds[2];
-  if (pipe(fds) != 0)
+  malloc_trim(0);
+  if (!(std::ofstream("/proc/self/clear_refs") << "5")) // resets VmHWM to VmRSS
   {
     return -1;
   }
-  const pid_t pid = fork();
-  if (pid == 0)
-  {
-    close(fds[0]);
-    malloc_trim(0); // memory freed earlier must not be reused unseen
-    std::ofstream("/proc/self/clear_refs") << "5"; // resets VmHWM to VmRSS
-    const long long before = statusField("VmRSS");
-    job();
-    const long long peak = statusField("VmHWM") - before;
-    (void)!write(fds[1], &peak, sizeof(peak));
-    _exit(0);
-  }
-  close(fds[1]);
-  long long peak = -1;
-  if (read(fds[0], &peak, sizeof(peak)) != sizeof(peak))
-  {
-    peak = -1;
-  }
-  close(fds[0]);
-  waitpid(pid, nullptr, 0);
-  return peak;
+  const long long before = statusField("VmRSS");
+  job();
+  const long long peak = statusField("VmHWM");
+  return before < 0 || peak < 0 ? -1 : peak - before;
 }
