@@ -479,3 +479,44 @@ TEST(Normals, PointsThatAreNotOneSmoothClosedFanTakeTheGeneralGrouping)
   ASSERT_EQ(apexZ.size(), 2u);
   EXPECT_NEAR(apexZ[0] + apexZ[1], 0.0, 1e-6);
 }
+
+TEST(Normals, AFilterRunAgainOnAnotherMeshGivesWhatANewFilterGives)
+{
+  // The filter keeps its scratch memory between updates: the second mesh
+  // (same size, other shape, splits at most points) gets the memory the
+  // first one wrote, and must not see what is in it.
+  auto first = normalstest::irregularTorus(1.0, 0.3, 300, 150, 1);
+  auto second = normalstest::irregularTorus(1.0, 0.3, 300, 150, 2);
+  vtkNew<slPolyDataNormals> reused, fresh;
+  reused->SetFeatureAngle(1.0);
+  fresh->SetFeatureAngle(1.0);
+  reused->SetInputData(first);
+  reused->Update();
+  reused->SetInputData(second);
+  reused->Update();
+  fresh->SetInputData(second);
+  fresh->Update();
+  vtkPolyData* a = reused->GetOutput();
+  vtkPolyData* b = fresh->GetOutput();
+  ASSERT_GT(b->GetNumberOfPoints(), 2 * second->GetNumberOfPoints()); // split at most points
+  ASSERT_EQ(a->GetNumberOfPoints(), b->GetNumberOfPoints());
+  ASSERT_EQ(a->GetPolys()->GetNumberOfConnectivityIds(), b->GetPolys()->GetNumberOfConnectivityIds());
+  auto sameValues = [](vtkDataArray* x, vtkDataArray* y) {
+    const vtkIdType n = x->GetNumberOfValues();
+    if (n != y->GetNumberOfValues())
+    {
+      return false;
+    }
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      if (x->GetVariantValue(i) != y->GetVariantValue(i))
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+  EXPECT_TRUE(sameValues(a->GetPointData()->GetNormals(), b->GetPointData()->GetNormals()));
+  EXPECT_TRUE(sameValues(a->GetPoints()->GetData(), b->GetPoints()->GetData()));
+  EXPECT_TRUE(sameValues(a->GetPolys()->GetConnectivityArray(), b->GetPolys()->GetConnectivityArray()));
+}

@@ -144,9 +144,10 @@ void setSplitPoints(vtkPolyData* input, vtkPolyData* output, const T* xyz, const
 /// the VTK side of the filter. Returns the number of polygons reversed.
 template <typename T, typename Id>
 int64_t computeInto(const slnormals::PolygonNormalsSettings& settings, bool cellNormals, vtkPolyData* input,
-  vtkPolyData* output, const T* xyz)
+  vtkPolyData* output, const T* xyz, shadelab::ScratchPool* scratch)
 {
-  const slnormals::Parallel par = slSMPParallel();
+  slnormals::Parallel par = slSMPParallel();
+  par.scratch = scratch;
   const int64_t numPoints = input->GetNumberOfPoints();
   vtkCellArray* strips = input->GetStrips();
   slOwnedPolygons<Id> owned;
@@ -226,7 +227,11 @@ int64_t computeInto(const slnormals::PolygonNormalsSettings& settings, bool cell
 }
 } // namespace
 
-slPolyDataNormals::slPolyDataNormals() = default;
+slPolyDataNormals::slPolyDataNormals()
+  : Scratch(std::make_unique<shadelab::ScratchPool>())
+{
+}
+
 slPolyDataNormals::~slPolyDataNormals() = default;
 
 const char* slPolyDataNormals::GetWeightingName(int weighting)
@@ -303,11 +308,12 @@ int slPolyDataNormals::RequestData(vtkInformation*, vtkInformationVector** input
       using Id = decltype(id);
       if (auto* f = vtkFloatArray::SafeDownCast(data))
       {
-        flipped = computeInto<float, Id>(s, cellNormals, input, output, f->GetPointer(0));
+        flipped = computeInto<float, Id>(s, cellNormals, input, output, f->GetPointer(0), this->Scratch.get());
       }
       else
       {
-        flipped = computeInto<double, Id>(s, cellNormals, input, output, vtkDoubleArray::SafeDownCast(data)->GetPointer(0));
+        flipped = computeInto<double, Id>(
+          s, cellNormals, input, output, vtkDoubleArray::SafeDownCast(data)->GetPointer(0), this->Scratch.get());
       }
       return 0;
     });
@@ -341,4 +347,5 @@ void slPolyDataNormals::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ComputePointNormals: " << this->ComputePointNormals << "\n";
   os << indent << "ComputeCellNormals: " << this->ComputeCellNormals << "\n";
   os << indent << "NumberOfFlippedPolygons: " << this->NumberOfFlippedPolygons << "\n";
+  os << indent << "Scratch memory kept: " << this->Scratch->keptBytes() << " bytes\n";
 }

@@ -37,7 +37,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <memory>
 #include <numeric>
 #include <utility>
 #include <vector>
@@ -283,7 +282,7 @@ int64_t splitVertexNormals(const Polygons<Id>& topology, const Id* original, con
 {
   using V = glm::vec<3, T>;
   // Scratch arrays below are filled completely by parallel passes: no zero-fill.
-  const std::unique_ptr<T[]> unit = uninitialisedArray<T>(static_cast<size_t>(3 * topology.numPolygons));
+  const ScratchArray<T> unit(parallel, static_cast<size_t>(3 * topology.numPolygons));
   parallel.forRange(0, topology.numPolygons, 8192, [&](int64_t b, int64_t e) {
     for (int64_t f = b; f < e; ++f)
     {
@@ -295,8 +294,8 @@ int64_t splitVertexNormals(const Polygons<Id>& topology, const Id* original, con
     }
   });
   constexpr uint16_t recompute = 0xFFFF;
-  std::unique_ptr<uint16_t[]> stored = uninitialisedArray<uint16_t>(original ? 0 : vc.corners.size());
-  const std::unique_ptr<int64_t[]> base = uninitialisedArray<int64_t>(static_cast<size_t>(numPoints + 1));
+  ScratchArray<uint16_t> stored(parallel, original ? 0 : vc.corners.size());
+  const ScratchArray<int64_t> base(parallel, static_cast<size_t>(numPoints + 1));
   base[0] = 0;
   std::atomic<bool> overflow{ false }, wrongWay{ false };
   parallel.forRange(0, numPoints, 4096, [&](int64_t b, int64_t e) {
@@ -305,7 +304,7 @@ int64_t splitVertexNormals(const Polygons<Id>& topology, const Id* original, con
     bool overflows = false, inconsistentHere = false;
     for (int64_t v = b; v < e && !inconsistentHere; ++v)
     {
-      const int slots = detail::groupCorners(topology, original, unit.get(), vc, v, cosFeature, s);
+      const int slots = detail::groupCorners(topology, original, unit.data(), vc, v, cosFeature, s);
       base[static_cast<size_t>(v + 1)] = slots;
       inconsistentHere = inconsistent && !s.fan && detail::hasRepeat(s.next.data(), static_cast<int>(s.next.size()));
       if (!original)
@@ -373,7 +372,7 @@ int64_t splitVertexNormals(const Polygons<Id>& topology, const Id* original, con
       {
         continue;
       }
-      detail::groupCorners(topology, original, unit.get(), vc, v, cosFeature, s);
+      detail::groupCorners(topology, original, unit.data(), vc, v, cosFeature, s);
       s.sums.assign(static_cast<size_t>(k), V(0));
       const V p = point(xyz, v);
       for (int i = 0; i < k; ++i)

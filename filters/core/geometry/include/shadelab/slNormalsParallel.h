@@ -9,18 +9,25 @@
  * slOrientationCore.h and slFeatureSplitCore.h take no VTK type: polygons are
  * offsets + connectivity (VTK 9's own layout, 32- or 64-bit ids), points are
  * packed xyz of float or double, and parallel loops go through slParallel,
- * which the VTK wrappers fill in with vtkSMPTools.
+ * which the VTK wrappers fill in with vtkSMPTools. Scratch arrays come from
+ * the pool a Parallel names (ScratchArray), so a filter that runs again
+ * reuses its memory.
  */
+
+#include "shadelab/ScratchPool.h"
 
 #include <cstdint>
 #include <functional>
-#include <memory>
+#include <new>
+#include <type_traits>
+#include <utility>
 
 namespace slnormals
 {
 
 /// A parallel "for" over [begin, end): calls body(b, e) on sub-ranges,
-/// possibly concurrently. The default runs serially.
+/// possibly concurrently. The default runs serially. @p scratch, when set,
+/// is where the algorithms take their scratch arrays (see ScratchArray).
 struct Parallel
 {
   using Body = std::function<void(int64_t, int64_t)>;
@@ -32,16 +39,80 @@ struct Parallel
         body(begin, end);
       }
     };
+  shadelab::ScratchPool* scratch = nullptr;
 };
 
-/// An array of @p n values left uninitialised, for scratch arrays that a
-/// parallel pass overwrites completely: std::vector would first zero-fill
-/// them serially (and take the page faults on one thread).
+/// A scratch array of values left uninitialised, for passes that overwrite
+/// it completely (std::vector would first zero-fill it serially, and take
+/// the page faults on one thread). Its memory comes from the pool of the
+/// Parallel it is made with, and goes back there, or from the heap when
+/// there is no pool. Owns its memory: movable, not copyable.
 template <typename T>
-std::unique_ptr<T[]> uninitialisedArray(size_t n)
+class ScratchArray
 {
-  return std::unique_ptr<T[]>(new T[n]);
-}
+  static_assert(std::is_trivially_copyable<T>::value && std::is_trivially_destructible<T>::value,
+    "scratch values are neither constructed nor destroyed");
+
+public:
+  ScratchArray() = default;
+  /// @p n values from @p parallel's pool. Throws std::bad_alloc.
+  ScratchArray(const Parallel& parallel, size_t n)
+    : Pool(parallel.scratch)
+    , Size(n)
+  {
+    if (n && this->Pool)
+    {
+      this->Memory = this->Pool->acquire(n * sizeof(T));
+    }
+    else if (n)
+    {
+      this->Memory = { ::operator new(n * sizeof(T)), n * sizeof(T) };
+    }
+  }
+  ScratchArray(ScratchArray&& other) noexcept { this->swap(other); }
+  ScratchArray& operator=(ScratchArray&& other) noexcept
+  {
+    ScratchArray(std::move(other)).swap(*this);
+    return *this;
+  }
+  ScratchArray(const ScratchArray&) = delete;
+  ScratchArray& operator=(const ScratchArray&) = delete;
+  ~ScratchArray() { this->reset(); }
+
+  /// Gives the memory back; the array is then empty.
+  void reset() noexcept
+  {
+    if (this->Pool)
+    {
+      this->Pool->release(this->Memory);
+    }
+    else
+    {
+      ::operator delete(this->Memory.data);
+    }
+    this->Memory = {};
+    this->Size = 0;
+  }
+
+  T* data() const { return static_cast<T*>(this->Memory.data); }
+  size_t size() const { return this->Size; }
+  bool empty() const { return this->Size == 0; }
+  T& operator[](size_t i) const { return this->data()[i]; }
+  T* begin() const { return this->data(); }
+  T* end() const { return this->data() + this->Size; }
+
+private:
+  void swap(ScratchArray& other) noexcept
+  {
+    std::swap(this->Pool, other.Pool);
+    std::swap(this->Memory, other.Memory);
+    std::swap(this->Size, other.Size);
+  }
+
+  shadelab::ScratchPool* Pool = nullptr;
+  shadelab::ScratchPool::Block Memory;
+  size_t Size = 0;
+};
 
 /// Polygons as VTK 9 stores them: polygon f has the point ids
 /// connectivity[offsets[f]] .. connectivity[offsets[f+1]-1].

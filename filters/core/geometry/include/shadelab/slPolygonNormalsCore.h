@@ -80,7 +80,7 @@ struct PolygonNormals
   /// With splitting: output point -> input point (split points first,
   /// then the points no polygon uses), and input point -> first output
   /// point made from it. Empty without splitting (output point = input point).
-  std::vector<int64_t> source, pointMap;
+  ScratchArray<int64_t> source, pointMap;
   /// With splitting: the split connectivity given by allocateSplitConnectivity.
   int32_t* splitConnectivity = nullptr;
 };
@@ -194,14 +194,15 @@ void computePolygonNormals(const PolygonNormalsSettings& s, Polygons<Id> polys, 
       // Points used by no polygon are kept after the split ones, with (0,0,0).
       // Counted on the polygons as given: with welding, a seam duplicate has no
       // corners in the welded topology, yet the split emits it as a point.
-      std::vector<char> used(static_cast<size_t>(numPoints), 0);
+      ScratchArray<char> used(par, static_cast<size_t>(numPoints));
+      std::fill(used.begin(), used.end(), char(0));
       for (int64_t c = 0; c < numCorners; ++c)
       {
         used[static_cast<size_t>(polys.connectivity[c])] = 1;
       }
       unused = std::count(used.begin(), used.end(), 0);
       normals = result.allocateNormals(splitPoints + unused);
-      result.source.resize(static_cast<size_t>(splitPoints + unused));
+      result.source = ScratchArray<int64_t>(par, static_cast<size_t>(splitPoints + unused));
       SplitOutput out;
       out.normals = normals;
       out.source = result.source.data();
@@ -225,7 +226,8 @@ void computePolygonNormals(const PolygonNormalsSettings& s, Polygons<Id> polys, 
       split = splitOnce(false);
     }
 
-    result.pointMap.assign(static_cast<size_t>(numPoints), -1);
+    result.pointMap = ScratchArray<int64_t>(par, static_cast<size_t>(numPoints));
+    std::fill(result.pointMap.begin(), result.pointMap.end(), int64_t(-1));
     for (int64_t i = split - 1; i >= 0; --i)
     {
       result.pointMap[static_cast<size_t>(result.source[static_cast<size_t>(i)])] = i;

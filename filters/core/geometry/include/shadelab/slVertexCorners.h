@@ -22,9 +22,9 @@ namespace slnormals
 template <typename Id>
 struct VertexCorners
 {
-  std::vector<int32_t> offsets;    ///< numPoints + 1
-  std::vector<int32_t> corners;    ///< connectivity positions, grouped by point
-  std::vector<int32_t> cornerFace; ///< polygon of each position (empty if all triangles)
+  ScratchArray<int32_t> offsets;    ///< numPoints + 1
+  ScratchArray<int32_t> corners;    ///< connectivity positions, grouped by point
+  ScratchArray<int32_t> cornerFace; ///< polygon of each position (empty if all triangles)
   bool allTriangles = false;
 
   int64_t faceOf(int64_t corner) const
@@ -62,7 +62,7 @@ struct VertexCorners
     this->allTriangles = numCorners == 3 * polys.numPolygons && allOfSize3(polys, parallel);
     if (!this->allTriangles)
     {
-      this->cornerFace.resize(static_cast<size_t>(numCorners));
+      this->cornerFace = ScratchArray<int32_t>(parallel, static_cast<size_t>(numCorners));
       parallel.forRange(0, polys.numPolygons, 8192, [&](int64_t b, int64_t e) {
         for (int64_t f = b; f < e; ++f)
         {
@@ -75,19 +75,20 @@ struct VertexCorners
     }
     else
     {
-      this->cornerFace.clear();
+      this->cornerFace.reset();
     }
     const Id* conn = polys.connectivity;
     const int64_t chunks =
       numCorners < (int64_t(1) << 18) ? 1 : std::max<int64_t>(1, std::min<int64_t>(parallel.threads, 8));
     auto chunkBegin = [&](int64_t k) { return numCorners * k / chunks; };
     // cursor[k][v]: corners of chunk k at point v, then where the next one goes.
-    std::vector<std::vector<int32_t>> cursor(static_cast<size_t>(chunks));
+    std::vector<ScratchArray<int32_t>> cursor(static_cast<size_t>(chunks));
     parallel.forRange(0, chunks, 1, [&](int64_t kb, int64_t ke) {
       for (int64_t k = kb; k < ke; ++k)
       {
-        std::vector<int32_t>& count = cursor[static_cast<size_t>(k)];
-        count.assign(static_cast<size_t>(numPoints), 0);
+        ScratchArray<int32_t>& count = cursor[static_cast<size_t>(k)];
+        count = ScratchArray<int32_t>(parallel, static_cast<size_t>(numPoints));
+        std::fill(count.begin(), count.end(), 0);
         for (int64_t c = chunkBegin(k); c < chunkBegin(k + 1); ++c)
         {
           ++count[static_cast<size_t>(conn[c])];
@@ -95,7 +96,7 @@ struct VertexCorners
       }
     });
     // Offsets by a two-pass parallel prefix sum over blocks of points.
-    this->offsets.resize(static_cast<size_t>(numPoints + 1));
+    this->offsets = ScratchArray<int32_t>(parallel, static_cast<size_t>(numPoints + 1));
     const int64_t block = 65536;
     const int64_t numBlocks = (numPoints + block - 1) / block;
     std::vector<int64_t> blockStart(static_cast<size_t>(numBlocks + 1), 0);
@@ -105,7 +106,7 @@ struct VertexCorners
         int64_t sum = 0;
         for (int64_t v = i * block; v < std::min(numPoints, (i + 1) * block); ++v)
         {
-          for (const std::vector<int32_t>& count : cursor)
+          for (const ScratchArray<int32_t>& count : cursor)
           {
             sum += count[static_cast<size_t>(v)];
           }
@@ -124,7 +125,7 @@ struct VertexCorners
         for (int64_t v = i * block; v < std::min(numPoints, (i + 1) * block); ++v)
         {
           this->offsets[static_cast<size_t>(v)] = static_cast<int32_t>(next);
-          for (std::vector<int32_t>& count : cursor)
+          for (ScratchArray<int32_t>& count : cursor)
           {
             const int32_t n = count[static_cast<size_t>(v)];
             count[static_cast<size_t>(v)] = static_cast<int32_t>(next);
@@ -134,11 +135,11 @@ struct VertexCorners
       }
     });
     this->offsets[static_cast<size_t>(numPoints)] = static_cast<int32_t>(numCorners);
-    this->corners.resize(static_cast<size_t>(numCorners));
+    this->corners = ScratchArray<int32_t>(parallel, static_cast<size_t>(numCorners));
     parallel.forRange(0, chunks, 1, [&](int64_t kb, int64_t ke) {
       for (int64_t k = kb; k < ke; ++k)
       {
-        std::vector<int32_t>& next = cursor[static_cast<size_t>(k)];
+        ScratchArray<int32_t>& next = cursor[static_cast<size_t>(k)];
         for (int64_t c = chunkBegin(k); c < chunkBegin(k + 1); ++c)
         {
           this->corners[static_cast<size_t>(next[static_cast<size_t>(conn[c])]++)] = static_cast<int32_t>(c);

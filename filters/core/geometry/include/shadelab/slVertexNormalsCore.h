@@ -49,7 +49,6 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
-#include <memory>
 #include <type_traits>
 #include <vector>
 
@@ -435,18 +434,18 @@ template <typename T, typename Id, typename AccId>
   const detail::Partition part = detail::partition(polys, accIds, numEntries, parallel.threads);
   const int64_t chunks = part.chunks;
   const int64_t* bounds = part.bounds.data();
-  std::unique_ptr<T[]> scratch;
+  ScratchArray<T> scratch;
   T* acc = detail::inPlaceAccumulator<T>(out);
   if (!acc)
   {
-    scratch = uninitialisedArray<T>(static_cast<size_t>(3 * numEntries));
-    acc = scratch.get();
+    scratch = ScratchArray<T>(parallel, static_cast<size_t>(3 * numEntries));
+    acc = scratch.data();
   }
   // Random order: half or more of a chunk's corners would be kept for other
   // ranges, which cost more than they save; each chunk sums into its own
   // copy of all entries instead (chunk 0 into acc), added in chunk order.
   const bool copies = part.randomOrder && chunks > 1;
-  std::vector<std::unique_ptr<T[]>> copy(static_cast<size_t>(copies ? chunks : 0));
+  std::vector<ScratchArray<T>> copy(static_cast<size_t>(copies ? chunks : 0));
   // kept[k * chunks + j]: what chunk k keeps for range j.
   std::vector<std::vector<detail::Kept<T>>> kept(static_cast<size_t>(chunks * chunks));
   std::atomic<bool> badIds(false);
@@ -461,8 +460,8 @@ template <typename T, typename Id, typename AccId>
         hi = numEntries;
         if (k > 0)
         {
-          copy[static_cast<size_t>(k)] = uninitialisedArray<T>(static_cast<size_t>(3 * numEntries));
-          sums = copy[static_cast<size_t>(k)].get();
+          copy[static_cast<size_t>(k)] = ScratchArray<T>(parallel, static_cast<size_t>(3 * numEntries));
+          sums = copy[static_cast<size_t>(k)].data();
         }
       }
       std::fill(sums + 3 * lo, sums + 3 * hi, T(0));
@@ -520,7 +519,7 @@ template <typename T, typename Id, typename AccId>
         glm::vec<3, T> s(acc[3 * v], acc[3 * v + 1], acc[3 * v + 2]);
         for (int64_t k = 1; k < chunks; ++k)
         {
-          const T* c = copy[static_cast<size_t>(k)].get() + 3 * v;
+          const T* c = copy[static_cast<size_t>(k)].data() + 3 * v;
           s += glm::vec<3, T>(c[0], c[1], c[2]);
         }
         detail::storeUnit(s.x, s.y, s.z, out + 3 * v);

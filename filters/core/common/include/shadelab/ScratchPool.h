@@ -1,0 +1,78 @@
+#ifndef shadelab_ScratchPool_h
+#define shadelab_ScratchPool_h
+/**
+ * @file ScratchPool.h
+ * @brief Blocks of scratch memory kept from one computation for the next.
+ *
+ * A filter that runs again on a mesh of the same size asks for the same
+ * scratch arrays again. Freed to the C library, those arrays mostly go back
+ * to the kernel (glibc trims its heap once the free memory at the top
+ * exceeds its trim threshold), and the next run takes a page fault, and the
+ * clearing of a page, at every 4 KiB it writes: on the normals filter with
+ * splitting, over a quarter of its time. A pool keeps the blocks it handed
+ * out, up to a byte limit, and hands them out again.
+ *
+ * Blocks of kHugePageBytes or more come from allocateHugePages()
+ * (HugePages.h): when they are not kept, they cost one fault per 2 MiB
+ * instead of 512. Smaller blocks are rounded up to 64 KiB, so that a run on
+ * a slightly different mesh still finds them.
+ *
+ * acquire() and release() may be called from any thread. Every block must
+ * be released before the pool is destroyed.
+ */
+
+#include <cstddef>
+#include <mutex>
+#include <vector>
+
+namespace shadelab
+{
+
+class ScratchPool
+{
+public:
+  /// How many bytes a pool keeps by default.
+  static constexpr size_t kDefaultKeptBytes = size_t(64) << 20;
+
+  /// A pool that keeps at most @p keptBytes of released blocks.
+  explicit ScratchPool(size_t keptBytes = kDefaultKeptBytes);
+  ~ScratchPool();
+  ScratchPool(const ScratchPool&) = delete;
+  ScratchPool& operator=(const ScratchPool&) = delete;
+
+  /// A block of memory and its usable size.
+  struct Block
+  {
+    void* data = nullptr;
+    size_t capacity = 0;
+  };
+
+  /// At least @p bytes, 64-byte aligned, uninitialised: a kept block of
+  /// @p bytes to twice that if there is one, else a new block. Throws
+  /// std::bad_alloc.
+  Block acquire(size_t bytes);
+
+  /// Takes back a block from acquire(): kept if the kept blocks stay within
+  /// the limit, else freed.
+  void release(Block block) noexcept;
+
+  /// Frees every kept block.
+  void trim() noexcept;
+
+  /// Bytes in kept blocks.
+  size_t keptBytes() const;
+
+  /// Overwrites every kept block with @p byte, so that a test can show that
+  /// no computation reads scratch memory it has not written first.
+  void fillKept(unsigned char byte);
+
+private:
+  mutable std::mutex Mutex;
+  std::vector<Block> Kept;
+  size_t KeptTotal = 0;
+  size_t Limit;
+};
+
+} // namespace shadelab
+
+#endif
