@@ -31,15 +31,17 @@ TEST(ScratchPool, AReleasedBlockIsHandedOutAgain)
   pool.release(b);
 }
 
-TEST(ScratchPool, ABlockIsNotWastedOnARequestOfLessThanHalfItsSize)
+TEST(ScratchPool, AKeptBlockServesASmallerRequest)
 {
   ScratchPool pool;
   const ScratchPool::Block big = pool.acquire(size_t(1) << 20);
   pool.release(big);
   const ScratchPool::Block small = pool.acquire(100000);
-  EXPECT_NE(small.data, big.data);
-  EXPECT_EQ(pool.keptBytes(), big.capacity);
+  EXPECT_EQ(small.data, big.data);
+  EXPECT_EQ(small.capacity, big.capacity);
+  EXPECT_EQ(pool.keptBytes(), 0u);
   pool.release(small);
+  EXPECT_EQ(pool.keptBytes(), big.capacity);
 }
 
 TEST(ScratchPool, TheSmallestFittingBlockIsChosen)
@@ -68,7 +70,7 @@ TEST(ScratchPool, KeepsNoMoreThanItsLimit)
   pool.release(c);
 }
 
-TEST(ScratchPool, LargeBlocksLieOnHugePageBoundaries)
+TEST(ScratchPool, LargeBlocksLieOnHugePageBoundariesAndAreNotKept)
 {
   ScratchPool pool;
   const size_t huge = size_t(2) << 20;
@@ -76,10 +78,13 @@ TEST(ScratchPool, LargeBlocksLieOnHugePageBoundaries)
   EXPECT_EQ(reinterpret_cast<uintptr_t>(a.data) % huge, 0u);
   EXPECT_EQ(a.capacity, 2 * huge);
   EXPECT_EQ(reinterpret_cast<uintptr_t>(b.data) % 64, 0u);
+  EXPECT_EQ(b.capacity, size_t(64) << 10);
   std::memset(a.data, 3, a.capacity);
   std::memset(b.data, 4, b.capacity);
   pool.release(a);
+  EXPECT_EQ(pool.keptBytes(), 0u);
   pool.release(b);
+  EXPECT_EQ(pool.keptBytes(), b.capacity);
 }
 
 TEST(ScratchPool, ThreadsShareAPool)

@@ -42,10 +42,12 @@
  * A point with a NaN or infinite coordinate gives an error and an empty
  * output.
  *
- * The filter keeps up to 64 MiB of its scratch memory from one update to the
- * next (shadelab::ScratchPool), and frees it when it is deleted: run again on
- * a mesh of the same size, it writes to memory it already has instead of
- * taking a page fault every 4 KiB.
+ * The filter keeps the blocks of its scratch memory under 2 MiB, up to
+ * 64 MiB in all, from one update to the next (shadelab::ScratchPool), and
+ * frees them when it is deleted: run again on a mesh of the same size, it
+ * writes to memory it already has instead of taking a page fault every
+ * 4 KiB. Larger blocks lie on huge pages (a fault per 2 MiB) and are freed
+ * after each update.
  *
  * @warning Meshes with 2^31 or more polygon corners are refused when
  * Splitting, Consistency, AutoOrientNormals or WeldCoincidentPoints is on.

@@ -48,13 +48,14 @@ ScratchPool::Block ScratchPool::acquire(size_t bytes)
   bytes = bytes ? bytes : 1;
   {
     std::lock_guard<std::mutex> lock(this->Mutex);
-    // The smallest kept block that fits, if it is no more than twice the
-    // request (a large block would be wasted on a small array).
+    // The smallest kept block that fits. A run that repeats the last one
+    // finds the blocks it had; a run that differs still reuses what it can
+    // rather than add new memory beside idle blocks.
     size_t best = this->Kept.size();
     for (size_t i = 0; i < this->Kept.size(); ++i)
     {
       const size_t c = this->Kept[i].capacity;
-      if (c >= bytes && c / 2 <= bytes && (best == this->Kept.size() || c < this->Kept[best].capacity))
+      if (c >= bytes && (best == this->Kept.size() || c < this->Kept[best].capacity))
       {
         best = i;
       }
@@ -79,7 +80,9 @@ void ScratchPool::release(Block block) noexcept
   }
   {
     std::lock_guard<std::mutex> lock(this->Mutex);
-    if (this->KeptTotal + block.capacity <= this->Limit)
+    // Huge-page blocks are not kept: allocated again they cost a fault per
+    // 2 MiB, and kept they would add to the peak memory of a large run.
+    if (block.capacity < kHugePageBytes && this->KeptTotal + block.capacity <= this->Limit)
     {
       try
       {

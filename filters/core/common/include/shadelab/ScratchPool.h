@@ -6,16 +6,19 @@
  *
  * A filter that runs again on a mesh of the same size asks for the same
  * scratch arrays again. Freed to the C library, those arrays mostly go back
- * to the kernel (glibc trims its heap once the free memory at the top
+ * to the kernel (glibc trims its heap once the free memory at its top
  * exceeds its trim threshold), and the next run takes a page fault, and the
  * clearing of a page, at every 4 KiB it writes: on the normals filter with
- * splitting, over a quarter of its time. A pool keeps the blocks it handed
- * out, up to a byte limit, and hands them out again.
+ * splitting, over a quarter of its time at 0.1M-0.5M triangles. A pool
+ * keeps the blocks it handed out, up to a byte limit, and hands them out
+ * again.
  *
- * Blocks of kHugePageBytes or more come from allocateHugePages()
- * (HugePages.h): when they are not kept, they cost one fault per 2 MiB
- * instead of 512. Smaller blocks are rounded up to 64 KiB, so that a run on
- * a slightly different mesh still finds them.
+ * Only blocks under kHugePageBytes are kept; larger ones come from
+ * allocateHugePages() (HugePages.h) and are freed on release. Allocated
+ * again, they cost one fault per 2 MiB instead of 512, and kept, they would
+ * sit idle beside the output of a large run and raise its peak memory.
+ * Small blocks are rounded up to 64 KiB, so that a run on a slightly
+ * different mesh still finds them.
  *
  * acquire() and release() may be called from any thread. Every block must
  * be released before the pool is destroyed.
@@ -47,13 +50,12 @@ public:
     size_t capacity = 0;
   };
 
-  /// At least @p bytes, 64-byte aligned, uninitialised: a kept block of
-  /// @p bytes to twice that if there is one, else a new block. Throws
-  /// std::bad_alloc.
+  /// At least @p bytes, 64-byte aligned, uninitialised: the smallest kept
+  /// block that fits, else a new block. Throws std::bad_alloc.
   Block acquire(size_t bytes);
 
-  /// Takes back a block from acquire(): kept if the kept blocks stay within
-  /// the limit, else freed.
+  /// Takes back a block from acquire(): kept if it is under kHugePageBytes
+  /// and the kept blocks stay within the limit, else freed.
   void release(Block block) noexcept;
 
   /// Frees every kept block.

@@ -282,7 +282,7 @@ int64_t splitVertexNormals(const Polygons<Id>& topology, const Id* original, con
 {
   using V = glm::vec<3, T>;
   // Scratch arrays below are filled completely by parallel passes: no zero-fill.
-  const ScratchArray<T> unit(parallel, static_cast<size_t>(3 * topology.numPolygons));
+  ScratchArray<T> unit(parallel, static_cast<size_t>(3 * topology.numPolygons));
   parallel.forRange(0, topology.numPolygons, 8192, [&](int64_t b, int64_t e) {
     for (int64_t f = b; f < e; ++f)
     {
@@ -336,6 +336,10 @@ int64_t splitVertexNormals(const Polygons<Id>& topology, const Id* original, con
     base[static_cast<size_t>(v + 1)] += base[static_cast<size_t>(v)];
   }
   const int64_t total = base[static_cast<size_t>(numPoints)];
+  if (!original && !overflow)
+  {
+    unit.reset(); // the stored groups suffice: not held while the output is allocated
+  }
   SplitOutput out = allocate(total);
 
   if (!original && !overflow)
