@@ -24,4 +24,22 @@ vtkSmartPointer<vtkFloatArray> newParallelFillArray(const std::string& name, int
   return array;
 }
 
+vtkSmartPointer<vtkFloatArray> recycleParallelFillArray(
+  vtkSmartPointer<vtkDataArray> previous, const std::string& name, int components, vtkIdType tuples)
+{
+  vtkSmartPointer<vtkFloatArray> array = vtkFloatArray::SafeDownCast(previous);
+  previous = nullptr;
+  // `array` must hold the only reference: a caller that kept its own (did
+  // not move it in) or a consumer that holds the array gets a new one.
+  if (!array || array->GetReferenceCount() != 1 || array->GetNumberOfComponents() != components ||
+    array->GetNumberOfTuples() != tuples)
+  {
+    return newParallelFillArray(name, components, tuples);
+  }
+  array->SetName(name.c_str());
+  // Clears the ranges and other facts cached about the old values.
+  array->Modified();
+  return array;
+}
+
 } // namespace shadelab

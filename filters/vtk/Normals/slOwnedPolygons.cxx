@@ -5,6 +5,8 @@
 #include <vtkIdList.h>
 #include <vtkNew.h>
 
+#include <utility>
+
 vtkSmartPointer<vtkCellArray> slRemapCells(vtkCellArray* cells, const std::vector<vtkIdType>& map)
 {
   auto out = vtkSmartPointer<vtkCellArray>::New();
@@ -21,9 +23,9 @@ vtkSmartPointer<vtkCellArray> slRemapCells(vtkCellArray* cells, const std::vecto
   return out;
 }
 
-vtkSmartPointer<vtkFloatArray> slMakeNormalsArray(vtkIdType tuples)
+vtkSmartPointer<vtkFloatArray> slMakeNormalsArray(vtkIdType tuples, vtkSmartPointer<vtkDataArray> previous)
 {
   // Large outputs on huge pages: a 2M-triangle mesh's normals would
   // otherwise cost thousands of 4 KiB page faults at their first write.
-  return shadelab::newParallelFillArray("Normals", 3, tuples);
+  return shadelab::recycleParallelFillArray(std::move(previous), "Normals", 3, tuples);
 }

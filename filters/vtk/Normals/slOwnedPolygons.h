@@ -76,7 +76,10 @@ slOwnedPolygons<Id> slCopyPolygons(vtkCellArray* polys, vtkCellArray* strips)
 /// Replaces every id of @p cells by map[id].
 vtkSmartPointer<vtkCellArray> slRemapCells(vtkCellArray* cells, const std::vector<vtkIdType>& map);
 
-/// A 3-component float point or cell array named "Normals".
-vtkSmartPointer<vtkFloatArray> slMakeNormalsArray(vtkIdType tuples);
+/// A 3-component float point or cell array named "Normals" of @p tuples
+/// tuples, its values to be written: @p previous (the filter's last output
+/// array, moved in) when nothing else holds it and it has that shape
+/// (shadelab::recycleParallelFillArray()), else a new one.
+vtkSmartPointer<vtkFloatArray> slMakeNormalsArray(vtkIdType tuples, vtkSmartPointer<vtkDataArray> previous = nullptr);
 
 #endif

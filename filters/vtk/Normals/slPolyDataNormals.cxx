@@ -142,9 +142,12 @@ void setSplitPoints(vtkPolyData* input, vtkPolyData* output, const T* xyz, const
 /// Runs computePolygonNormals() (slPolygonNormalsCore.h) on points of type
 /// T and polygon ids of type Id, and builds the output from its result:
 /// the VTK side of the filter. Returns the number of polygons reversed.
+/// @p lastPoints and @p lastCells hold the normals arrays last output
+/// (refilled when nothing else holds them), and then those of this output.
 template <typename T, typename Id>
 int64_t computeInto(const slnormals::PolygonNormalsSettings& settings, bool cellNormals, vtkPolyData* input,
-  vtkPolyData* output, const T* xyz, shadelab::ScratchPool* scratch)
+  vtkPolyData* output, const T* xyz, shadelab::ScratchPool* scratch, vtkSmartPointer<vtkFloatArray>& lastPoints,
+  vtkSmartPointer<vtkFloatArray>& lastCells)
 {
   slnormals::Parallel par = slSMPParallel();
   par.scratch = scratch;
@@ -161,7 +164,8 @@ int64_t computeInto(const slnormals::PolygonNormalsSettings& settings, bool cell
   vtkSmartPointer<vtkFloatArray> normals;
   vtkNew<vtkTypeInt32Array> splitConnectivity;
   r.allocateNormals = [&](int64_t n) {
-    normals = slMakeNormalsArray(n);
+    normals = slMakeNormalsArray(n, std::move(lastPoints));
+    lastPoints = normals;
     return normals->GetPointer(0);
   };
   r.allocateSplitConnectivity = [&](int64_t n) {
@@ -216,7 +220,8 @@ int64_t computeInto(const slnormals::PolygonNormalsSettings& settings, bool cell
   if (cellNormals)
   {
     const vtkIdType first = input->GetNumberOfVerts() + input->GetNumberOfLines();
-    auto cellNormals = slMakeNormalsArray(first + r.polygons.numPolygons);
+    auto cellNormals = slMakeNormalsArray(first + r.polygons.numPolygons, std::move(lastCells));
+    lastCells = cellNormals;
     float* n = cellNormals->GetPointer(0);
     std::fill(n, n + 3 * first, 0.0f);
     slnormals::computeUnitFaceNormals(r.polygons, xyz, n + 3 * first, par);
@@ -257,6 +262,9 @@ int slPolyDataNormals::RequestData(vtkInformation*, vtkInformationVector** input
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   output->Initialize();
   this->NumberOfFlippedPolygons = 0;
+  // Taken out first: an update that fails or outputs nothing keeps nothing.
+  vtkSmartPointer<vtkFloatArray> lastPoints = std::move(this->LastPointNormals);
+  vtkSmartPointer<vtkFloatArray> lastCells = std::move(this->LastCellNormals);
   if (!input || input->GetNumberOfPoints() == 0)
   {
     return 1;
@@ -308,12 +316,13 @@ int slPolyDataNormals::RequestData(vtkInformation*, vtkInformationVector** input
       using Id = decltype(id);
       if (auto* f = vtkFloatArray::SafeDownCast(data))
       {
-        flipped = computeInto<float, Id>(s, cellNormals, input, output, f->GetPointer(0), this->Scratch.get());
+        flipped = computeInto<float, Id>(
+          s, cellNormals, input, output, f->GetPointer(0), this->Scratch.get(), lastPoints, lastCells);
       }
       else
       {
-        flipped = computeInto<double, Id>(
-          s, cellNormals, input, output, vtkDoubleArray::SafeDownCast(data)->GetPointer(0), this->Scratch.get());
+        flipped = computeInto<double, Id>(s, cellNormals, input, output,
+          vtkDoubleArray::SafeDownCast(data)->GetPointer(0), this->Scratch.get(), lastPoints, lastCells);
       }
       return 0;
     });
@@ -332,6 +341,18 @@ int slPolyDataNormals::RequestData(vtkInformation*, vtkInformationVector** input
   }
   this->NumberOfFlippedPolygons = flipped;
   output->GetFieldData()->PassData(input->GetFieldData());
+  if (!this->GetReleaseDataFlag() && !vtkDataObject::GetGlobalReleaseDataFlag())
+  {
+    // Only arrays this update made and the output holds.
+    if (output->GetPointData()->GetNormals() == lastPoints)
+    {
+      this->LastPointNormals = lastPoints;
+    }
+    if (output->GetCellData()->GetNormals() == lastCells)
+    {
+      this->LastCellNormals = lastCells;
+    }
+  }
   return 1;
 }
 
