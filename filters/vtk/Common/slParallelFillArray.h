@@ -19,8 +19,9 @@
  * returned for refilling instead of a new one. A new array costs more than
  * its allocation: the kernel clears every page before the first write
  * (4 ms for the 48 MB of an 8M-triangle mesh's normals), and after another
- * filter has freed much memory in small pages, finding huge pages took
- * 27-65 ms of kernel time (memory compaction) in the normals bench.
+ * filter has freed much memory in small pages, allocating them took
+ * 26-65 ms, most of it in the kernel (a harness that ran vtkPolyDataNormals
+ * between updates, as the normals bench does).
  */
 
 #include "ShadeLabCommonModule.h"

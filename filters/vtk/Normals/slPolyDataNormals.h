@@ -54,10 +54,10 @@
  * holds those arrays (no downstream output, no script), the update refills
  * them instead of allocating new ones: a new array's pages are cleared by
  * the kernel before their first write, 4 ms for an 8M-triangle mesh's
- * normals, and 25-65 ms when memory must first be compacted into huge
- * pages. Arrays that something else holds are never written. As long as
- * the output holds the arrays, keeping them costs no memory; with the
- * output's ReleaseDataFlag (or the global one) on, they are not kept.
+ * normals, and 26-65 ms after another filter has freed much memory.
+ * Arrays that something else holds are never written. As long as the
+ * output holds the arrays, keeping them costs no memory; with the output's
+ * ReleaseDataFlag (or the global one) on, they are not kept.
  *
  * @warning Meshes with 2^31 or more polygon corners are refused when
  * Splitting, Consistency, AutoOrientNormals or WeldCoincidentPoints is on.
