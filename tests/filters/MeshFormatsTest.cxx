@@ -29,6 +29,8 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace
@@ -294,4 +296,102 @@ TEST(MeshFormats, WrittenOBJAndPLYReadBackBitForBit)
   const Merged vtk = merged(readVTK<vtkOBJReader>(folder.path("m.obj")));
   const Merged own = merged(readShadeLab(folder.path("m.obj")));
   EXPECT_EQ(vtk.rows, own.rows);
+}
+
+namespace
+{
+/// A grid of @p n x @p n points in the plane z = 0, with normals, as
+/// triangles, viewed for slFormatOBJ (the arrays live in @p storage).
+slMeshView gridView(int n, slMeshArrays& storage)
+{
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      storage.points.insert(storage.points.end(), { i / 7.0f, j / 3.0f, 0.0f });
+      storage.normals.insert(storage.normals.end(), { 0.0f, 0.0f, 1.0f });
+    }
+  }
+  storage.offsets.push_back(0);
+  for (int j = 0; j + 1 < n; ++j)
+  {
+    for (int i = 0; i + 1 < n; ++i)
+    {
+      const std::int64_t p = j * n + i;
+      for (std::int64_t corner : { p, p + 1, p + n + 1, p, p + n + 1, p + n })
+      {
+        storage.connectivity.push_back(corner);
+      }
+      storage.offsets.push_back(static_cast<std::int64_t>(storage.connectivity.size()) - 3);
+      storage.offsets.push_back(static_cast<std::int64_t>(storage.connectivity.size()));
+    }
+  }
+  slMeshView view;
+  view.numberOfPoints = static_cast<std::int64_t>(storage.points.size() / 3);
+  view.numberOfPolygons = static_cast<std::int64_t>(storage.offsets.size()) - 1;
+  view.points.data = storage.points.data();
+  view.normals.data = storage.normals.data();
+  view.offsets.data = storage.offsets.data();
+  view.connectivity.data = storage.connectivity.data();
+  return view;
+}
+} // namespace
+
+TEST(MeshFormats, OBJIsWrittenInOrderPieceByPiece)
+{
+  // 360k points: their v and vn lines, and the faces, each take more than
+  // one piece (256k lines).
+  slMeshArrays storage;
+  const slMeshView mesh = gridView(600, storage);
+  std::map<int, std::vector<std::string>> calls;
+  for (int threads : { 1, 2, 4 })
+  {
+    slFormatOBJ(
+      mesh, [&](const char* data, std::size_t size) { calls[threads].emplace_back(data, size); }, threads);
+  }
+  ASSERT_GE(calls[1].size(), 6u);
+  EXPECT_EQ(calls[2], calls[1]);
+  EXPECT_EQ(calls[4], calls[1]);
+  std::string text;
+  for (const std::string& piece : calls[1])
+  {
+    ASSERT_FALSE(piece.empty());
+    ASSERT_EQ(piece.back(), '\n');
+    text += piece;
+  }
+  // The joined text reads back to the mesh, line for line.
+  slMeshArrays back;
+  ASSERT_TRUE(slParseOBJ(text.data(), text.size(), false, back, 1));
+  EXPECT_EQ(back.points, storage.points);
+  EXPECT_EQ(back.normals, storage.normals);
+  EXPECT_EQ(back.offsets, storage.offsets);
+  EXPECT_EQ(back.connectivity, storage.connectivity);
+  EXPECT_EQ(text.rfind("v ", 0), 0u);
+  EXPECT_EQ(text.substr(text.rfind('\n', text.size() - 2) + 1), "f 359399//359399 360000//360000 359999//359999\n");
+}
+
+TEST(MeshFormats, OBJStopsAtTheFirstFailedPieceAndSaysWhy)
+{
+  slMeshArrays storage;
+  const slMeshView mesh = gridView(600, storage);
+  for (int threads : { 1, 2, 4 })
+  {
+    int calls = 0;
+    const auto failThird = [&](const char*, std::size_t) {
+      if (++calls == 3)
+      {
+        throw std::runtime_error("disk full");
+      }
+    };
+    try
+    {
+      slFormatOBJ(mesh, failThird, threads);
+      ADD_FAILURE() << "no exception on " << threads << " threads";
+    }
+    catch (const std::runtime_error& e)
+    {
+      EXPECT_STREQ(e.what(), "disk full");
+    }
+    EXPECT_EQ(calls, 3) << threads << " threads";
+  }
 }

@@ -113,10 +113,10 @@ long long expectedPLYSize(const std::string& path, vtkPolyData* mesh)
   return size;
 }
 
-/// @p mesh encoded as OBJ or PLY by ShadeLab's own formatters into @p bytes;
-/// false for other formats and meshes they do not write (which VTK's
-/// writers then write).
-bool formatOwn(const std::string& ext, vtkPolyData* mesh, std::string& bytes)
+/// Writes @p mesh as OBJ or PLY with ShadeLab's own formatters into
+/// @p output and commits it; false, writing nothing, for other formats and
+/// meshes they do not write (which VTK's writers then write).
+bool writeOwn(const std::string& ext, vtkPolyData* mesh, shadelab::AtomicOutput& output)
 {
   slMeshView view;
   if ((ext != ".obj" && ext != ".ply") || !slViewOf(mesh, view))
@@ -125,10 +125,20 @@ bool formatOwn(const std::string& ext, vtkPolyData* mesh, std::string& bytes)
   }
   if (ext == ".obj")
   {
-    slFormatOBJ(view, bytes, vtkSMPTools::GetEstimatedNumberOfThreads());
+    // Piece by piece, as it is formatted: the file is never whole in memory.
+    slFormatOBJ(
+      view, [&](const char* data, std::size_t size) { output.write(data, size); },
+      vtkSMPTools::GetEstimatedNumberOfThreads());
+    output.commit();
     return true;
   }
-  return slFormatPLY(view, bytes);
+  std::string bytes;
+  if (!slFormatPLY(view, bytes))
+  {
+    return false;
+  }
+  output.commit(bytes.data(), bytes.size());
+  return true;
 }
 } // namespace
 
@@ -196,10 +206,8 @@ void slMeshWriter::WriteMesh(vtkPolyData* mesh)
     // its string output is empty in VTK 9.1. It writes the temporary file
     // itself, whose size is then checked against its header.
     shadelab::AtomicOutput output(name);
-    std::string own;
-    if (formatOwn(ext, mesh, own))
+    if (writeOwn(ext, mesh, output))
     {
-      output.commit(own.data(), own.size());
       return;
     }
     const bool ply = ext == ".ply";

@@ -16,8 +16,9 @@
  * read back exactly; other meshes as above go to vtkOBJWriter), .stl
  * (vtkSTLWriter, binary; geometry only).
  *
- * The mesh is encoded in memory; ShadeLab then writes the bytes to a
- * temporary file beside the target, syncs it and renames it over the target:
+ * The mesh is encoded in memory (OBJ piece by piece, each piece written as
+ * it is ready); ShadeLab writes the bytes to a temporary file beside the
+ * target, syncs it and renames it over the target:
  * a failure (a full disk included) never leaves a partial file nor destroys
  * an existing one. A failure is a vtkErrorMacro of one line naming the file
  * (and the system's reason, e.g. "No space left on device") and Write()

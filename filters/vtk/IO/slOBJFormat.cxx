@@ -6,8 +6,11 @@
 #include <atomic>
 #include <charconv>
 #include <cmath>
+#include <condition_variable>
 #include <cstring>
+#include <exception>
 #include <limits>
+#include <mutex>
 #include <thread>
 
 namespace
@@ -394,15 +397,19 @@ void faces(const slMeshView& mesh, std::int64_t begin, std::int64_t end, std::st
 }
 } // namespace
 
-void slFormatOBJ(const slMeshView& mesh, std::string& out, int threads)
+void slFormatOBJ(const slMeshView& mesh, const std::function<void(const char*, std::size_t)>& sink, int threads)
 {
   // The file in pieces of at most 256k lines (v, vn, vt, then f), formatted
-  // on @p threads threads, each taking the next piece, then joined in order.
+  // on @p threads threads, each taking the next piece. This thread hands
+  // the pieces to the sink in order as soon as each is ready, and formats
+  // one itself while the next is not: writing overlaps formatting, and the
+  // file is never whole in memory (nor copied into one string).
   struct Piece
   {
     int kind; // 0 v, 1 vn, 2 vt, 3 f
     std::int64_t begin, end;
     std::string text;
+    bool ready;
   };
   std::vector<Piece> pieces;
   const std::int64_t step = 1 << 18;
@@ -412,23 +419,75 @@ void slFormatOBJ(const slMeshView& mesh, std::string& out, int threads)
   {
     for (std::int64_t begin = 0; begin < counts[kind]; begin += step)
     {
-      pieces.push_back(Piece{ kind, begin, std::min(counts[kind], begin + step), std::string() });
+      pieces.push_back(Piece{ kind, begin, std::min(counts[kind], begin + step), std::string(), false });
     }
   }
+  // Pieces formatted ahead of the writer wait in memory: at most `window`
+  // of them past the next to write.
+  const std::size_t window = 2 * static_cast<std::size_t>(std::max(threads, 1));
+  std::mutex lock;
+  std::condition_variable changed;
+  std::size_t written = 0; // pieces handed to the sink (under lock)
+  bool stop = false;       // a piece or the sink failed (under lock)
+  std::exception_ptr failure;
   std::atomic<std::size_t> next{ 0 };
-  auto work = [&] {
-    for (std::size_t k = next++; k < pieces.size(); k = next++)
+  // Texts already written, kept for the next pieces: memory the kernel
+  // has given once is refilled instead of fresh pages being zeroed for
+  // every piece.
+  std::vector<std::string> spare;
+  const auto format = [&](std::size_t k) {
+    Piece& piece = pieces[k];
     {
-      Piece& piece = pieces[k];
-      if (piece.kind == 3)
+      std::lock_guard<std::mutex> guard(lock);
+      if (!spare.empty())
       {
-        faces(mesh, piece.begin, piece.end, piece.text);
-        continue;
+        piece.text.swap(spare.back());
+        spare.pop_back();
       }
+    }
+    if (piece.kind == 3)
+    {
+      faces(mesh, piece.begin, piece.end, piece.text);
+    }
+    else
+    {
       static const char* const keywords[] = { "v", "vn", "vt" };
       const slValuesView& values = piece.kind == 0 ? mesh.points : piece.kind == 1 ? mesh.normals : mesh.tcoords;
       piece.text.reserve(static_cast<std::size_t>(piece.end - piece.begin) * 40);
       tuples(piece.text, keywords[piece.kind], values, piece.begin, piece.end, piece.kind == 2 ? 2 : 3);
+    }
+    std::lock_guard<std::mutex> guard(lock);
+    piece.ready = true;
+    changed.notify_all();
+  };
+  const auto fail = [&](std::exception_ptr error) {
+    std::lock_guard<std::mutex> guard(lock);
+    if (!failure)
+    {
+      failure = error;
+    }
+    stop = true;
+    changed.notify_all();
+  };
+  auto work = [&] {
+    try
+    {
+      for (std::size_t k = next++; k < pieces.size(); k = next++)
+      {
+        {
+          std::unique_lock<std::mutex> guard(lock);
+          changed.wait(guard, [&] { return stop || k < written + window; });
+          if (stop)
+          {
+            return;
+          }
+        }
+        format(k);
+      }
+    }
+    catch (...)
+    {
+      fail(std::current_exception());
     }
   };
   std::vector<std::thread> workers;
@@ -436,20 +495,48 @@ void slFormatOBJ(const slMeshView& mesh, std::string& out, int threads)
   {
     workers.emplace_back(work);
   }
-  work();
+  try
+  {
+    while (written < pieces.size())
+    {
+      std::unique_lock<std::mutex> guard(lock);
+      if (stop)
+      {
+        break;
+      }
+      if (pieces[written].ready)
+      {
+        guard.unlock();
+        Piece& piece = pieces[written];
+        sink(piece.text.data(), piece.text.size());
+        piece.text.clear();
+        guard.lock();
+        spare.push_back(std::move(piece.text));
+        ++written;
+        changed.notify_all();
+        continue;
+      }
+      guard.unlock();
+      const std::size_t k = next++;
+      if (k < pieces.size())
+      {
+        format(k);
+        continue;
+      }
+      guard.lock();
+      changed.wait(guard, [&] { return stop || pieces[written].ready; });
+    }
+  }
+  catch (...)
+  {
+    fail(std::current_exception());
+  }
   for (std::thread& w : workers)
   {
     w.join();
   }
-  std::size_t total = out.size();
-  for (const Piece& piece : pieces)
+  if (failure)
   {
-    total += piece.text.size();
-  }
-  out.reserve(total);
-  for (Piece& piece : pieces)
-  {
-    out += piece.text;
-    std::string().swap(piece.text);
+    std::rethrow_exception(failure);
   }
 }

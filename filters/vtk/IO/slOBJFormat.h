@@ -15,6 +15,7 @@
 #include "slMeshArrays.h"
 
 #include <cstddef>
+#include <functional>
 #include <string>
 
 /// Fills @p mesh from @p size bytes of OBJ text at @p text as vtkOBJReader
@@ -30,11 +31,15 @@
 /// them. Parses on @p threads threads (at least one).
 SHADELABIO_EXPORT bool slParseOBJ(const char* text, std::size_t size, bool merge, slMeshArrays& mesh, int threads);
 
-/// Appends @p mesh as OBJ text to @p out: "v", then "vn" and "vt" lines if
-/// the mesh has them, each value with the fewest digits that read back to
-/// the same float (double for double arrays), then one "f" line per polygon
-/// whose corners name the same index for v, vt and vn. Formats on @p
-/// threads threads.
-SHADELABIO_EXPORT void slFormatOBJ(const slMeshView& mesh, std::string& out, int threads);
+/// Formats @p mesh as OBJ text: "v", then "vn" and "vt" lines if the mesh
+/// has them, each value with the fewest digits that read back to the same
+/// float (double for double arrays), then one "f" line per polygon whose
+/// corners name the same index for v, vt and vn. Formats on @p threads
+/// threads and calls @p sink(data, size) on the calling thread with the
+/// text in order, piece by piece (a few MB each), while the others format
+/// the next pieces. An exception from @p sink stops the formatting and is
+/// rethrown.
+SHADELABIO_EXPORT void slFormatOBJ(
+  const slMeshView& mesh, const std::function<void(const char*, std::size_t)>& sink, int threads);
 
 #endif

@@ -152,6 +152,12 @@ void AtomicOutput::fail(const std::string& what, int error) const
 
 void AtomicOutput::commit(const char* data, std::size_t size)
 {
+  this->write(data, size);
+  this->commit();
+}
+
+void AtomicOutput::write(const char* data, std::size_t size)
+{
   while (size > 0)
   {
     const ssize_t written = ::write(this->Descriptor, data, size);
@@ -166,7 +172,6 @@ void AtomicOutput::commit(const char* data, std::size_t size)
     data += written;
     size -= static_cast<std::size_t>(written);
   }
-  this->syncAndRename();
 }
 
 void AtomicOutput::commitWritten(long long expectedSize)
@@ -189,10 +194,10 @@ void AtomicOutput::commitWritten(long long expectedSize)
     throw Error(this->Target + ": cannot write output file: the writer wrote " +
       std::to_string(info.st_size) + " bytes of " + std::to_string(expectedSize));
   }
-  this->syncAndRename();
+  this->commit();
 }
 
-void AtomicOutput::syncAndRename()
+void AtomicOutput::commit()
 {
   // The data must be on the disk before the new name points at it, or a crash
   // right after the rename could leave an empty or partial file under it.

@@ -46,6 +46,15 @@ public:
   /// before and the temporary file is removed by the destructor.
   void commit(const char* data, std::size_t size);
 
+  /// Appends @p size bytes at @p data to the temporary file, for output
+  /// written in pieces; commit() then makes it the target. Throws
+  /// shadelab::Error as commit(data, size).
+  void write(const char* data, std::size_t size);
+
+  /// Syncs what write() wrote, renames it to the target and syncs the
+  /// folder. Throws shadelab::Error as commit(data, size).
+  void commit();
+
   /// As commit(data, size) for a temporary file another writer filled through
   /// temporaryPath(), which must now hold exactly @p expectedSize bytes: a
   /// writer that does not notice a failed write leaves fewer. The message then
@@ -55,7 +64,6 @@ public:
 
 private:
   [[noreturn]] void fail(const std::string& what, int error) const;
-  void syncAndRename();
 
   std::string Target;
   std::string Temporary;
