@@ -12,7 +12,10 @@
 /// the job cannot reuse pages the count would not see. The job runs in the
 /// process itself, not in a forked child: a child of a process whose thread
 /// pool is running may inherit a lock held by a thread that does not exist
-/// in it, and wait forever.
+/// in it, and wait forever. What the process did before still shows (memory
+/// the allocator kept, or did not): the normals bench therefore calls this
+/// in a new process per job, started with exec (NormalsBench.cxx,
+/// memoryInNewProcesses).
 long long slPeakMemoryAbove(const std::function<void()>& job);
 
 #endif

@@ -20,6 +20,8 @@
 #include <vtkSMPTools.h>
 #include <vtkTriangleMeshPointNormals.h>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -106,7 +108,119 @@ std::string parseSizes(const std::string& text, std::vector<double>& sizes)
   return sizes.empty() ? "no size given" : "";
 }
 
-Result benchOne(vtkPolyData* mesh, const std::string& label, int runs, int threads, const BenchMachine& machine)
+/// A new slPolyDataNormals on @p mesh with @p weighting, splitting and
+/// consistency as @p split says, updated by each call of the job.
+std::function<void()> ours(vtkPolyData* mesh, int weighting, bool split)
+{
+  vtkSmartPointer<slPolyDataNormals> f = vtkSmartPointer<slPolyDataNormals>::New();
+  f->SetInputData(mesh);
+  f->SetWeighting(weighting);
+  f->SetSplitting(split);
+  f->SetConsistency(split);
+  return [f]() {
+    f->Modified();
+    f->Update();
+  };
+}
+
+/// The jobs whose peak memory the bench reports: each one update of a new
+/// filter.
+const char* const kMemoryJobs[] = { "angle no split", "split+cons", "vtkTriangleMeshPointNormals" };
+constexpr int kMemoryJobCount = 3;
+
+/// Memory job @p which (an index of kMemoryJobs) on @p mesh.
+std::function<void()> memoryJob(int which, vtkPolyData* mesh)
+{
+  if (which == 2)
+  {
+    return [mesh] {
+      vtkNew<vtkTriangleMeshPointNormals> f;
+      f->SetInputData(mesh);
+      f->Update();
+    };
+  }
+  return ours(mesh, slPolyDataNormals::ANGLE, which == 1);
+}
+
+/// The torus of @p millions million triangles, shuffled or not, exactly as
+/// the bench makes it.
+vtkSmartPointer<vtkPolyData> benchMesh(double millions, bool shuffled)
+{
+  vtkSmartPointer<vtkPolyData> torus = slBenchTorus(static_cast<long long>(millions * 1e6));
+  return shuffled ? slBenchShuffled(torus, 1) : torus;
+}
+
+constexpr const char* kMemoryJobOption = "--memory-job";
+
+/// In a process of its own (`--memory-job MILLIONS ORDER JOB THREADS`):
+/// builds the mesh, runs the job once on a small torus (so that code pages
+/// and the thread pool are in place, as in a program that has run the
+/// filter before), then prints the job's peak memory above what the
+/// process held before it, in bytes.
+int runMemoryJob(char** argv)
+{
+  const double millions = std::atof(argv[2]);
+  const bool shuffled = std::string(argv[3]) == "shuffled";
+  const int which = std::atoi(argv[4]);
+  vtkSMPTools::Initialize(std::atoi(argv[5]));
+  if (which < 0 || which >= kMemoryJobCount)
+  {
+    return 2;
+  }
+  {
+    vtkSmartPointer<vtkPolyData> small = slBenchTorus(20000);
+    memoryJob(which, small)();
+  }
+  vtkSmartPointer<vtkPolyData> mesh = benchMesh(millions, shuffled);
+  std::printf("%lld\n", slPeakMemoryAbove(memoryJob(which, mesh)));
+  return 0;
+}
+
+/// The peak memory of every memory job above @p inputBytes, each measured
+/// in a new process of this program: what earlier jobs left in this
+/// process's allocator cannot change it. " NAME 0.42x;" per job.
+std::string memoryInNewProcesses(double millions, bool shuffled, int threads, double inputBytes)
+{
+  char self[4096];
+  const ssize_t length = readlink("/proc/self/exe", self, sizeof(self) - 1);
+  std::string text;
+  for (int which = 0; which < kMemoryJobCount; ++which)
+  {
+    long long peak = -1;
+    if (length > 0)
+    {
+      self[length] = '\0';
+      char command[4200];
+      std::snprintf(command, sizeof(command), "'%s' %s %.17g %s %d %d", self, kMemoryJobOption, millions,
+        shuffled ? "shuffled" : "ordered", which, threads);
+      if (FILE* child = popen(command, "r"))
+      {
+        if (std::fscanf(child, "%lld", &peak) != 1)
+        {
+          peak = -1;
+        }
+        if (pclose(child) != 0)
+        {
+          peak = -1;
+        }
+      }
+    }
+    char cell[96];
+    if (peak < 0)
+    {
+      std::snprintf(cell, sizeof(cell), " %s (not measured);", kMemoryJobs[which]);
+    }
+    else
+    {
+      std::snprintf(cell, sizeof(cell), " %s %.2fx;", kMemoryJobs[which], static_cast<double>(peak) / inputBytes);
+    }
+    text += cell;
+  }
+  return text;
+}
+
+Result benchOne(vtkPolyData* mesh, const std::string& label, const std::string& memory, int runs, int threads,
+  const BenchMachine& machine)
 {
   const double tris = static_cast<double>(mesh->GetNumberOfPolys());
   const double points = static_cast<double>(mesh->GetNumberOfPoints());
@@ -119,42 +233,6 @@ Result benchOne(vtkPolyData* mesh, const std::string& label, int runs, int threa
   // 32-bit polygons (measured output size).
   const double gbs = machine.bandwidthAllThreads;
   const double floorPlain = (inputBytes + 12.0 * points) / (gbs * 1e9);
-
-  auto ours = [&](int weighting, bool split) {
-    vtkSmartPointer<slPolyDataNormals> f = vtkSmartPointer<slPolyDataNormals>::New();
-    f->SetInputData(mesh);
-    f->SetWeighting(weighting);
-    f->SetSplitting(split);
-    f->SetConsistency(split);
-    return std::function<void()>([f]() {
-      f->Modified();
-      f->Update();
-    });
-  };
-
-  // Peak memory above the input, measured first: each job once, on a new
-  // filter, before any other filter has run on this mesh. The output is
-  // then allocated in the job, as on a first update, and what the
-  // allocator kept from the timed updates below (whose count depends on
-  // how they allocate) cannot change the figure.
-  const double input = mesh->GetActualMemorySize() * 1024.0;
-  const auto newTMPN = [mesh] {
-    vtkNew<vtkTriangleMeshPointNormals> f;
-    f->SetInputData(mesh);
-    f->Update();
-  };
-  const std::pair<const char*, std::function<void()>> jobs[] = {
-    { "angle no split", ours(slPolyDataNormals::ANGLE, false) },
-    { "split+cons", ours(slPolyDataNormals::ANGLE, true) },
-    { "vtkTriangleMeshPointNormals", newTMPN },
-  };
-  std::string memory;
-  for (const auto& j : jobs)
-  {
-    char text[96];
-    std::snprintf(text, sizeof(text), " %s %.2fx;", j.first, static_cast<double>(slPeakMemoryAbove(j.second)) / input);
-    memory += text;
-  }
 
   vtkNew<slPolyDataNormals> check;
   check->SetInputData(mesh);
@@ -189,8 +267,8 @@ Result benchOne(vtkPolyData* mesh, const std::string& label, int runs, int threa
     "slPolyDataNormals area", "vtkTriangleMeshPointNormals", "vtkPolyDataNormals (split/cons off)",
     "OpenMesh update_face+vertex_normals" };
   const std::vector<BenchTimes> t = timeInterleaved(runs,
-    { ours(slPolyDataNormals::ANGLE, false), onOneThread(threads, ours(slPolyDataNormals::ANGLE, false)),
-      ours(slPolyDataNormals::AREA, false), update(tmpn), update(pdnPlain), [&] { om.UpdateNormals(); } });
+    { ours(mesh, slPolyDataNormals::ANGLE, false), onOneThread(threads, ours(mesh, slPolyDataNormals::ANGLE, false)),
+      ours(mesh, slPolyDataNormals::AREA, false), update(tmpn), update(pdnPlain), [&] { om.UpdateNormals(); } });
   std::printf("   vertex normals, no splitting      median ms        range ms   cpu ms  ns/tri  x floor  "
               "x TriMeshPN          x PolyDataN\n");
   for (size_t i = 0; i < t.size(); ++i)
@@ -214,7 +292,7 @@ Result benchOne(vtkPolyData* mesh, const std::string& label, int runs, int threa
 
   // 2. Splitting (30 degrees) and consistency on.
   const std::vector<BenchTimes> s =
-    timeInterleaved(runs, { ours(slPolyDataNormals::ANGLE, true), update(pdnDefault) });
+    timeInterleaved(runs, { ours(mesh, slPolyDataNormals::ANGLE, true), update(pdnDefault) });
   r.splitOverPDN = ratios(s[1], s[0], 10);
   r.splitFloorRatio = s[0].median() / floorSplit;
   std::printf("   splitting 30 deg + consistency    median ms        range ms   cpu ms  ns/tri  x floor  "
@@ -237,6 +315,10 @@ Result benchOne(vtkPolyData* mesh, const std::string& label, int runs, int threa
 
 int main(int argc, char** argv)
 {
+  if (argc == 6 && std::string(argv[1]) == kMemoryJobOption)
+  {
+    return runMemoryJob(argv);
+  }
   BenchArguments args("shadelab_bench_normals",
     "slPolyDataNormals against vtkTriangleMeshPointNormals, vtkPolyDataNormals and OpenMesh on generated tori", 5);
   std::vector<double> sizes = { 0.1, 0.5, 2, 8 };
@@ -258,18 +340,21 @@ int main(int argc, char** argv)
   std::vector<Result> results;
   for (double millions : sizes)
   {
-    vtkSmartPointer<vtkPolyData> torus = slBenchTorus(static_cast<long long>(millions * 1e6));
     char size[32];
     std::snprintf(size, sizeof(size), "%gM triangles", millions);
-    if (order != "shuffled")
+    for (bool shuffled : { false, true })
     {
-      results.push_back(benchOne(torus, std::string(size) + ", ordered", args.runs(), threads, machine));
-    }
-    if (order != "ordered")
-    {
-      vtkSmartPointer<vtkPolyData> mixed = slBenchShuffled(torus, 1);
-      torus = nullptr;
-      results.push_back(benchOne(mixed, std::string(size) + ", shuffled", args.runs(), threads, machine));
+      if (order == (shuffled ? "ordered" : "shuffled"))
+      {
+        continue;
+      }
+      // Peak memory first, each job in a new process that builds the same
+      // mesh, before any filter is timed here.
+      vtkSmartPointer<vtkPolyData> mesh = benchMesh(millions, shuffled);
+      const std::string memory = memoryInNewProcesses(
+        millions, shuffled, threads, static_cast<double>(mesh->GetActualMemorySize()) * 1024.0);
+      results.push_back(benchOne(mesh, std::string(size) + (shuffled ? ", shuffled" : ", ordered"), memory,
+        args.runs(), threads, machine));
     }
   }
 
