@@ -395,3 +395,64 @@ TEST(MeshFormats, OBJStopsAtTheFirstFailedPieceAndSaysWhy)
     EXPECT_EQ(calls, 3) << threads << " threads";
   }
 }
+
+TEST(MeshFormats, OBJCornersNamingOtherNormalsReadAlikeOnAnyThreadCount)
+{
+  // Over 1 MiB, so that 2 and 4 threads parse it in stretches. Every face
+  // names one index for v and vn, except, in some cases, the first or the
+  // last face, whose first corner takes the second point's normal.
+  const int n = 150;
+  std::string points, faces;
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      points += "v " + std::to_string(i) + " " + std::to_string(j) + " 0.125\n";
+      points += "vn 0 " + std::to_string(0.5 + i % 3) + " 1\n";
+    }
+  }
+  int faceCount = 0;
+  for (int j = 0; j + 1 < n; ++j)
+  {
+    for (int i = 0; i + 1 < n; ++i, ++faceCount)
+    {
+      const int a = j * n + i + 1, b = a + 1, c = a + n + 1;
+      faces += "f " + std::to_string(a) + "//" + std::to_string(a) + " " + std::to_string(b) + "//" +
+        std::to_string(b) + " " + std::to_string(c) + "//" + std::to_string(c) + "\n";
+    }
+  }
+  const std::string odd = "f 1//2 2//2 152//152\n"; // point 1 with point 2's normal (0, 1.5, 1)
+  const std::pair<const char*, std::string> cases[] = { { "same everywhere", points + faces },
+    { "odd first face", points + odd + faces }, { "odd last face", points + faces + odd } };
+  for (const auto& [what, text] : cases)
+  {
+    ASSERT_GT(text.size(), size_t(1) << 20);
+    slMeshArrays one;
+    ASSERT_TRUE(slParseOBJ(text.data(), text.size(), false, one, 1)) << what;
+    const bool odd = std::string(what) != "same everywhere";
+    const size_t corners = 3 * static_cast<size_t>(faceCount + (odd ? 1 : 0));
+    // vtkOBJReader's points: the v list when every corner names one index,
+    // else one point per corner.
+    ASSERT_EQ(one.points.size(), odd ? 3 * corners : size_t(3 * n * n)) << what;
+    ASSERT_EQ(one.normals.size(), one.points.size()) << what;
+    if (odd)
+    {
+      const size_t k = std::string(what) == "odd first face" ? 0 : corners - 3;
+      EXPECT_EQ(std::vector<float>(one.points.begin() + 3 * k, one.points.begin() + 3 * k + 3),
+        std::vector<float>({ 0.0f, 0.0f, 0.125f })) << what;
+      EXPECT_EQ(std::vector<float>(one.normals.begin() + 3 * k, one.normals.begin() + 3 * k + 3),
+        std::vector<float>({ 0.0f, 1.5f, 1.0f })) << what;
+      // The next corner names point 2 and its own normal.
+      EXPECT_EQ(one.normals[3 * k + 4], 1.5f) << what;
+    }
+    for (int threads : { 2, 4 })
+    {
+      slMeshArrays many;
+      ASSERT_TRUE(slParseOBJ(text.data(), text.size(), false, many, threads)) << what;
+      EXPECT_EQ(many.points, one.points) << what << ", " << threads << " threads";
+      EXPECT_EQ(many.normals, one.normals) << what << ", " << threads << " threads";
+      EXPECT_EQ(many.offsets, one.offsets) << what << ", " << threads << " threads";
+      EXPECT_EQ(many.connectivity, one.connectivity) << what << ", " << threads << " threads";
+    }
+  }
+}

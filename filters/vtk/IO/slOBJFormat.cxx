@@ -162,10 +162,36 @@ struct Chunk
 {
   std::vector<float> v, vt, vn;
   std::vector<std::int64_t> corners;     // v index - 1 per corner
-  std::vector<std::int32_t> t, n;        // vt and vn index per corner, when the form has them
+  std::vector<std::int32_t> t, n;        // vt and vn index per corner, when the form has them (see sameIndex)
   std::vector<std::int64_t> faceCorners; // corners per face
   int form = Unknown;
   bool ok = true;
+  // Every corner so far names its v index for vt and vn too (the common
+  // case, "f 1//1 2//2 3//3"): t and n are then left empty, which saves
+  // writing, joining and faulting in 8 bytes per corner, until spelt out.
+  bool sameIndex = true;
+
+  /// Fills t and n from the corners' v indices, for the form @p hasT,
+  /// @p hasN; from then on every corner's t and n are kept.
+  void spellOut(bool hasT, bool hasN)
+  {
+    if (!this->sameIndex)
+    {
+      return;
+    }
+    this->sameIndex = false;
+    for (std::int64_t a : this->corners)
+    {
+      if (hasT)
+      {
+        this->t.push_back(static_cast<std::int32_t>(a + 1));
+      }
+      if (hasN)
+      {
+        this->n.push_back(static_cast<std::int32_t>(a + 1));
+      }
+    }
+  }
 };
 
 /// Parses the whole lines in [@p begin, @p end) into @p chunk.
@@ -218,14 +244,21 @@ void parseLines(const char* begin, const char* end, Chunk& chunk)
       std::int64_t count = 0;
       corners.clear();
       ok = face(c, chunk.form, corners, count);
+      const bool hasT = chunk.form == VT || chunk.form == VTN, hasN = chunk.form == VN || chunk.form == VTN;
       for (std::size_t k = 0; ok && k < corners.size(); k += 3)
       {
+        if (chunk.sameIndex && (!hasT || corners[k + 1] == corners[k]) && (!hasN || corners[k + 2] == corners[k]))
+        {
+          chunk.corners.push_back(corners[k] - 1);
+          continue;
+        }
+        chunk.spellOut(hasT, hasN);
         chunk.corners.push_back(corners[k] - 1);
-        if (chunk.form == VT || chunk.form == VTN)
+        if (hasT)
         {
           chunk.t.push_back(static_cast<std::int32_t>(corners[k + 1]));
         }
-        if (chunk.form == VN || chunk.form == VTN)
+        if (hasN)
         {
           chunk.n.push_back(static_cast<std::int32_t>(corners[k + 2]));
         }
@@ -296,6 +329,16 @@ bool slParseOBJ(const char* text, std::size_t size, bool merge, slMeshArrays& me
     }
     form = c.form == Unknown ? form : c.form;
   }
+  const bool hasT = form == VT || form == VTN, hasN = form == VN || form == VTN;
+  // t and n are kept per corner only if some corner names another index.
+  const bool sameIndex = std::all_of(chunks.begin(), chunks.end(), [](const Chunk& c) { return c.sameIndex; });
+  for (Chunk& c : chunks)
+  {
+    if (!sameIndex)
+    {
+      c.spellOut(hasT, hasN);
+    }
+  }
   std::vector<float> v = joined(chunks, &Chunk::v), vt = joined(chunks, &Chunk::vt), vn = joined(chunks, &Chunk::vn);
   std::vector<std::int32_t> t = joined(chunks, &Chunk::t), n = joined(chunks, &Chunk::n);
   mesh = slMeshArrays();
@@ -308,7 +351,6 @@ bool slParseOBJ(const char* text, std::size_t size, bool merge, slMeshArrays& me
     mesh.offsets[f + 1] = mesh.offsets[f] + faceCorners[f];
   }
 
-  const bool hasT = form == VT || form == VTN, hasN = form == VN || form == VTN;
   const std::int64_t nv = static_cast<std::int64_t>(v.size() / 3), nt = static_cast<std::int64_t>(vt.size() / 2),
                      nn = static_cast<std::int64_t>(vn.size() / 3);
   if (form == Unknown || (!hasT && nt > 0) || (!hasN && nn > 0))
@@ -320,7 +362,15 @@ bool slParseOBJ(const char* text, std::size_t size, bool merge, slMeshArrays& me
   for (std::size_t k = 0; k < cornerCount; ++k)
   {
     const std::int64_t a = mesh.connectivity[k];
-    if (a >= nv || (hasT && t[k] > nt) || (hasN && n[k] > nn))
+    if (a >= nv)
+    {
+      return false;
+    }
+    if (sameIndex)
+    {
+      continue; // t and n are a + 1: checked against nt and nn below
+    }
+    if ((hasT && t[k] > nt) || (hasN && n[k] > nn))
     {
       return false;
     }
