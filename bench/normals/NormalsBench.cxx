@@ -123,24 +123,26 @@ std::function<void()> ours(vtkPolyData* mesh, int weighting, bool split)
   };
 }
 
-/// The jobs whose peak memory the bench reports: each one update of a new
-/// filter.
-const char* const kMemoryJobs[] = { "angle no split", "split+cons", "vtkTriangleMeshPointNormals" };
-constexpr int kMemoryJobCount = 3;
-
-/// Memory job @p which (an index of kMemoryJobs) on @p mesh.
-std::function<void()> memoryJob(int which, vtkPolyData* mesh)
+/// The jobs whose peak memory the bench reports, each one update of a new
+/// filter on a mesh: their names and how each is made.
+struct MemoryJob
 {
-  if (which == 2)
-  {
-    return [mesh] {
-      vtkNew<vtkTriangleMeshPointNormals> f;
-      f->SetInputData(mesh);
-      f->Update();
-    };
-  }
-  return ours(mesh, slPolyDataNormals::ANGLE, which == 1);
-}
+  const char* name;
+  std::function<void()> (*make)(vtkPolyData* mesh);
+};
+const MemoryJob kMemoryJobs[] = {
+  { "angle no split", [](vtkPolyData* mesh) { return ours(mesh, slPolyDataNormals::ANGLE, false); } },
+  { "split+cons", [](vtkPolyData* mesh) { return ours(mesh, slPolyDataNormals::ANGLE, true); } },
+  { "vtkTriangleMeshPointNormals",
+    [](vtkPolyData* mesh) {
+      return std::function<void()>([mesh] {
+        vtkNew<vtkTriangleMeshPointNormals> f;
+        f->SetInputData(mesh);
+        f->Update();
+      });
+    } },
+};
+constexpr int kMemoryJobCount = static_cast<int>(sizeof(kMemoryJobs) / sizeof(kMemoryJobs[0]));
 
 /// The torus of @p millions million triangles, shuffled or not, exactly as
 /// the bench makes it.
@@ -169,10 +171,10 @@ int runMemoryJob(char** argv)
   }
   {
     vtkSmartPointer<vtkPolyData> small = slBenchTorus(20000);
-    memoryJob(which, small)();
+    kMemoryJobs[which].make(small)();
   }
   vtkSmartPointer<vtkPolyData> mesh = benchMesh(millions, shuffled);
-  std::printf("%lld\n", slPeakMemoryAbove(memoryJob(which, mesh)));
+  std::printf("%lld\n", slPeakMemoryAbove(kMemoryJobs[which].make(mesh)));
   return 0;
 }
 
@@ -183,13 +185,13 @@ std::string memoryInNewProcesses(double millions, bool shuffled, int threads, do
 {
   char self[4096];
   const ssize_t length = readlink("/proc/self/exe", self, sizeof(self) - 1);
+  self[length > 0 ? length : 0] = '\0';
   std::string text;
   for (int which = 0; which < kMemoryJobCount; ++which)
   {
     long long peak = -1;
     if (length > 0)
     {
-      self[length] = '\0';
       char command[4200];
       std::snprintf(command, sizeof(command), "'%s' %s %.17g %s %d %d", self, kMemoryJobOption, millions,
         shuffled ? "shuffled" : "ordered", which, threads);
@@ -208,11 +210,11 @@ std::string memoryInNewProcesses(double millions, bool shuffled, int threads, do
     char cell[96];
     if (peak < 0)
     {
-      std::snprintf(cell, sizeof(cell), " %s (not measured);", kMemoryJobs[which]);
+      std::snprintf(cell, sizeof(cell), " %s (not measured);", kMemoryJobs[which].name);
     }
     else
     {
-      std::snprintf(cell, sizeof(cell), " %s %.2fx;", kMemoryJobs[which], static_cast<double>(peak) / inputBytes);
+      std::snprintf(cell, sizeof(cell), " %s %.2fx;", kMemoryJobs[which].name, static_cast<double>(peak) / inputBytes);
     }
     text += cell;
   }

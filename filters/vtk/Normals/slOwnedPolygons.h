@@ -80,6 +80,6 @@ vtkSmartPointer<vtkCellArray> slRemapCells(vtkCellArray* cells, const std::vecto
 /// tuples, its values to be written: @p previous (the filter's last output
 /// array, moved in) when nothing else holds it and it has that shape
 /// (shadelab::recycleParallelFillArray()), else a new one.
-vtkSmartPointer<vtkFloatArray> slMakeNormalsArray(vtkIdType tuples, vtkSmartPointer<vtkDataArray> previous = nullptr);
+vtkSmartPointer<vtkFloatArray> slMakeNormalsArray(vtkIdType tuples, vtkSmartPointer<vtkDataArray> previous);
 
 #endif
