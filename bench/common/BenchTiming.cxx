@@ -73,14 +73,35 @@ std::vector<BenchTimes> timeInterleaved(int runs, const std::vector<std::functio
   std::vector<BenchTimes> t(jobs.size());
   for (int r = 0; r < runs; ++r)
   {
-    // Round r starts with job r: each job follows each other job as often
-    // (a job right after one that churned memory or left the thread pool
-    // idle for long runs slower).
-    for (size_t i = 0; i < jobs.size(); ++i)
+    for (const size_t j : roundOrder(jobs.size(), r))
     {
-      const size_t j = (i + static_cast<size_t>(r)) % jobs.size();
       timeOnce(jobs[j], t[j]);
     }
   }
   return t;
+}
+
+std::vector<size_t> roundOrder(size_t jobs, int round)
+{
+  if (jobs == 0)
+  {
+    return {};
+  }
+  // Williams (1949): the first row 0, 1, n-1, 2, n-2, ... steps by +1, -2,
+  // +3, -4, ... (mod n), every step a different one, so row r = row 0 + r
+  // puts each job after each other job once in n rows. When n is odd two
+  // steps are equal, and the rows reversed make up for it.
+  const size_t cycle = jobs % 2 ? 2 * jobs : jobs;
+  const size_t row = static_cast<size_t>(round) % cycle;
+  std::vector<size_t> order(jobs);
+  for (size_t k = 0; k < jobs; ++k)
+  {
+    const size_t first = k % 2 ? (k + 1) / 2 : (jobs - k / 2) % jobs;
+    order[k] = (first + row) % jobs;
+  }
+  if (row >= jobs)
+  {
+    std::reverse(order.begin(), order.end());
+  }
+  return order;
 }
