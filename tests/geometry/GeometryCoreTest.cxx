@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -140,6 +141,56 @@ TEST(GeometryCore, OrientationRepairsAFlippedNeighbour)
   slnormals::computeUnitFaceNormals(p, m.xyz.data(), n.data(), Parallel());
   EXPECT_EQ(n[2], n[5]);
   EXPECT_NEAR(std::abs(n[2]), 1.0f, 1e-6);
+}
+
+TEST(GeometryCore, PointsWithoutCornersAreThoseNoPolygonUses)
+{
+  // A strip of 4000 quads over two rows of 4001 points, except that every
+  // tenth point of the bottom row (10, 20, ..., 3990) is left out of both
+  // quads beside it, which are triangles instead; and 7 more points that no
+  // polygon names. Counted in ranges of the grain, run last first, as a
+  // thread pool might.
+  Mesh m;
+  const int64_t n = 4001;
+  m.xyz.assign(static_cast<size_t>(3 * 2 * n + 3 * 7), 0.0); // 7 more points no polygon names
+  size_t skipped = 0;
+  for (int64_t x = 0; x + 1 < n; ++x)
+  {
+    const int64_t a = x, b = x + 1, c = n + x + 1, d = n + x;
+    if (a % 10 == 0 && a > 0 && a + 1 < n)
+    {
+      m.add({ b, c, d });
+      ++skipped;
+    }
+    else if (b % 10 == 0 && b + 1 < n)
+    {
+      m.add({ a, c, d });
+    }
+    else
+    {
+      m.add({ a, b, c, d });
+    }
+  }
+  std::vector<char> named(static_cast<size_t>(m.numPoints()), 0);
+  for (const int64_t id : m.connectivity)
+  {
+    named[static_cast<size_t>(id)] = 1;
+  }
+  const int64_t unnamed = std::count(named.begin(), named.end(), char(0));
+  ASSERT_EQ(unnamed, static_cast<int64_t>(skipped) + 7);
+
+  Parallel chunked;
+  chunked.forRange = [](int64_t begin, int64_t end, int64_t grain, const Parallel::Body& body) {
+    const int64_t step = std::max<int64_t>(grain, 1);
+    for (int64_t b = begin + (end - begin - 1) / step * step; b >= begin; b -= step)
+    {
+      body(b, std::min(end, b + step));
+    }
+  };
+  slnormals::VertexCorners<int64_t> vc;
+  vc.build(m.polygons(), m.numPoints(), chunked);
+  EXPECT_EQ(vc.pointsWithoutCorners(chunked), unnamed);
+  EXPECT_EQ(vc.pointsWithoutCorners(Parallel()), unnamed);
 }
 
 TEST(GeometryCore, OrientationTurnsAClosedSurfaceOutward)

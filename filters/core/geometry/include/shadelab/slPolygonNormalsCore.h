@@ -192,15 +192,23 @@ void computePolygonNormals(const PolygonNormalsSettings& s, Polygons<Id> polys, 
     int64_t unused = 0;
     auto allocate = [&](int64_t splitPoints) {
       // Points used by no polygon are kept after the split ones, with (0,0,0).
-      // Counted on the polygons as given: with welding, a seam duplicate has no
-      // corners in the welded topology, yet the split emits it as a point.
-      ScratchArray<char> used(par, static_cast<size_t>(numPoints));
-      std::fill(used.begin(), used.end(), char(0));
-      for (int64_t c = 0; c < numCorners; ++c)
+      // Without welding they are the points with no corner in the table. With
+      // welding, a seam duplicate has no corners in the welded topology, yet
+      // the split emits it as a point: they are counted on the polygons as given.
+      if (!welded)
       {
-        used[static_cast<size_t>(polys.connectivity[c])] = 1;
+        unused = corners.pointsWithoutCorners(par);
       }
-      unused = std::count(used.begin(), used.end(), 0);
+      else
+      {
+        ScratchArray<char> used(par, static_cast<size_t>(numPoints));
+        std::fill(used.begin(), used.end(), char(0));
+        for (int64_t c = 0; c < numCorners; ++c)
+        {
+          used[static_cast<size_t>(polys.connectivity[c])] = 1;
+        }
+        unused = std::count(used.begin(), used.end(), 0);
+      }
       normals = result.allocateNormals(splitPoints + unused);
       result.source = ScratchArray<int64_t>(par, static_cast<size_t>(splitPoints + unused));
       SplitOutput out;

@@ -148,6 +148,23 @@ struct VertexCorners
     });
   }
 
+  /// How many points of the table (built on numPoints points) have no
+  /// corner: the points used by no polygon.
+  int64_t pointsWithoutCorners(const Parallel& parallel) const
+  {
+    const int64_t numPoints = static_cast<int64_t>(this->offsets.size()) - 1;
+    std::atomic<int64_t> count{ 0 };
+    parallel.forRange(0, numPoints, 65536, [&](int64_t b, int64_t e) {
+      int64_t none = 0;
+      for (int64_t v = b; v < e; ++v)
+      {
+        none += this->offsets[static_cast<size_t>(v) + 1] == this->offsets[static_cast<size_t>(v)];
+      }
+      count += none;
+    });
+    return count;
+  }
+
 private:
   /// True if every polygon has three corners (the corner count alone would
   /// take a 2-gon and a 4-gon for two triangles).
