@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <functional>
 #include <map>
+#include <string>
 
 namespace
 {
@@ -93,6 +94,27 @@ Vec tuple(vtkDataArray* a, vtkIdType i)
   Vec v;
   a->GetTuple(i, v.data());
   return v;
+}
+
+/// The normals of the output points at the origin, which must be unit
+/// vectors along z, one facing -z and one +z (two apexes meeting there).
+void expectApexesFacingApart(vtkPolyData* out)
+{
+  vtkDataArray* normals = out->GetPointData()->GetNormals();
+  std::vector<double> apexZ;
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    out->GetPoint(i, p);
+    if (p[0] == 0 && p[1] == 0 && p[2] == 0)
+    {
+      const Vec nv = tuple(normals, i);
+      EXPECT_NEAR(std::fabs(nv[2]), 1.0, 1e-6);
+      apexZ.push_back(nv[2]);
+    }
+  }
+  ASSERT_EQ(apexZ.size(), 2u);
+  EXPECT_NEAR(apexZ[0] + apexZ[1], 0.0, 1e-6);
 }
 
 void expectNear(const Vec& a, const Vec& b, double tol = 1e-6)
@@ -463,21 +485,43 @@ TEST(Normals, PointsThatAreNotOneSmoothClosedFanTakeTheGeneralGrouping)
     { { 0, 1, 2 }, { 0, 2, 3 }, { 0, 3, 4 }, { 0, 4, 1 }, { 0, 5, 6 }, { 0, 6, 7 }, { 0, 7, 8 }, { 0, 8, 5 } });
   Result tie = run(bowtie, [](slPolyDataNormals* f) { f->SetFeatureAngle(180); });
   ASSERT_EQ(tie.out->GetNumberOfPoints(), 10);
-  vtkDataArray* normals = tie.out->GetPointData()->GetNormals();
-  std::vector<double> apexZ;
-  for (vtkIdType i = 0; i < tie.out->GetNumberOfPoints(); ++i)
+  expectApexesFacingApart(tie.out);
+}
+
+TEST(Normals, FansOfManyCornersGroupAsFansOfFew)
+{
+  // Double cones (two open cones of n sides, apex to apex at the origin,
+  // 45 degrees): the apex has 2n corners in two smooth closed fans, and
+  // becomes two points facing -z and +z, whether the fan walk hashes its
+  // steps (up to 32 corners) or scans for them. Neighbouring sides are
+  // 25 degrees apart or less (n >= 10), under the 30 degree feature angle.
+  for (const int n : { 10, 16, 17, 40 })
   {
-    double p[3];
-    tie.out->GetPoint(i, p);
-    if (p[0] == 0 && p[1] == 0 && p[2] == 0)
+    std::vector<Vec> pts = { { 0, 0, 0 } };
+    std::vector<std::vector<vtkIdType>> tris;
+    for (const double z : { 1.0, -1.0 })
     {
-      const Vec nv = tuple(normals, i);
-      EXPECT_NEAR(std::fabs(nv[2]), 1.0, 1e-6);
-      apexZ.push_back(nv[2]);
+      const vtkIdType first = static_cast<vtkIdType>(pts.size());
+      for (int i = 0; i < n; ++i)
+      {
+        const double a = 2 * M_PI * i / n;
+        pts.push_back({ std::cos(a), std::sin(a), z });
+      }
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        const vtkIdType b = first + i, c = first + (i + 1) % n;
+        // Every side faces away from the axis, so both cones run the same way.
+        tris.push_back(z > 0 ? std::vector<vtkIdType>{ 0, c, b } : std::vector<vtkIdType>{ 0, b, c });
+      }
     }
+    Result cones = run(mesh(pts, tris));
+    ASSERT_EQ(cones.out->GetNumberOfPoints(), 2 * n + 2) << n << " sides";
+    // A side's normal is (cos a, sin a, -1) / sqrt 2 on the upper cone and
+    // (cos a, sin a, 1) / sqrt 2 on the lower: over a full turn the sums
+    // point along the axis, -z and +z.
+    SCOPED_TRACE(std::to_string(n) + " sides");
+    expectApexesFacingApart(cones.out);
   }
-  ASSERT_EQ(apexZ.size(), 2u);
-  EXPECT_NEAR(apexZ[0] + apexZ[1], 0.0, 1e-6);
 }
 
 TEST(Normals, AFilterRunAgainOnAnotherMeshGivesWhatANewFilterGives)

@@ -57,8 +57,9 @@ namespace detail
 template <typename T>
 struct SplitScratch
 {
-  std::vector<int64_t> prev, next, orig;
-  std::vector<glm::vec<3, T>> normal; ///< unit normal of each corner's polygon
+  int k = 0; ///< corners of the point: the per-corner vectors hold k or more entries, the first k its
+  std::vector<int64_t> prev, next, orig; ///< per corner (orig only with welding)
+  std::vector<glm::vec<3, T>> normal;    ///< unit normal of each corner's polygon
   std::vector<int> parent;
   std::vector<std::pair<int64_t, int>> ends; ///< (other point, corner) per edge end, by point
   std::vector<int> group; ///< per corner, 0..numGroups-1
@@ -66,6 +67,23 @@ struct SplitScratch
   std::vector<std::pair<int64_t, int>> slots; ///< (original id, group) per slot
   std::vector<glm::vec<3, T>> sums;
   bool fan = false; ///< the last point was one smooth closed fan
+
+  /// Room for a point of @p corners corners. The per-corner vectors only
+  /// grow: five resizes at every point took a fifth of the grouping's
+  /// instructions.
+  void resize(int corners)
+  {
+    this->k = corners;
+    const size_t n = static_cast<size_t>(corners);
+    if (this->prev.size() < n)
+    {
+      this->prev.resize(n);
+      this->next.resize(n);
+      this->orig.resize(n);
+      this->normal.resize(n);
+      this->group.resize(n);
+    }
+  }
 
   int find(int i)
   {
@@ -95,6 +113,45 @@ inline bool smoothAcross(const glm::vec<3, T>& ni, const glm::vec<3, T>& nj, T c
   return glm::dot(ni, nj) >= cosFeature || glm::dot(ni, ni) == T(0) || glm::dot(nj, nj) == T(0);
 }
 
+/// Fans of at most this many corners (nearly all) find their walk's steps
+/// with a small hash table (fanSteps); larger ones scan for each step.
+constexpr int kHashedFan = 32;
+
+/// The fan walk's step of every corner at once: @p to[i] is the first corner
+/// j whose previous point is corner i's next point (prev[j] == next[i]);
+/// false if some corner has no such j. @p k is at most kHashedFan: the
+/// previous points go into a 64-slot open-addressing table (Fibonacci
+/// hashing), and the k steps cost about 2k probes instead of k² compares.
+inline bool fanSteps(const int64_t* prev, const int64_t* next, int k, int* to)
+{
+  uint8_t slot[64] = {}; // a corner + 1; 0 is empty
+  auto home = [](int64_t id) {
+    return static_cast<unsigned>((static_cast<uint64_t>(id) * 0x9E3779B97F4A7C15ull) >> 58);
+  };
+  for (int j = 0; j < k; ++j)
+  {
+    unsigned h = home(prev[j]);
+    while (slot[h])
+    {
+      h = (h + 1) & 63;
+    }
+    slot[h] = static_cast<uint8_t>(j + 1);
+  }
+  for (int i = 0; i < k; ++i)
+  {
+    unsigned h = home(next[i]);
+    for (; slot[h] && prev[slot[h] - 1] != next[i]; h = (h + 1) & 63)
+    {
+    }
+    if (!slot[h])
+    {
+      return false;
+    }
+    to[i] = slot[h] - 1;
+  }
+  return true;
+}
+
 /// True if the k corners in @p s form one closed fan with only smooth edges,
 /// so that they are all one group. That is most points of a smooth closed
 /// surface, and it is decided by walking the fan once instead of sorting
@@ -111,22 +168,47 @@ inline bool smoothAcross(const glm::vec<3, T>& ni, const glm::vec<3, T>& nj, T c
 /// Boundaries, non-manifold edges, bowtie points (two fans), polygons
 /// running the wrong way and sharp edges all return false and take the
 /// general pass, so the groups are the same either way.
+///
+/// Fans of up to kHashedFan corners take every corner's step first
+/// (fanSteps), and it gives the same answer. A corner without a step fails
+/// the walk whether or not the walk would have reached it: a walk that
+/// succeeds reaches every corner. Two corners with the same previous point
+/// need no check: only the first is ever stepped onto, so the walk cannot
+/// reach both, and fails.
 template <typename T>
 bool smoothClosedFan(const SplitScratch<T>& s, int k, T cosFeature)
 {
+  int to[kHashedFan];
+  const bool hashed = k <= kHashedFan;
+  if (hashed && !fanSteps(s.prev.data(), s.next.data(), k, to))
+  {
+    return false;
+  }
   int i = 0;
   for (int step = 1; step <= k; ++step)
   {
-    // Counted without branches: which prev matches is unpredictable.
-    const int64_t w = s.next[static_cast<size_t>(i)];
-    int j = -1, matches = 0;
-    for (int m = 0; m < k; ++m)
+    int j = -1;
+    if (hashed)
     {
-      const bool match = s.prev[static_cast<size_t>(m)] == w;
-      matches += match;
-      j = match ? m : j;
+      j = to[i];
     }
-    if (matches != 1 || !smoothAcross(s.normal[static_cast<size_t>(i)], s.normal[static_cast<size_t>(j)], cosFeature))
+    else
+    {
+      // Counted without branches: which prev matches is unpredictable.
+      const int64_t w = s.next[static_cast<size_t>(i)];
+      int matches = 0;
+      for (int m = 0; m < k; ++m)
+      {
+        const bool match = s.prev[static_cast<size_t>(m)] == w;
+        matches += match;
+        j = match ? m : j;
+      }
+      if (matches != 1)
+      {
+        return false;
+      }
+    }
+    if (!smoothAcross(s.normal[static_cast<size_t>(i)], s.normal[static_cast<size_t>(j)], cosFeature))
     {
       return false;
     }
@@ -149,24 +231,26 @@ int buildGroups(const Polygons<Id>& polys, const Id* original, const T* unit, co
 {
   const int32_t b = vc.offsets[static_cast<size_t>(v)];
   const int k = vc.offsets[static_cast<size_t>(v) + 1] - b;
-  s.prev.resize(k);
-  s.next.resize(k);
-  s.orig.resize(k);
-  s.group.resize(k);
-  s.normal.resize(k);
+  s.resize(k);
   for (int i = 0; i < k; ++i)
   {
     const int64_t c = vc.corners[static_cast<size_t>(b + i)];
     const typename VertexCorners<Id>::Around a = vc.around(polys, c);
     s.next[i] = polys.connectivity[a.next];
     s.prev[i] = polys.connectivity[a.prev];
-    s.orig[i] = original ? static_cast<int64_t>(original[c]) : v;
     s.normal[i] = glm::vec<3, T>(unit[3 * a.face], unit[3 * a.face + 1], unit[3 * a.face + 2]);
+  }
+  if (original)
+  {
+    for (int i = 0; i < k; ++i)
+    {
+      s.orig[i] = static_cast<int64_t>(original[vc.corners[static_cast<size_t>(b + i)]]);
+    }
   }
   s.fan = k > 0 && smoothClosedFan(s, k, cosFeature);
   if (s.fan)
   {
-    std::fill(s.group.begin(), s.group.end(), 0);
+    std::fill(s.group.begin(), s.group.begin() + k, 0);
     return 1;
   }
   s.parent.resize(k);
@@ -238,7 +322,7 @@ int groupCorners(const Polygons<Id>& polys, const Id* original, const T* unit, c
   {
     return groups;
   }
-  const int k = static_cast<int>(s.group.size());
+  const int k = s.k;
   s.slot.resize(k);
   s.slots.clear();
   for (int i = 0; i < k; ++i)
@@ -306,12 +390,12 @@ int64_t splitVertexNormals(const Polygons<Id>& topology, const Id* original, con
     {
       const int slots = detail::groupCorners(topology, original, unit.data(), vc, v, cosFeature, s);
       base[static_cast<size_t>(v + 1)] = slots;
-      inconsistentHere = inconsistent && !s.fan && detail::hasRepeat(s.next.data(), static_cast<int>(s.next.size()));
+      inconsistentHere = inconsistent && !s.fan && detail::hasRepeat(s.next.data(), s.k);
       if (!original)
       {
         overflows = overflows || slots >= recompute;
         const int32_t first = vc.offsets[static_cast<size_t>(v)];
-        for (size_t i = 0; i < s.group.size(); ++i)
+        for (int i = 0; i < s.k; ++i)
         {
           stored[first + i] = slots < recompute ? static_cast<uint16_t>(s.group[i]) : recompute;
         }
