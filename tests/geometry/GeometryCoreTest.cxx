@@ -50,6 +50,22 @@ struct Mesh
   int64_t numPoints() const { return static_cast<int64_t>(this->xyz.size() / 3); }
 };
 
+/// A serial stand-in for a pool of @p threads threads: ranges of the grain,
+/// run last first, as a pool might run them.
+Parallel backwardsInGrains(int threads)
+{
+  Parallel p;
+  p.threads = threads;
+  p.forRange = [](int64_t begin, int64_t end, int64_t grain, const Parallel::Body& body) {
+    const int64_t step = std::max<int64_t>(grain, 1);
+    for (int64_t b = begin + (end - begin - 1) / step * step; b >= begin; b -= step)
+    {
+      body(b, std::min(end, b + step));
+    }
+  };
+  return p;
+}
+
 void expectUnit(const float* n, double x, double y, double z)
 {
   const double length = std::sqrt(x * x + y * y + z * z);
@@ -143,6 +159,44 @@ TEST(GeometryCore, OrientationRepairsAFlippedNeighbour)
   EXPECT_NEAR(std::abs(n[2]), 1.0f, 1e-6);
 }
 
+TEST(GeometryCore, CornerTableListsEachPointsCornersInOrderOnAnyThreadCount)
+{
+  // 100 000 triangles (300 000 corners, more than the 2^18 under which the
+  // table is built in one chunk) on 20 000 points, ids from a fixed
+  // pseudo-random sequence, so that points have 0 to 40 corners in no order.
+  Mesh m;
+  m.xyz.assign(3 * 20000, 0.0);
+  uint64_t state = 12345;
+  auto nextId = [&] {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<int64_t>((state >> 33) % 20000);
+  };
+  for (int f = 0; f < 100000; ++f)
+  {
+    m.add({ nextId(), nextId(), nextId() });
+  }
+  // The table by hand: every point's connectivity positions, in increasing order.
+  std::vector<std::vector<int32_t>> expected(20000);
+  for (size_t c = 0; c < m.connectivity.size(); ++c)
+  {
+    expected[static_cast<size_t>(m.connectivity[c])].push_back(static_cast<int32_t>(c));
+  }
+  for (const int threads : { 1, 2, 3, 8 })
+  {
+    const Parallel chunked = backwardsInGrains(threads);
+    slnormals::VertexCorners<int64_t> vc;
+    vc.build(m.polygons(), m.numPoints(), chunked);
+    ASSERT_EQ(vc.offsets.size(), expected.size() + 1) << threads << " threads";
+    EXPECT_EQ(vc.offsets[0], 0);
+    for (size_t v = 0; v < expected.size(); ++v)
+    {
+      const std::vector<int32_t> got(vc.corners.data() + vc.offsets[v], vc.corners.data() + vc.offsets[v + 1]);
+      ASSERT_EQ(got, expected[v]) << "point " << v << ", " << threads << " threads";
+    }
+    EXPECT_EQ(vc.offsets[expected.size()], 300000);
+  }
+}
+
 TEST(GeometryCore, PointsWithoutCornersAreThoseNoPolygonUses)
 {
   // A strip of 4000 quads over two rows of 4001 points, except that every
@@ -179,14 +233,7 @@ TEST(GeometryCore, PointsWithoutCornersAreThoseNoPolygonUses)
   const int64_t unnamed = std::count(named.begin(), named.end(), char(0));
   ASSERT_EQ(unnamed, static_cast<int64_t>(skipped) + 7);
 
-  Parallel chunked;
-  chunked.forRange = [](int64_t begin, int64_t end, int64_t grain, const Parallel::Body& body) {
-    const int64_t step = std::max<int64_t>(grain, 1);
-    for (int64_t b = begin + (end - begin - 1) / step * step; b >= begin; b -= step)
-    {
-      body(b, std::min(end, b + step));
-    }
-  };
+  const Parallel chunked = backwardsInGrains(1);
   slnormals::VertexCorners<int64_t> vc;
   vc.build(m.polygons(), m.numPoints(), chunked);
   EXPECT_EQ(vc.pointsWithoutCorners(chunked), unnamed);

@@ -343,7 +343,9 @@ int groupCorners(const Polygons<Id>& polys, const Id* original, const T* unit, c
  * Splits points along feature edges and computes their normals.
  * @p topology: polygons on welded ids (size numPoints); @p original: the
  * same polygons' original point ids, or null when not welded; @p vc: the
- * corner table of @p topology. @p allocate(numOutputPoints) returns where to
+ * corner table of @p topology, emptied when the split no longer needs it
+ * (without welding, before the normals are summed: the sums' scratch can
+ * take its memory). @p allocate(numOutputPoints) returns where to
  * write; @p outConnectivity (same size as the connectivity) receives the
  * output point id of every corner. Returns the number of output points;
  * points used by no polygon are not output.
@@ -356,12 +358,13 @@ int groupCorners(const Polygons<Id>& polys, const Id* original, const T* unit, c
  * and call again.
  *
  * Memory besides the output: the polygons' unit normals (3 T each), one
- * 16-bit group number per corner (without welding), and the accumulators of
- * slVertexNormalsCore.h.
+ * 16-bit group number per corner (without welding), the output points
+ * before each point's (32-bit: fewer than the corners), and the
+ * accumulators of slVertexNormalsCore.h.
  */
 template <typename T, typename Id, typename OutId, typename Allocate>
 int64_t splitVertexNormals(const Polygons<Id>& topology, const Id* original, const T* xyz, int64_t numPoints,
-  const VertexCorners<Id>& vc, Weighting weighting, T cosFeature, OutId* outConnectivity, Allocate&& allocate,
+  VertexCorners<Id>& vc, Weighting weighting, T cosFeature, OutId* outConnectivity, Allocate&& allocate,
   const Parallel& parallel, bool* inconsistent = nullptr)
 {
   using V = glm::vec<3, T>;
@@ -379,7 +382,7 @@ int64_t splitVertexNormals(const Polygons<Id>& topology, const Id* original, con
   });
   constexpr uint16_t recompute = 0xFFFF;
   ScratchArray<uint16_t> stored(parallel, original ? 0 : vc.corners.size());
-  const ScratchArray<int64_t> base(parallel, static_cast<size_t>(numPoints + 1));
+  const ScratchArray<int32_t> base(parallel, static_cast<size_t>(numPoints + 1));
   base[0] = 0;
   std::atomic<bool> overflow{ false }, wrongWay{ false };
   parallel.forRange(0, numPoints, 4096, [&](int64_t b, int64_t e) {
@@ -441,6 +444,7 @@ int64_t splitVertexNormals(const Polygons<Id>& topology, const Id* original, con
       }
     });
     stored.reset();
+    vc.reset();
     if (!accumulateNormals(topology, outConnectivity, xyz, numPoints, total, weighting, out.normals, parallel))
     {
       // The corner table was built from these ids, so they were checked.

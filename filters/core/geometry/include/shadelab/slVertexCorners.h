@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 namespace slnormals
@@ -81,22 +82,30 @@ struct VertexCorners
     const int64_t chunks =
       numCorners < (int64_t(1) << 18) ? 1 : std::max<int64_t>(1, std::min<int64_t>(parallel.threads, 8));
     auto chunkBegin = [&](int64_t k) { return numCorners * k / chunks; };
-    // cursor[k][v]: corners of chunk k at point v, then where the next one goes.
-    std::vector<ScratchArray<int32_t>> cursor(static_cast<size_t>(chunks));
+    // cursor(k)[v]: corners of chunk k at point v, then where the next one
+    // goes. Chunk 0 counts in the offsets themselves, which then hold where
+    // its corners go, and are put back after the fill: one array of a point
+    // each fewer.
+    this->offsets = ScratchArray<int32_t>(parallel, static_cast<size_t>(numPoints + 1));
+    std::vector<ScratchArray<int32_t>> others(static_cast<size_t>(chunks - 1));
+    auto cursor = [&](int64_t k) { return k == 0 ? this->offsets.data() : others[static_cast<size_t>(k - 1)].data(); };
     parallel.forRange(0, chunks, 1, [&](int64_t kb, int64_t ke) {
       for (int64_t k = kb; k < ke; ++k)
       {
-        ScratchArray<int32_t>& count = cursor[static_cast<size_t>(k)];
-        count = ScratchArray<int32_t>(parallel, static_cast<size_t>(numPoints));
-        std::fill(count.begin(), count.end(), 0);
+        if (k > 0)
+        {
+          others[static_cast<size_t>(k - 1)] = ScratchArray<int32_t>(parallel, static_cast<size_t>(numPoints));
+        }
+        int32_t* count = cursor(k);
+        std::fill(count, count + numPoints, 0);
         for (int64_t c = chunkBegin(k); c < chunkBegin(k + 1); ++c)
         {
-          ++count[static_cast<size_t>(conn[c])];
+          ++count[conn[c]];
         }
       }
     });
-    // Offsets by a two-pass parallel prefix sum over blocks of points.
-    this->offsets = ScratchArray<int32_t>(parallel, static_cast<size_t>(numPoints + 1));
+    // Where each chunk's corners start at each point, by a two-pass
+    // parallel prefix sum over blocks of points.
     const int64_t block = 65536;
     const int64_t numBlocks = (numPoints + block - 1) / block;
     std::vector<int64_t> blockStart(static_cast<size_t>(numBlocks + 1), 0);
@@ -106,9 +115,9 @@ struct VertexCorners
         int64_t sum = 0;
         for (int64_t v = i * block; v < std::min(numPoints, (i + 1) * block); ++v)
         {
-          for (const ScratchArray<int32_t>& count : cursor)
+          for (int64_t k = 0; k < chunks; ++k)
           {
-            sum += count[static_cast<size_t>(v)];
+            sum += cursor(k)[v];
           }
         }
         blockStart[static_cast<size_t>(i + 1)] = sum;
@@ -124,28 +133,52 @@ struct VertexCorners
         int64_t next = blockStart[static_cast<size_t>(i)];
         for (int64_t v = i * block; v < std::min(numPoints, (i + 1) * block); ++v)
         {
-          this->offsets[static_cast<size_t>(v)] = static_cast<int32_t>(next);
-          for (ScratchArray<int32_t>& count : cursor)
+          for (int64_t k = 0; k < chunks; ++k)
           {
-            const int32_t n = count[static_cast<size_t>(v)];
-            count[static_cast<size_t>(v)] = static_cast<int32_t>(next);
+            const int32_t n = cursor(k)[v];
+            cursor(k)[v] = static_cast<int32_t>(next);
             next += n;
           }
         }
       }
     });
-    this->offsets[static_cast<size_t>(numPoints)] = static_cast<int32_t>(numCorners);
     this->corners = ScratchArray<int32_t>(parallel, static_cast<size_t>(numCorners));
     parallel.forRange(0, chunks, 1, [&](int64_t kb, int64_t ke) {
       for (int64_t k = kb; k < ke; ++k)
       {
-        ScratchArray<int32_t>& next = cursor[static_cast<size_t>(k)];
+        int32_t* next = cursor(k);
         for (int64_t c = chunkBegin(k); c < chunkBegin(k + 1); ++c)
         {
-          this->corners[static_cast<size_t>(next[static_cast<size_t>(conn[c])]++)] = static_cast<int32_t>(c);
+          this->corners[static_cast<size_t>(next[conn[c]]++)] = static_cast<int32_t>(c);
         }
       }
     });
+    // The last chunk's cursor at v now stands where point v + 1 starts.
+    int32_t* o = this->offsets.data();
+    if (chunks == 1)
+    {
+      std::memmove(o + 1, o, static_cast<size_t>(numPoints) * sizeof(int32_t));
+    }
+    else
+    {
+      const int32_t* last = cursor(chunks - 1);
+      parallel.forRange(1, numPoints, 65536, [&](int64_t b, int64_t e) {
+        for (int64_t v = b; v < e; ++v)
+        {
+          o[v] = last[v - 1];
+        }
+      });
+    }
+    o[0] = 0;
+    o[numPoints] = static_cast<int32_t>(numCorners);
+  }
+
+  /// Gives the table's memory back; the table is then empty.
+  void reset() noexcept
+  {
+    this->offsets.reset();
+    this->corners.reset();
+    this->cornerFace.reset();
   }
 
   /// How many points of the table (built on numPoints points) have no
