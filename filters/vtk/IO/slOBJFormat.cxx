@@ -247,21 +247,20 @@ void parseLines(const char* begin, const char* end, Chunk& chunk)
       const bool hasT = chunk.form == VT || chunk.form == VTN, hasN = chunk.form == VN || chunk.form == VTN;
       for (std::size_t k = 0; ok && k < corners.size(); k += 3)
       {
-        if (chunk.sameIndex && (!hasT || corners[k + 1] == corners[k]) && (!hasN || corners[k + 2] == corners[k]))
+        const bool same = (!hasT || corners[k + 1] == corners[k]) && (!hasN || corners[k + 2] == corners[k]);
+        if (!(chunk.sameIndex && same))
         {
-          chunk.corners.push_back(corners[k] - 1);
-          continue;
+          chunk.spellOut(hasT, hasN); // before this corner joins the corners spelt out
+          if (hasT)
+          {
+            chunk.t.push_back(static_cast<std::int32_t>(corners[k + 1]));
+          }
+          if (hasN)
+          {
+            chunk.n.push_back(static_cast<std::int32_t>(corners[k + 2]));
+          }
         }
-        chunk.spellOut(hasT, hasN);
         chunk.corners.push_back(corners[k] - 1);
-        if (hasT)
-        {
-          chunk.t.push_back(static_cast<std::int32_t>(corners[k + 1]));
-        }
-        if (hasN)
-        {
-          chunk.n.push_back(static_cast<std::int32_t>(corners[k + 2]));
-        }
       }
       chunk.faceCorners.push_back(count);
     }
@@ -332,9 +331,9 @@ bool slParseOBJ(const char* text, std::size_t size, bool merge, slMeshArrays& me
   const bool hasT = form == VT || form == VTN, hasN = form == VN || form == VTN;
   // t and n are kept per corner only if some corner names another index.
   const bool sameIndex = std::all_of(chunks.begin(), chunks.end(), [](const Chunk& c) { return c.sameIndex; });
-  for (Chunk& c : chunks)
+  if (!sameIndex)
   {
-    if (!sameIndex)
+    for (Chunk& c : chunks)
     {
       c.spellOut(hasT, hasN);
     }

@@ -82,21 +82,22 @@ struct VertexCorners
     const int64_t chunks =
       numCorners < (int64_t(1) << 18) ? 1 : std::max<int64_t>(1, std::min<int64_t>(parallel.threads, 8));
     auto chunkBegin = [&](int64_t k) { return numCorners * k / chunks; };
-    // cursor(k)[v]: corners of chunk k at point v, then where the next one
+    // cursor[k][v]: corners of chunk k at point v, then where the next one
     // goes. Chunk 0 counts in the offsets themselves, which then hold where
     // its corners go, and are put back after the fill: one array of a point
     // each fewer.
     this->offsets = ScratchArray<int32_t>(parallel, static_cast<size_t>(numPoints + 1));
     std::vector<ScratchArray<int32_t>> others(static_cast<size_t>(chunks - 1));
-    auto cursor = [&](int64_t k) { return k == 0 ? this->offsets.data() : others[static_cast<size_t>(k - 1)].data(); };
+    std::vector<int32_t*> cursor(static_cast<size_t>(chunks), this->offsets.data());
+    for (int64_t k = 1; k < chunks; ++k)
+    {
+      others[static_cast<size_t>(k - 1)] = ScratchArray<int32_t>(parallel, static_cast<size_t>(numPoints));
+      cursor[static_cast<size_t>(k)] = others[static_cast<size_t>(k - 1)].data();
+    }
     parallel.forRange(0, chunks, 1, [&](int64_t kb, int64_t ke) {
       for (int64_t k = kb; k < ke; ++k)
       {
-        if (k > 0)
-        {
-          others[static_cast<size_t>(k - 1)] = ScratchArray<int32_t>(parallel, static_cast<size_t>(numPoints));
-        }
-        int32_t* count = cursor(k);
+        int32_t* count = cursor[static_cast<size_t>(k)];
         std::fill(count, count + numPoints, 0);
         for (int64_t c = chunkBegin(k); c < chunkBegin(k + 1); ++c)
         {
@@ -115,9 +116,9 @@ struct VertexCorners
         int64_t sum = 0;
         for (int64_t v = i * block; v < std::min(numPoints, (i + 1) * block); ++v)
         {
-          for (int64_t k = 0; k < chunks; ++k)
+          for (const int32_t* count : cursor)
           {
-            sum += cursor(k)[v];
+            sum += count[v];
           }
         }
         blockStart[static_cast<size_t>(i + 1)] = sum;
@@ -133,10 +134,10 @@ struct VertexCorners
         int64_t next = blockStart[static_cast<size_t>(i)];
         for (int64_t v = i * block; v < std::min(numPoints, (i + 1) * block); ++v)
         {
-          for (int64_t k = 0; k < chunks; ++k)
+          for (int32_t* at : cursor)
           {
-            const int32_t n = cursor(k)[v];
-            cursor(k)[v] = static_cast<int32_t>(next);
+            const int32_t n = at[v];
+            at[v] = static_cast<int32_t>(next);
             next += n;
           }
         }
@@ -146,7 +147,7 @@ struct VertexCorners
     parallel.forRange(0, chunks, 1, [&](int64_t kb, int64_t ke) {
       for (int64_t k = kb; k < ke; ++k)
       {
-        int32_t* next = cursor(k);
+        int32_t* next = cursor[static_cast<size_t>(k)];
         for (int64_t c = chunkBegin(k); c < chunkBegin(k + 1); ++c)
         {
           this->corners[static_cast<size_t>(next[conn[c]]++)] = static_cast<int32_t>(c);
@@ -161,7 +162,7 @@ struct VertexCorners
     }
     else
     {
-      const int32_t* last = cursor(chunks - 1);
+      const int32_t* last = cursor.back();
       parallel.forRange(1, numPoints, 65536, [&](int64_t b, int64_t e) {
         for (int64_t v = b; v < e; ++v)
         {
