@@ -455,6 +455,51 @@ TEST(GeometryCore, IdsBelowTakesNegativeIdsForHugeOnesWhateverTheLimit)
   }
 }
 
+TEST(GeometryCore, IdsWithinAgreesWithTwoSignedComparesOnEveryBound)
+{
+  // Each id alone, then all of them, against ranges around them and at the
+  // ends of both id widths, compared with lo <= id && id < hi in 64 bits;
+  // a negative id names no point, whatever lo says.
+  const auto check = [](const auto& ids, int64_t lo, int64_t hi) {
+    bool all = true;
+    for (size_t i = 0; i < ids.size(); ++i)
+    {
+      const auto id = static_cast<int64_t>(ids[i]);
+      const bool in = id >= 0 && lo <= id && id < hi;
+      all = all && in;
+      EXPECT_EQ(slIdsWithinInline(&ids[i], 1, lo, hi), in) << id << " in [" << lo << ", " << hi << ")";
+    }
+    // 37 ids: the vectorised loop and its remainder.
+    std::vector<std::decay_t<decltype(ids[0])>> many(37, ids[0]);
+    for (size_t i = 0; i < ids.size(); ++i)
+    {
+      many[36 - i] = ids[i];
+    }
+    EXPECT_EQ(slIdsWithinInline(many.data(), 37, lo, hi), all) << "[" << lo << ", " << hi << ")";
+    EXPECT_TRUE(!slHasAVX2() || slIdsWithinAVX2(many.data(), 37, lo, hi) == all) << "[" << lo << ", " << hi << ")";
+  };
+  const int64_t big = int64_t(1) << 31;
+  const std::vector<int32_t> narrow = { 0, 5, 6, 9, -1, std::numeric_limits<int32_t>::max(),
+    std::numeric_limits<int32_t>::min() };
+  const std::vector<int64_t> wide = { 0, 5, 6, 9, -1, big, big * 4, std::numeric_limits<int64_t>::min() };
+  for (const int64_t lo : { int64_t(-3), int64_t(0), int64_t(5), int64_t(6), big - 1, big, big * 4 })
+  {
+    for (const int64_t hi : { int64_t(0), int64_t(6), int64_t(10), big - 1, big, big + 1, big * 4 + 1 })
+    {
+      for (size_t i = 0; i < narrow.size(); ++i)
+      {
+        check(std::vector<int32_t>{ narrow[i] }, lo, hi);
+      }
+      for (size_t i = 0; i < wide.size(); ++i)
+      {
+        check(std::vector<int64_t>{ wide[i] }, lo, hi);
+      }
+      check(std::vector<int32_t>{ 5, 6, 9 }, lo, hi);
+      check(std::vector<int64_t>{ 5, 6, 9 }, lo, hi);
+    }
+  }
+}
+
 TEST(GeometryCore, AVX2AndBaselineLoopsGiveTheSameBits)
 {
   if (!slHasAVX2())

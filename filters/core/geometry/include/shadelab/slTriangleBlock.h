@@ -175,8 +175,9 @@ struct TriangleBlock
     }
   }
 
-  /// Hands every corner's contribution to @p sink: sink.add(entry, x, y, z)
-  /// with the corner's entry of @p accIds (the connectivity's layout). The
+  /// Hands every corner's contribution to @p sink: sink.add<Owned>(entry, x,
+  /// y, z) with the corner's entry of @p accIds (the connectivity's layout);
+  /// @p Owned says the sink owns every entry the block names. The
   /// sink is a small handle taken by value: a copy of its own lets the
   /// compiler keep its fields in registers across the float stores.
   ///
@@ -185,7 +186,7 @@ struct TriangleBlock
   /// reads what the previous store wrote). So the triangles go in four
   /// interleaved streams, i, i + q, i + 2q, i + 3q: between two updates of
   /// one vertex by neighbours come three other triangles' independent ones.
-  template <typename AccId, typename Sink>
+  template <bool Owned, typename AccId, typename Sink>
   void scatter(const AccId* accIds, Sink sink) const
   {
     const AccId* to = accIds + this->start;
@@ -196,7 +197,7 @@ struct TriangleBlock
       {
         for (int k = 0; k < 3; ++k)
         {
-          sink.add(
+          sink.template add<Owned>(
             static_cast<int64_t>(to[3 * i + k]), this->cornerX[k][i], this->cornerY[k][i], this->cornerZ[k][i]);
         }
       }

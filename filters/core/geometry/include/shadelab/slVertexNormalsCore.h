@@ -102,6 +102,17 @@ struct ChunkSink
     return static_cast<uint64_t>(id - this->lo) < static_cast<uint64_t>(this->hi - this->lo);
   }
 
+  /// Whether this chunk owns every entry: one chunk, or each chunk its own copy.
+  bool ownsEverything() const { return this->lo == this->bounds[0] && this->hi == this->bounds[this->chunks]; }
+
+  /// Whether the @p n entries at @p ids all lie in this chunk's range; then
+  /// add<true>() may skip the test of each one.
+  template <typename AccId>
+  bool ownsAll(const AccId* ids, int64_t n) const
+  {
+    return slIdsWithin(ids, n, this->lo, this->hi);
+  }
+
   /// Asks for the cache line of @p id's sum ahead of add().
   void prefetch(int64_t id) const
   {
@@ -111,9 +122,12 @@ struct ChunkSink
     }
   }
 
+  /// Adds (x, y, z) at entry @p id, in place when this chunk owns it (which
+  /// @p Owned asserts), else in the owner's list.
+  template <bool Owned = false>
   void add(int64_t id, T x, T y, T z)
   {
-    if (SL_LIKELY(this->owns(id)))
+    if (Owned || SL_LIKELY(this->owns(id)))
     {
       T* a = this->acc + 3 * id;
       a[0] += x;
@@ -164,11 +178,26 @@ bool scatter(
   using V = glm::vec<3, T>;
   TriangleBlock<T> block;
   constexpr int capacity = TriangleBlock<T>::Capacity;
+  // The sums the block adds to are all the chunk's own: no test per corner.
+  bool owned = sink.ownsEverything();
   const auto flush = [&]() {
     block.template weigh<W>();
-    block.scatter(accIds, sink);
+    if (owned)
+    {
+      block.template scatter<true>(accIds, sink);
+    }
+    else
+    {
+      block.template scatter<false>(accIds, sink);
+    }
     block.count = 0;
   };
+  // When the entries are the points themselves and the chunk's range lies
+  // among them, one pass over a block's ids asks both whether they name
+  // points (the bad-id check) and whether the chunk owns them all, the
+  // common case in a mesh in order.
+  const bool idsAreEntries = std::is_same<Id, AccId>::value &&
+    static_cast<const void*>(accIds) == static_cast<const void*>(polys.connectivity) && sink.hi <= numPoints;
   // With Prefetch (a mesh without locality, where every point and sum is a
   // cache miss), ask for the points of the triangle `ahead` positions on,
   // and for this triangle's sums, which are written when the block is full.
@@ -181,12 +210,17 @@ bool scatter(
     // after the other is filled in one go: the common case of a triangle mesh.
     if (!Prefetch && block.count == 0 && e - f >= capacity && consecutiveTriangles(polys, f, capacity))
     {
-      if (!slIdsBelow(polys.connectivity + polys.begin(f), 3 * capacity, numPoints))
+      const Id* ids = polys.connectivity + polys.begin(f);
+      const bool everything = owned;
+      owned = idsAreEntries && sink.ownsAll(ids, 3 * capacity);
+      if (!owned && !slIdsBelow(ids, 3 * capacity, numPoints))
       {
         return false;
       }
+      owned = owned || everything;
       block.fill(polys.connectivity, xyz, polys.begin(f), capacity);
       flush();
+      owned = everything;
       f += capacity - 1;
       continue;
     }
