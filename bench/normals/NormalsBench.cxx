@@ -4,6 +4,7 @@
 // ns per triangle, ratios taken round by round, the memory-bandwidth floor,
 // the speed-up from one thread to all, and peak memory above the input.
 #include "BenchArguments.h"
+#include "BenchBareLoop.h"
 #include "BenchMachine.h"
 #include "BenchMemory.h"
 #include "BenchOpenMesh.h"
@@ -14,6 +15,7 @@
 
 #include <vtkCellArray.h>
 #include <vtkNew.h>
+#include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataNormals.h>
@@ -74,6 +76,9 @@ struct Result
   double triangles = 0;
   double nsPerTriangle = 0; ///< slPolyDataNormals angle, no split, all threads
   Spread overTMPN, overPDN, splitOverPDN, speedUp;
+  Spread overBare;    ///< slPolyDataNormals' time over the bare loop's, all threads
+  Spread bareSpeedUp; ///< the bare loop from one thread to all
+  Spread pdnOverBare; ///< vtkPolyDataNormals (split/cons off) over the bare loop: the most its goal can be
   double floorRatio = 0, splitFloorRatio = 0;
 };
 
@@ -221,8 +226,31 @@ std::string memoryInNewProcesses(double millions, bool shuffled, int threads, do
   return text;
 }
 
-Result benchOne(vtkPolyData* mesh, const std::string& label, const std::string& memory, int runs, int threads,
-  const BenchMachine& machine)
+/// Exits unless the bare loop's sums point along slPolyDataNormals' area
+/// weighted normals (an independent computation of the same sums): the
+/// loop the bench times must do the work it stands for.
+void checkBareLoop(vtkPolyData* mesh, slBenchBareLoop& bare, int threads)
+{
+  vtkNew<slPolyDataNormals> area;
+  area->SetInputData(mesh);
+  area->SetWeighting(slPolyDataNormals::AREA);
+  area->SetSplitting(false);
+  area->SetConsistency(false);
+  area->Update();
+  bare.Run(threads);
+  const double degrees = bare.LargestAngleTo(area->GetOutput()->GetPointData()->GetNormals());
+  std::printf("   bare loop: each triangle's points read, their cross product added at them (no checks, weights, "
+              "normalising); largest angle to slPolyDataNormals area %.1e deg\n",
+    degrees);
+  if (!(degrees < 1e-2))
+  {
+    std::fprintf(stderr, "shadelab_bench_normals: the bare loop's sums are wrong (%g deg)\n", degrees);
+    std::exit(1);
+  }
+}
+
+Result benchOne(vtkPolyData* mesh, bool shuffled, const std::string& label, const std::string& memory, int runs,
+  int threads, const BenchMachine& machine)
 {
   const double tris = static_cast<double>(mesh->GetNumberOfPolys());
   const double points = static_cast<double>(mesh->GetNumberOfPoints());
@@ -257,6 +285,7 @@ Result benchOne(vtkPolyData* mesh, const std::string& label, const std::string& 
   pdnPlain->ConsistencyOff();
   pdnDefault->SetInputData(mesh);
   slBenchOpenMesh om(mesh);
+  slBenchBareLoop bare(mesh, threads, shuffled);
   auto update = [](vtkAlgorithm* a) {
     return std::function<void()>([a]() {
       a->Modified();
@@ -267,10 +296,11 @@ Result benchOne(vtkPolyData* mesh, const std::string& label, const std::string& 
   // 1. Vertex normals without splitting, all jobs once per round.
   const char* names[] = { "slPolyDataNormals angle (default)", "slPolyDataNormals angle, 1 thread",
     "slPolyDataNormals area", "vtkTriangleMeshPointNormals", "vtkPolyDataNormals (split/cons off)",
-    "OpenMesh update_face+vertex_normals" };
+    "OpenMesh update_face+vertex_normals", "bare loop", "bare loop, 1 thread" };
   const std::vector<BenchTimes> t = timeInterleaved(runs,
     { ours(mesh, slPolyDataNormals::ANGLE, false), onOneThread(threads, ours(mesh, slPolyDataNormals::ANGLE, false)),
-      ours(mesh, slPolyDataNormals::AREA, false), update(tmpn), update(pdnPlain), [&] { om.UpdateNormals(); } });
+      ours(mesh, slPolyDataNormals::AREA, false), update(tmpn), update(pdnPlain), [&] { om.UpdateNormals(); },
+      [&] { bare.Run(threads); }, onOneThread(threads, [&] { bare.Run(1); }) });
   std::printf("   vertex normals, no splitting      median ms        range ms   cpu ms  ns/tri  x floor  "
               "x TriMeshPN          x PolyDataN\n");
   for (size_t i = 0; i < t.size(); ++i)
@@ -289,8 +319,12 @@ Result benchOne(vtkPolyData* mesh, const std::string& label, const std::string& 
   r.overPDN = ratios(t[4], t[0], 15);
   r.speedUp = ratios(t[1], t[0], 1.8);
   r.floorRatio = t[0].median() / floorPlain;
-  std::printf("   speed-up of slPolyDataNormals angle from 1 to %d threads: %s\n", threads,
-    format(r.speedUp).c_str());
+  r.overBare = ratios(t[0], t[6], 0);
+  r.bareSpeedUp = ratios(t[7], t[6], 1.8);
+  r.pdnOverBare = ratios(t[4], t[6], 15);
+  std::printf("   speed-up of slPolyDataNormals angle from 1 to %d threads: %s; of the bare loop: %s\n", threads,
+    format(r.speedUp).c_str(), format(r.bareSpeedUp).c_str());
+  checkBareLoop(mesh, bare, threads);
 
   // 2. Splitting (30 degrees) and consistency on.
   const std::vector<BenchTimes> s =
@@ -355,22 +389,24 @@ int main(int argc, char** argv)
       vtkSmartPointer<vtkPolyData> mesh = benchMesh(millions, shuffled);
       const std::string memory = memoryInNewProcesses(
         millions, shuffled, threads, static_cast<double>(mesh->GetActualMemorySize()) * 1024.0);
-      results.push_back(benchOne(mesh, std::string(size) + (shuffled ? ", shuffled" : ", ordered"), memory,
+      results.push_back(benchOne(mesh, shuffled, std::string(size) + (shuffled ? ", shuffled" : ", ordered"), memory,
         args.runs(), threads, machine));
     }
   }
 
   std::printf("summary (slPolyDataNormals angle; ratios: median (range) of per-round ratios, rounds at the goal)\n");
-  std::printf("%-26s %7s %8s %-26s %-26s %-26s %-26s %8s\n", "mesh", "ns/tri", "x floor", "x TriMeshPN (>=1.5)",
-    "x PolyDataN (>=15)", "split x PolyDataN (>=10)", "1->N threads (>=1.8)", "split x floor");
+  std::printf("%-26s %7s %8s %-26s %-26s %-26s %-26s %8s  %-20s %-26s %s\n", "mesh", "ns/tri", "x floor",
+    "x TriMeshPN (>=1.5)", "x PolyDataN (>=15)", "split x PolyDataN (>=10)", "1->N threads (>=1.8)", "split x floor",
+    "x bare loop", "bare 1->N (>=1.8)", "PolyDataN / bare (>=15)");
   for (const Result& r : results)
   {
     auto cell = [](const Spread& s) {
       return format(s) + " " + std::to_string(s.reaching) + "/" + std::to_string(s.of);
     };
-    std::printf("%-26s %7.2f %8.2f %-26s %-26s %-26s %-26s %8.2f\n", r.label.c_str(), r.nsPerTriangle, r.floorRatio,
-      cell(r.overTMPN).c_str(), cell(r.overPDN).c_str(), cell(r.splitOverPDN).c_str(), cell(r.speedUp).c_str(),
-      r.splitFloorRatio);
+    std::printf("%-26s %7.2f %8.2f %-26s %-26s %-26s %-26s %8.2f  %-20s %-26s %s\n", r.label.c_str(),
+      r.nsPerTriangle, r.floorRatio, cell(r.overTMPN).c_str(), cell(r.overPDN).c_str(), cell(r.splitOverPDN).c_str(),
+      cell(r.speedUp).c_str(), r.splitFloorRatio, format(r.overBare).c_str(), cell(r.bareSpeedUp).c_str(),
+      cell(r.pdnOverBare).c_str());
   }
   // Cost per triangle of the largest mesh against the one just below (goal <= 1.2).
   for (const char* kind : { "ordered", "shuffled" })
