@@ -10,7 +10,9 @@
  * the points are float. The polygons are cut into contiguous chunks, and the
  * entries (points) into as many ranges: chunk k owns range k. A chunk adds a
  * contribution in place when the entry lies in its own range and keeps it
- * in a list for the owner otherwise; then each range adds the lists kept for
+ * in a list for the owner otherwise (a block of triangles whose ids all lie
+ * in the range, found by the same vectorised pass that checks the ids, adds
+ * without testing each corner); then each range adds the lists kept for
  * it, chunk by chunk, and normalises. No two chunks write the same entry, so
  * there are no atomics, no per-thread copy of the accumulator and no pass
  * that sums copies; the sum order is fixed, so the result does not depend on
@@ -183,8 +185,10 @@ bool scatter(
   using V = glm::vec<3, T>;
   TriangleBlock<T> block;
   constexpr int capacity = TriangleBlock<T>::Capacity;
-  // The sums the block adds to are all the chunk's own: no test per corner.
-  bool owned = sink.ownsEverything();
+  // Whether the sums the block adds to are all the chunk's own: then no
+  // test per corner.
+  const bool ownsEverything = sink.ownsEverything();
+  bool owned = ownsEverything;
   const auto flush = [&]() {
     block.template weigh<W>();
     if (owned)
@@ -216,16 +220,15 @@ bool scatter(
     if (!Prefetch && block.count == 0 && e - f >= capacity && consecutiveTriangles(polys, f, capacity))
     {
       const Id* ids = polys.connectivity + polys.begin(f);
-      const bool everything = owned;
-      owned = idsAreEntries && sink.ownsAll(ids, 3 * capacity);
-      if (!owned && !slIdsBelow(ids, 3 * capacity, numPoints))
+      const bool inRange = idsAreEntries && sink.ownsAll(ids, 3 * capacity);
+      if (!inRange && !slIdsBelow(ids, 3 * capacity, numPoints))
       {
         return false;
       }
-      owned = owned || everything;
+      owned = ownsEverything || inRange;
       block.fill(polys.connectivity, xyz, polys.begin(f), capacity);
       flush();
-      owned = everything;
+      owned = ownsEverything;
       f += capacity - 1;
       continue;
     }
