@@ -64,6 +64,11 @@ CASES = [
     mesh_case("obj nan normal", "a.obj", obj(b"f 1//1 2//1 3//1\n", b"vn nan 0 1\n"), 'line 4: vn coordinate "nan" is not a finite number'),
     mesh_case("obj index not a number", "a.obj", obj(b"f 1 2 three\n"), 'line 4: vertex index "three" is not an integer'),
     mesh_case("obj four-part index", "a.obj", obj(b"f 1/1/1/1 2 3\n"), 'line 4: "1/1/1/1" is not an index triple'),
+    # VTK's reader would take the -1 after the slash as a texture coordinate.
+    mesh_case("obj slash before a space", "a.obj", obj(b"f 1 2/ -1\n"), 'line 4: "2/" ends in a slash, without the index after it'),
+    mesh_case("obj slash ending a line", "a.obj", obj(b"f 1 2 3//\n", b"vn 0 0 1\n"), 'line 5: "3//" ends in a slash, without the index after it'),
+    mesh_case("obj long material name", "a.obj", obj(b"f 1 2 3\n", b"usemtl " + b"m" * 100 + b"\n"),
+              "line 4: usemtl name of 100 bytes is longer than the 99 that VTK's OBJ reader holds"),
     mesh_case("obj line index beyond", "a.obj", obj(b"l 1 5\n"), 'line 4: vertex index 5 is out of range [1, 3]'),
     mesh_case("obj point index beyond", "a.obj", obj(b"p 4\n"), 'line 4: vertex index 4 is out of range [1, 3]'),
     mesh_case("obj face of two corners", "a.obj", obj(b"f 1 2\n"), 'line 4: f needs at least 3 vertices, it has 2'),

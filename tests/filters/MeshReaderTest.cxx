@@ -162,6 +162,20 @@ TEST(MeshReader, NonFiniteCoordinates)
   EXPECT_EQ(r.mesh->GetNumberOfPoints(), 0);
 }
 
+TEST(MeshReader, ObjMaterialNamesUpToVTKsLimitRead)
+{
+  const TestFolder folder;
+  // usemtl is outside ShadeLab's own parser: this goes through vtkOBJReader.
+  const std::string name(99, 'm');
+  folder.write("named.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl " + name + "\nf 1 2 3\n");
+  const ReadResult r = read(folder.path("named.obj"));
+  EXPECT_EQ(r.error, "");
+  EXPECT_EQ(r.mesh->GetNumberOfPolys(), 1);
+  folder.write("long.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl " + name + "m\nf 1 2 3\n");
+  EXPECT_EQ(read(folder.path("long.obj")).error,
+    folder.path("long.obj") + ": line 4: usemtl name of 100 bytes is longer than the 99 that VTK's OBJ reader holds");
+}
+
 TEST(MeshReader, NoPolygons)
 {
   const TestFolder folder;

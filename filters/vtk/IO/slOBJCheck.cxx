@@ -1,5 +1,6 @@
-// OBJ: every index of an f, l or p line names an existing v, vt or vn, and
-// every v, vt and vn value is a finite number.
+// OBJ: every index of an f, l or p line names an existing v, vt or vn,
+// every v, vt and vn value is a finite number, and nothing in the file makes
+// vtkOBJReader read or write out of bounds.
 #include "slMeshFileCheck.h"
 
 #include "shadelab/PrintableText.h"
@@ -164,6 +165,16 @@ std::string slOBJProblem(const std::string& fileName)
       }
       (keyword == "v" ? seen.v : keyword == "vt" ? seen.vt : seen.vn) += 1;
     }
+    else if (keyword == "usemtl")
+    {
+      // vtkOBJReader copies the name into a char[100] with sscanf("%s").
+      constexpr size_t longestName = 99;
+      if (words >> token && token.size() > longestName)
+      {
+        return at(lineNumber, "usemtl name of " + std::to_string(token.size()) + " bytes is longer than the " +
+            std::to_string(longestName) + " that VTK's OBJ reader holds");
+      }
+    }
     else if (keyword == "f" || keyword == "l" || keyword == "p")
     {
       int corners = 0;
@@ -186,6 +197,14 @@ std::string slOBJProblem(const std::string& fileName)
         if (parts.size() > 3)
         {
           return at(lineNumber, "\"" + shadelab::printableText(token) + "\" is not an index triple");
+        }
+        // vtkOBJReader reads a corner with sscanf("%d/%d"), which skips white
+        // space after the slash: "2/ 3" would take the next corner's 3 as
+        // 2's texture coordinate, unchecked.
+        if (token.back() == '/')
+        {
+          return at(lineNumber,
+            "\"" + shadelab::printableText(token) + "\" ends in a slash, without the index after it");
         }
         static const char* const kinds[3] = { "vertex", "texture coordinate", "normal" };
         const long long before[3] = { seen.v, seen.vt, seen.vn };
