@@ -185,11 +185,10 @@ bool scatter(
   using V = glm::vec<3, T>;
   TriangleBlock<T> block;
   constexpr int capacity = TriangleBlock<T>::Capacity;
-  // Whether the sums the block adds to are all the chunk's own: then no
-  // test per corner.
+  // flush(owned): weighs the block and adds its corners; owned says the
+  // sums it adds to are all the chunk's own, so that no corner is tested.
   const bool ownsEverything = sink.ownsEverything();
-  bool owned = ownsEverything;
-  const auto flush = [&]() {
+  const auto flush = [&](bool owned) {
     block.template weigh<W>();
     if (owned)
     {
@@ -225,10 +224,8 @@ bool scatter(
       {
         return false;
       }
-      owned = ownsEverything || inRange;
       block.fill(polys.connectivity, xyz, polys.begin(f), capacity);
-      flush();
-      owned = ownsEverything;
+      flush(ownsEverything || inRange);
       f += capacity - 1;
       continue;
     }
@@ -257,12 +254,12 @@ bool scatter(
       }
       if (!block.continues(o))
       {
-        flush();
+        flush(ownsEverything);
       }
       block.add(polys.connectivity, xyz, o);
       if (block.count == capacity)
       {
-        flush();
+        flush(ownsEverything);
       }
       continue;
     }
@@ -289,7 +286,7 @@ bool scatter(
   }
   if (block.count > 0)
   {
-    flush();
+    flush(ownsEverything);
   }
   return true;
 }
