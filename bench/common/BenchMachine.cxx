@@ -1,14 +1,18 @@
 #include "BenchMachine.h"
+#include "BenchTiming.h"
 
 #include <vtkSMPTools.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <memory>
 #include <thread>
+#include <vector>
 
 namespace
 {
@@ -54,6 +58,61 @@ double copyBandwidth(const char* from, char* to, size_t bytes, int chunks, bool 
   }
   return best;
 }
+
+/// The length of each of the two tasks of a wake-up loop.
+constexpr int kTaskMicroseconds = 200;
+
+/// @p tries loops of two tasks, each loop after @p idleMs of sleep.
+WakeUp measureWakeUp(int idleMs, int tries)
+{
+  using Clock = std::chrono::steady_clock;
+  WakeUp w;
+  w.idleMilliseconds = idleMs;
+  w.tries = tries;
+  std::vector<double> starts;
+  for (int t = 0; t < tries; ++t)
+  {
+    std::this_thread::sleep_for(std::chrono::milliseconds(idleMs));
+    const std::thread::id caller = std::this_thread::get_id();
+    std::atomic<double> other{ -1 };
+    const auto start = Clock::now();
+    vtkSMPTools::For(0, 2, 1, [&](vtkIdType begin, vtkIdType end) {
+      if (std::this_thread::get_id() != caller)
+      {
+        other = std::chrono::duration<double, std::micro>(Clock::now() - start).count();
+      }
+      // Busy, as a filter's task is: a sleeping task would free the caller's
+      // thread to take the second task sooner.
+      const auto until = Clock::now() + std::chrono::microseconds(kTaskMicroseconds * (end - begin));
+      while (Clock::now() < until)
+      {
+      }
+    });
+    // A loop the second thread missed started it later than any it joined.
+    w.missed += other < 0;
+    starts.push_back(other < 0 ? HUGE_VAL : other.load());
+  }
+  w.medianMicroseconds = medianOf(starts);
+  return w;
+}
+
+/// "after N ms idle: ..." for @p w.
+std::string describe(const WakeUp& w)
+{
+  char text[160];
+  char median[32];
+  if (std::isinf(w.medianMicroseconds))
+  {
+    std::snprintf(median, sizeof(median), "over %d us", kTaskMicroseconds);
+  }
+  else
+  {
+    std::snprintf(median, sizeof(median), "%.0f us", w.medianMicroseconds);
+  }
+  std::snprintf(text, sizeof(text), "after %d ms idle %s (%d of %d loops ran on one thread)", w.idleMilliseconds,
+    median, w.missed, w.tries);
+  return text;
+}
 } // namespace
 
 BenchMachine BenchMachine::measure()
@@ -75,6 +134,11 @@ BenchMachine BenchMachine::measure()
   std::memset(to.get(), 0, bytes);
   m.bandwidthOneThread = copyBandwidth(from.get(), to.get(), bytes, 64, false);
   m.bandwidthAllThreads = copyBandwidth(from.get(), to.get(), bytes, 64, true);
+  if (m.threads > 1)
+  {
+    m.wakeUpShort = measureWakeUp(1, 50);
+    m.wakeUpLong = measureWakeUp(10, 50);
+  }
   return m;
 }
 
@@ -83,6 +147,12 @@ void BenchMachine::print() const
   std::printf("machine: %s, %d logical cores, %.1f GiB; load average %s\n", this->cpuModel.c_str(),
     this->logicalCores, this->memoryGiB, this->loadAverage.c_str());
   std::printf("threads: %d (vtkSMPTools backend %s)\n", this->threads, this->smpBackend.c_str());
-  std::printf("memory bandwidth (256 MiB copy, read + write, best of 5): %.1f GB/s on 1 thread, %.1f GB/s on %d\n\n",
+  std::printf("memory bandwidth (256 MiB copy, read + write, best of 5): %.1f GB/s on 1 thread, %.1f GB/s on %d\n",
     this->bandwidthOneThread, this->bandwidthAllThreads, this->threads);
+  if (this->wakeUpShort.tries > 0)
+  {
+    std::printf("second thread's start in a loop of two %d us tasks, median of %d: %s; %s\n", kTaskMicroseconds,
+      this->wakeUpShort.tries, describe(this->wakeUpShort).c_str(), describe(this->wakeUpLong).c_str());
+  }
+  std::printf("\n");
 }

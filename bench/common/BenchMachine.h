@@ -10,8 +10,25 @@
  * (bytes read + bytes written per second), once on one thread and once on
  * the threads vtkSMPTools uses: the floor a pass over large arrays cannot
  * beat, against which a filter's bytes moved per second can be judged.
+ *
+ * With more than one thread it also measures how soon a second thread
+ * joins a parallel loop after the pool had no work (WakeUp): on a virtual
+ * machine that can take longer than a small mesh's whole update, which
+ * bounds what a second thread can give there.
  */
 #include <string>
+
+/// How soon a second thread joins a vtkSMPTools::For of two tasks of 200
+/// microseconds each, started after the pool was idle for a while.
+struct WakeUp
+{
+  int idleMilliseconds = 0; ///< the pool's idle time before each loop
+  int tries = 0;
+  int missed = 0; ///< loops whose two tasks both ran on the calling thread
+  /// When the second thread started its task, median over the loops; a
+  /// missed loop counts as later than any other (HUGE_VAL if half or more missed).
+  double medianMicroseconds = 0;
+};
 
 struct BenchMachine
 {
@@ -23,8 +40,10 @@ struct BenchMachine
   double bandwidthOneThread = 0;   ///< GB/s (1e9 bytes per second)
   double bandwidthAllThreads = 0;  ///< GB/s
   std::string loadAverage;         ///< /proc/loadavg's first three fields
+  WakeUp wakeUpShort, wakeUpLong;  ///< after 1 ms and 10 ms idle; tries 0 on one thread
 
-  /// Reads the machine and measures the bandwidth (about a second).
+  /// Reads the machine and measures the bandwidth and the wake-up (about
+  /// a second and a half).
   static BenchMachine measure();
   /// Prints a few lines describing it.
   void print() const;
