@@ -53,6 +53,9 @@ CASES = [
     mesh_case("obj int overflow index", "a.obj", obj(b"f 1 2 4294967297\n"), 'line 4: vertex index 4294967297 is out of range [1, 3]'),
     mesh_case("obj comment ending in a backslash does not hide a face", "a.obj",
               b"# a comment \\\nf 1 2 3\n", 'line 2: vertex index 1 is out of range [1, 0]'),
+    # VTK's reader continues a face after a backslash behind any white space.
+    mesh_case("obj face continued after a vertical tab", "a.obj", obj(b"f 1 2 \x0b\\\n3 9\n"),
+              'line 5: vertex index 9 is out of range [1, 3]'),
     mesh_case("obj nan coordinate", "a.obj", b"v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", 'line 1: v coordinate "nan" is not a finite number'),
     mesh_case("obj inf coordinate", "a.obj", b"v 0 0 0\nv inf 0 0\nv 0 1 0\nf 1 2 3\n", 'line 2: v coordinate "inf" is not a finite number'),
     mesh_case("obj overflowing coordinate", "a.obj", b"v 0 0 0\nv 1e999 0 0\nv 0 1 0\nf 1 2 3\n", 'line 2: v coordinate "1e999" is not a finite number'),

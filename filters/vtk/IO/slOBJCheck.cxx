@@ -5,6 +5,7 @@
 
 #include "shadelab/PrintableText.h"
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -22,8 +23,9 @@ struct Counts
 /// Whether vtkOBJReader reads the line after @p part as part of the logical
 /// line that starts with @p head: only an f, l or p line continues, when its
 /// last token is a lone backslash right before the newline ("\\\n"; not
-/// "\\\r\n"). A backslash ending any other line, a comment included, is
-/// text, and the next line is a line of its own.
+/// "\\\r\n"), after any white space isspace() knows, as VTK's. A backslash
+/// ending any other line, a comment included, is text, and the next line is
+/// a line of its own.
 bool continues(const std::string& head, const std::string& part)
 {
   std::istringstream words(head);
@@ -34,7 +36,7 @@ bool continues(const std::string& head, const std::string& part)
     return false;
   }
   const size_t n = part.size();
-  return n >= 1 && part[n - 1] == '\\' && (n == 1 || part[n - 2] == ' ' || part[n - 2] == '\t');
+  return n >= 1 && part[n - 1] == '\\' && (n == 1 || std::isspace(static_cast<unsigned char>(part[n - 2])));
 }
 
 /// Reads one logical line as vtkOBJReader does (see continues()).
