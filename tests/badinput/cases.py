@@ -120,6 +120,9 @@ CASES = [
               ply_ascii(b"3 0 1 2\n").replace(b"property float y\n", b"property float x\n"),
               'the header needs an element "vertex" with properties x, y, z and an element "face"'),
     # found by fuzzing: vtkPLYReader crashed in find_element on a file without a vertex element
+    mesh_case("ply element without properties", "a.ply",
+              ply_header(b"binary_little_endian", 3, 0).replace(b"property list uchar int vertex_indices\n", b"") +
+              struct.pack("<9f", 0, 0, 0, 1, 0, 0, 0, 1, 0), 'line 7: element "face" has no properties'),
     mesh_case("ply without vertex element", "a.ply",
               b"ply\nformat ascii 1.0\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n3 0 1 2\n",
               'the header needs an element "vertex" with properties x, y, z and an element "face"'),

@@ -39,6 +39,7 @@ struct Element
   std::string name;
   unsigned long long count = 0;
   std::vector<Property> properties;
+  long line = 0; ///< of the header line that declares it
 };
 
 /// Size in bytes of a PLY scalar type, 0 if unknown; sets the flags.
@@ -421,6 +422,7 @@ std::string slPLYProblem(const std::string& fileName)
         return where + "element needs a name and a count, found \"" + shadelab::printableText(line) + "\"";
       }
       e.count = static_cast<unsigned long long>(n);
+      e.line = lineNumber;
       elements.push_back(e);
     }
     else if (keyword == "property")
@@ -462,6 +464,17 @@ std::string slPLYProblem(const std::string& fileName)
   if (!haveFormat)
   {
     return "the header has no format line";
+  }
+  // VTK's PLY code allocates an element's property table with its first
+  // property: for an element without one, ply_close frees pointers it never
+  // set.
+  for (const Element& e : elements)
+  {
+    if (e.properties.empty())
+    {
+      return "line " + std::to_string(e.line) + ": element \"" + shadelab::printableText(e.name) +
+        "\" has no properties";
+    }
   }
   // vtkPLYReader looks elements up by name: a second element of the same
   // name is read over the first one's arrays.
