@@ -120,6 +120,12 @@ CASES = [
               ply_ascii(b"3 0 1 2\n").replace(b"property float y\n", b"property float x\n"),
               'the header needs an element "vertex" with properties x, y, z and an element "face"'),
     # found by fuzzing: vtkPLYReader crashed in find_element on a file without a vertex element
+    mesh_case("ply last row without a newline", "a.ply", ply_ascii(b"3 0 1 2"),
+              'line 13 (element "face" row 1 of 1): no newline at the end of the row'),
+    mesh_case("ply row longer than VTK's line", "a.ply", ply_ascii(b"3 0 1 2" + b" " * 4000 + b"\n"),
+              'line 13 (element "face" row 1 of 1): longer than 4000 characters'),
+    mesh_case("ply blank line in the header", "a.ply", ply_ascii(b"3 0 1 2\n").replace(b"element face", b"\nelement face"),
+              'line 7: a blank line in the header'),
     mesh_case("ply element without properties", "a.ply",
               ply_header(b"binary_little_endian", 3, 0).replace(b"property list uchar int vertex_indices\n", b"") +
               struct.pack("<9f", 0, 0, 0, 1, 0, 0, 0, 1, 0), 'line 7: element "face" has no properties'),

@@ -17,6 +17,10 @@
 
 namespace
 {
+/// VTK's PLY code reads each line, header or ASCII row, into a 4096-byte
+/// buffer; a longer one fails the stream.
+constexpr size_t kLongestLine = 4000;
+
 enum class Format
 {
   Ascii,
@@ -274,6 +278,17 @@ std::string asciiBody(std::istream& in, long lineNumber, const std::vector<Eleme
       ++lineNumber;
       std::istringstream words(line);
       const std::string where = "line " + std::to_string(lineNumber) + " (" + rowName(e, row) + "): ";
+      // VTK's PLY code finds no words in a line that ends the file without
+      // a newline, or that overflows its buffer, and reads on as if the row
+      // were there.
+      if (in.eof())
+      {
+        return where + "no newline at the end of the row";
+      }
+      if (line.size() > kLongestLine)
+      {
+        return where + "longer than " + std::to_string(kLongestLine) + " characters";
+      }
       // VTK splits the line as a C string: a NUL byte would end it early.
       if (line.find('\0') != std::string::npos)
       {
@@ -348,12 +363,11 @@ std::string slPLYProblem(const std::string& fileName)
       return "line " + std::to_string(lineNumber) + ": the header has no end_header";
     }
     const std::string where = "line " + std::to_string(lineNumber) + ": ";
-    // VTK's PLY code reads header lines into a 4096-byte buffer and splits
-    // them as C strings: a NUL or other control byte corrupts its element
-    // table.
-    if (line.size() > 4000)
+    // VTK's PLY code splits header lines as C strings: a NUL or other
+    // control byte corrupts its element table.
+    if (line.size() > kLongestLine)
     {
-      return where + "header line longer than 4000 characters";
+      return where + "header line longer than " + std::to_string(kLongestLine) + " characters";
     }
     for (char c : line)
     {
@@ -364,7 +378,12 @@ std::string slPLYProblem(const std::string& fileName)
       }
     }
     std::istringstream words(line);
-    if (!(words >> keyword) || keyword == "comment" || keyword == "obj_info")
+    if (!(words >> keyword))
+    {
+      // VTK's PLY code takes a line without words for the header's end.
+      return where + "a blank line in the header";
+    }
+    if (keyword == "comment" || keyword == "obj_info")
     {
       continue;
     }
