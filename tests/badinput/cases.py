@@ -126,6 +126,9 @@ CASES = [
               'line 13 (element "face" row 1 of 1): longer than 4000 characters'),
     mesh_case("ply blank line in the header", "a.ply", ply_ascii(b"3 0 1 2\n").replace(b"element face", b"\nelement face"),
               'line 7: a blank line in the header'),
+    # ShadeLab's own binary parser takes this one; no face, no connectivity.
+    mesh_case("ply binary without faces", "a.ply", ply_header(b"binary_little_endian", 3, 0) + struct.pack("<9f", 0, 0, 0, 1, 0, 0, 0, 1, 0),
+              'no polygons among its 0 cells'),
     mesh_case("ply element without properties", "a.ply",
               ply_header(b"binary_little_endian", 3, 0).replace(b"property list uchar int vertex_indices\n", b"") +
               struct.pack("<9f", 0, 0, 0, 1, 0, 0, 0, 1, 0), 'line 7: element "face" has no properties'),

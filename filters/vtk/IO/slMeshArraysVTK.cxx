@@ -16,13 +16,27 @@
 
 namespace
 {
-vtkSmartPointer<vtkFloatArray> floats(std::vector<float>& values, int components, const char* name)
+/// A VTK array of @p components per tuple holding @p values, which it
+/// empties.
+template <typename Array, typename T>
+vtkSmartPointer<Array> adopt(std::vector<T>& values, int components)
 {
-  auto array = vtkSmartPointer<vtkFloatArray>::New();
+  auto array = vtkSmartPointer<Array>::New();
   array->SetNumberOfComponents(components);
   array->SetNumberOfTuples(static_cast<vtkIdType>(values.size() / static_cast<std::size_t>(components)));
-  std::memcpy(array->GetPointer(0), values.data(), values.size() * sizeof(float));
-  std::vector<float>().swap(values);
+  // memcpy wants valid pointers even for no bytes, and an empty vector or
+  // array may have none.
+  if (!values.empty())
+  {
+    std::memcpy(array->GetPointer(0), values.data(), values.size() * sizeof(T));
+  }
+  std::vector<T>().swap(values);
+  return array;
+}
+
+vtkSmartPointer<vtkFloatArray> floats(std::vector<float>& values, int components, const char* name)
+{
+  auto array = adopt<vtkFloatArray>(values, components);
   if (name)
   {
     array->SetName(name);
@@ -33,11 +47,7 @@ vtkSmartPointer<vtkFloatArray> floats(std::vector<float>& values, int components
 vtkSmartPointer<vtkIdTypeArray> ids(std::vector<std::int64_t>& values)
 {
   static_assert(sizeof(vtkIdType) == sizeof(std::int64_t), "64-bit vtkIdType");
-  auto array = vtkSmartPointer<vtkIdTypeArray>::New();
-  array->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
-  std::memcpy(array->GetPointer(0), values.data(), values.size() * sizeof(std::int64_t));
-  std::vector<std::int64_t>().swap(values);
-  return array;
+  return adopt<vtkIdTypeArray>(values, 1);
 }
 
 bool values(vtkDataArray* array, int components, slValuesView& view)
