@@ -7,6 +7,7 @@
 #include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -153,13 +154,17 @@ std::string slXMLCountsProblem(const std::string& fileName)
   if (appended != std::string::npos)
   {
     const size_t close = bytes.find('>', appended);
-    const size_t underscore = bytes.find('_', close == std::string::npos ? bytes.size() : close);
-    const std::string tag = bytes.substr(appended, close == std::string::npos ? 0 : close - appended);
-    if (close == std::string::npos || underscore == std::string::npos)
+    size_t underscore = close == std::string::npos ? bytes.size() : close + 1;
+    while (underscore < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[underscore])))
     {
-      // VTK's writers put "_" before the data; without it, vtkXMLDataParser
-      // takes its data from wherever its search ends.
-      return "the AppendedData element has no \"_\" before its data";
+      ++underscore;
+    }
+    const std::string tag = bytes.substr(appended, close == std::string::npos ? 0 : close - appended);
+    if (underscore >= bytes.size() || bytes[underscore] != '_')
+    {
+      // VTK's writers put "_" first; vtkXMLDataParser takes the data from
+      // the first character after the tag's white space, "_" or not.
+      return "the AppendedData element's data does not start with \"_\"";
     }
     appendedStart = underscore + 1;
     appendedBase64 = attribute(tag, "encoding") == "base64";
