@@ -253,6 +253,19 @@ TEST(MeshFormats, PLYAsVTKReadsIt)
     EXPECT_TRUE(slParsePLY(bytes.data(), bytes.size(), arrays)) << name;
     expectIdentical(readShadeLab(folder.path(name)), readVTK<vtkPLYReader>(folder.path(name)), name);
   }
+  // VTK's PLY code takes "\fv" for one word, not a texture coordinate "v";
+  // ShadeLab's parser declines a header with a control byte, and the file
+  // check refuses it.
+  std::string formFeed = contents(folder.path("shadelab.ply"));
+  const size_t v = formFeed.find("property float v\n");
+  ASSERT_NE(v, std::string::npos);
+  formFeed.insert(v + 15, "\f");
+  slMeshArrays arrays;
+  EXPECT_FALSE(slParsePLY(formFeed.data(), formFeed.size(), arrays));
+  folder.write("formfeed.ply", formFeed);
+  vtkNew<slMeshReader> reader;
+  reader->SetFileName(folder.path("formfeed.ply").c_str());
+  EXPECT_NE(updateError(reader).find("a control byte in the header"), std::string::npos);
   vtkSmartPointer<vtkPolyData> back = readVTK<vtkPLYReader>(folder.path("shadelab.ply"));
   ASSERT_NE(back->GetPointData()->GetNormals(), nullptr);
   EXPECT_EQ(back->GetPointData()->GetNormals()->GetTuple3(5)[2], mesh->GetPointData()->GetNormals()->GetTuple3(5)[2]);

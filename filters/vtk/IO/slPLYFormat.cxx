@@ -47,6 +47,17 @@ bool header(const char* bytes, std::size_t size, std::size_t& bodyAt, VertexLayo
     return false;
   }
   bodyAt = stop + 12;
+  // VTK's PLY code splits header words at spaces and tabs only, and these
+  // streams at any white space: a form feed would part words for one of
+  // them alone.
+  for (std::size_t i = 0; i < stop; ++i)
+  {
+    const unsigned char c = static_cast<unsigned char>(head[i]);
+    if (c < 0x20 && c != '\n' && c != '\t')
+    {
+      return false;
+    }
+  }
   std::istringstream lines(head.substr(4, stop - 4 + 1));
   int element = 0; // 1 vertex, 2 face
   bool format = false, faceList = false;

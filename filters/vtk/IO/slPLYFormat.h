@@ -18,8 +18,9 @@
 
 /// Fills @p mesh from the @p size bytes at @p bytes, as vtkPLYReader reads
 /// them. Returns false, leaving @p mesh unspecified, unless the file is
-/// binary little-endian PLY (on a little-endian host) with header lines
-/// "comment" and "obj_info" aside, an element "vertex" of float properties
+/// binary little-endian PLY (on a little-endian host) whose header has no
+/// control byte but newlines and tabs and, "comment" and "obj_info" lines
+/// aside, an element "vertex" of float properties
 /// x, y, z and optionally nx, ny, nz and u, v (in any order), then an
 /// element "face" with one property, a list of vertex_indices (count uchar,
 /// indices int or uint), every face of 3 or more indices naming existing
