@@ -171,6 +171,9 @@ CASES = [
     mesh_case("vtp last block beyond the block size", "a.vtp", vtp_compressed_header(1, last=2147483744),
               'DataArray "Points": its compression header\'s last block of 2147483744 bytes is larger than its '
               'block size of 32768'),
+    # VTK's data size wraps around below zero blocks and it reads block 0 (a crash).
+    mesh_case("vtp compressed header without blocks but a last block", "a.vtp", vtp_compressed_header(0, last=480),
+              'DataArray "Points": its compression header declares no blocks but a last block of 480 bytes'),
     mesh_case("vtp compressed block beyond the file", "a.vtp", vtp_compressed_header(1, sizes=(2000000000,)),
               'DataArray "Points": its compression header gives block 0 2000000000 compressed bytes, more than the '
               'file\'s %d' % len(vtp_compressed_header(1, sizes=(2000000000,)))),

@@ -228,6 +228,14 @@ std::string slXMLCountsProblem(const std::string& fileName)
       return "DataArray \"" + name + "\": its compression header's last block of " + std::to_string(lastBlockSize) +
         " bytes is larger than its block size of " + std::to_string(blockSize);
     }
+    if (blocks == 0 && lastBlockSize != 0)
+    {
+      // VTK takes the data's size as (blocks - 1) * block size + the last
+      // block's: with no blocks that wraps around, and VTK reads block 0 of
+      // a list it never allocated.
+      return "DataArray \"" + name + "\": its compression header declares no blocks but a last block of " +
+        std::to_string(lastBlockSize) + " bytes";
+    }
     if (blocks > size / static_cast<unsigned long long>(wordSize) || blockSize > limit)
     {
       return "DataArray \"" + name + "\": its compression header declares " + std::to_string(blocks) +
