@@ -567,6 +567,103 @@ TEST(GeometryCore, AVX2AndBaselineLoopsGiveTheSameBits)
 /// Largest |cornerAngle(c, d) - atan2(c, d)| in T over angles swept across
 /// [0, pi] at lengths from 1e-6 to 1e6; atan2 in double on the same
 /// (rounded) inputs is the independent reference.
+/// fillBelowLastPoint() against fill() on 64 triangles whose ids are below
+/// the last point, for both id widths: the same coordinates to the bit.
+template <typename Id>
+void expectFourWideFillAsFill()
+{
+  const int64_t numPoints = 200;
+  std::vector<float> xyz(static_cast<size_t>(3 * numPoints));
+  uint32_t state = 987;
+  for (float& v : xyz)
+  {
+    state = state * 1664525u + 1013904223u;
+    v = static_cast<float>(state >> 8) / 4096.0f - 2048.0f;
+  }
+  const int capacity = slnormals::TriangleBlock<float>::Capacity;
+  std::vector<Id> ids(static_cast<size_t>(3 + 3 * capacity));
+  for (Id& id : ids)
+  {
+    state = state * 1664525u + 1013904223u;
+    id = static_cast<Id>(state % (numPoints - 1));
+  }
+  ids[3] = 0;
+  ids[4] = static_cast<Id>(numPoints - 2);
+  slnormals::TriangleBlock<float> one, four;
+  one.fill(ids.data(), xyz.data(), 3, capacity);
+  four.fillBelowLastPoint(ids.data(), xyz.data(), 3, capacity);
+  EXPECT_EQ(four.start, 3);
+  EXPECT_EQ(four.count, capacity);
+  EXPECT_EQ(std::memcmp(one.x, four.x, sizeof(one.x)), 0);
+  EXPECT_EQ(std::memcmp(one.y, four.y, sizeof(one.y)), 0);
+  EXPECT_EQ(std::memcmp(one.z, four.z, sizeof(one.z)), 0);
+}
+
+TEST(GeometryCore, FourWideFillReadsWhatFillReads)
+{
+  expectFourWideFillAsFill<int32_t>();
+  expectFourWideFillAsFill<int64_t>();
+}
+
+TEST(GeometryCore, ABlockNamingTheLastPointIsReadOnePointAtATime)
+{
+  // A strip of 128 triangles over 130 float points, numbered backwards so
+  // that the first block names the last point. The four-wide fill reads 16
+  // bytes a point, 4 past the last one's: that block must be read point by
+  // point (under AddressSanitizer, the points end exactly where the array
+  // does). The reference sums the Newell vectors in double.
+  const int64_t numPoints = 130;
+  std::vector<float> xyz(static_cast<size_t>(3 * numPoints));
+  for (int64_t j = 0; j < numPoints; ++j)
+  {
+    const int64_t id = numPoints - 1 - j;
+    xyz[static_cast<size_t>(3 * id)] = static_cast<float>(j / 2);
+    xyz[static_cast<size_t>(3 * id + 1)] = static_cast<float>(j % 2);
+    xyz[static_cast<size_t>(3 * id + 2)] = static_cast<float>((j * 7) % 5) * 0.25f;
+  }
+  std::vector<int64_t> offsets{ 0 }, connectivity;
+  for (int64_t j = 0; j + 2 < numPoints; ++j)
+  {
+    for (const int64_t k : { j, j + 1 + (j % 2), j + 2 - (j % 2) })
+    {
+      connectivity.push_back(numPoints - 1 - k);
+    }
+    offsets.push_back(static_cast<int64_t>(connectivity.size()));
+  }
+  Polygons<int64_t> p;
+  p.offsets = offsets.data();
+  p.connectivity = connectivity.data();
+  p.numPolygons = static_cast<int64_t>(offsets.size()) - 1;
+  ASSERT_EQ(p.numPolygons, 2 * slnormals::TriangleBlock<float>::Capacity);
+  std::vector<float> out(xyz.size());
+  ASSERT_TRUE(slnormals::computeVertexNormals(p, xyz.data(), numPoints, Weighting::Area, out.data(), Parallel()));
+  std::vector<double> sums(xyz.size(), 0.0);
+  for (int64_t f = 0; f < p.numPolygons; ++f)
+  {
+    const int64_t* t = &connectivity[static_cast<size_t>(3 * f)];
+    double e1[3], e2[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      e1[c] = static_cast<double>(xyz[static_cast<size_t>(3 * t[1] + c)]) - xyz[static_cast<size_t>(3 * t[0] + c)];
+      e2[c] = static_cast<double>(xyz[static_cast<size_t>(3 * t[2] + c)]) - xyz[static_cast<size_t>(3 * t[0] + c)];
+    }
+    const double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0] };
+    for (int k = 0; k < 3; ++k)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        sums[static_cast<size_t>(3 * t[k] + c)] += n[c];
+      }
+    }
+  }
+  for (int64_t v = 0; v < numPoints; ++v)
+  {
+    SCOPED_TRACE(v);
+    expectUnit(&out[static_cast<size_t>(3 * v)], sums[static_cast<size_t>(3 * v)],
+      sums[static_cast<size_t>(3 * v + 1)], sums[static_cast<size_t>(3 * v + 2)]);
+  }
+}
+
 template <typename T>
 double worstCornerAngleError()
 {

@@ -34,6 +34,10 @@
 
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
+#if defined(__SSE2__)
+#include <xmmintrin.h>
+#endif
 
 namespace slnormals
 {
@@ -47,7 +51,9 @@ struct TriangleBlock
   static constexpr int Capacity = 64;
   int count = 0;
   int64_t start = 0; ///< connectivity position of the first triangle's first corner
-  T x[3][Capacity], y[3][Capacity], z[3][Capacity];
+  alignas(16) T x[3][Capacity];
+  alignas(16) T y[3][Capacity];
+  alignas(16) T z[3][Capacity];
   // Products computed with the weights, in the vectorised loop, so that the
   // scatter, a chain of scattered read-add-writes, only adds.
   T cornerX[3][Capacity], cornerY[3][Capacity], cornerZ[3][Capacity];
@@ -93,6 +99,39 @@ struct TriangleBlock
         this->z[k][i] = p[2];
       }
     }
+  }
+
+  /// fill() for float points when no id is the last point's (numPoints - 1):
+  /// a point's coordinates and the next point's x come in one 16-byte load,
+  /// and four triangles' corners are transposed into the block at once
+  /// (SSE2; fill() elsewhere). @p n must be a multiple of 4.
+  template <typename Id>
+  void fillBelowLastPoint(const Id* connectivity, const T* xyz, int64_t o, int n)
+  {
+#if defined(__SSE2__)
+    if constexpr (std::is_same<T, float>::value)
+    {
+      this->start = o;
+      this->count = n;
+      const Id* ids = connectivity + o;
+      for (int i = 0; i < n; i += 4, ids += 12)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          __m128 p0 = _mm_loadu_ps(xyz + 3 * static_cast<int64_t>(ids[k]));
+          __m128 p1 = _mm_loadu_ps(xyz + 3 * static_cast<int64_t>(ids[3 + k]));
+          __m128 p2 = _mm_loadu_ps(xyz + 3 * static_cast<int64_t>(ids[6 + k]));
+          __m128 p3 = _mm_loadu_ps(xyz + 3 * static_cast<int64_t>(ids[9 + k]));
+          _MM_TRANSPOSE4_PS(p0, p1, p2, p3);
+          _mm_store_ps(&this->x[k][i], p0);
+          _mm_store_ps(&this->y[k][i], p1);
+          _mm_store_ps(&this->z[k][i], p2);
+        }
+      }
+      return;
+    }
+#endif
+    this->fill(connectivity, xyz, o, n);
   }
 
   /// Newell vectors and the weights of @p W (see slCornerWeights.h) of the

@@ -110,9 +110,9 @@ struct ChunkSink
   /// Whether the @p n entries at @p ids all lie in this chunk's range; then
   /// add<true>() may skip the test of each one.
   template <typename AccId>
-  bool ownsAll(const AccId* ids, int64_t n) const
+  bool ownsAll(const AccId* ids, int64_t n, int64_t below) const
   {
-    return slIdsWithin(ids, n, this->lo, this->hi);
+    return slIdsWithin(ids, n, this->lo, std::min(this->hi, below));
   }
 
   /// Asks for the cache line of @p id's sum ahead of add().
@@ -219,12 +219,19 @@ bool scatter(
     if (!Prefetch && block.count == 0 && e - f >= capacity && consecutiveTriangles(polys, f, capacity))
     {
       const Id* ids = polys.connectivity + polys.begin(f);
-      const bool inRange = idsAreEntries && sink.ownsAll(ids, 3 * capacity);
+      const bool inRange = idsAreEntries && sink.ownsAll(ids, 3 * capacity, numPoints - 1);
       if (!inRange && !slIdsBelow(ids, 3 * capacity, numPoints))
       {
         return false;
       }
-      block.fill(polys.connectivity, xyz, polys.begin(f), capacity);
+      if (inRange)
+      {
+        block.fillBelowLastPoint(polys.connectivity, xyz, polys.begin(f), capacity);
+      }
+      else
+      {
+        block.fill(polys.connectivity, xyz, polys.begin(f), capacity);
+      }
       flush(ownsEverything || inRange);
       f += capacity - 1;
       continue;
