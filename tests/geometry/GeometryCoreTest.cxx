@@ -564,9 +564,6 @@ TEST(GeometryCore, AVX2AndBaselineLoopsGiveTheSameBits)
   EXPECT_NEAR(std::sqrt(apart[0] * apart[0] + apart[1] * apart[1] + apart[2] * apart[2]), 1.0f, 1e-6f);
 }
 
-/// Largest |cornerAngle(c, d) - atan2(c, d)| in T over angles swept across
-/// [0, pi] at lengths from 1e-6 to 1e6; atan2 in double on the same
-/// (rounded) inputs is the independent reference.
 /// fillBelowLastPoint() against fill() on 64 triangles whose ids are below
 /// the last point, for both id widths: the same coordinates to the bit.
 template <typename Id>
@@ -664,6 +661,9 @@ TEST(GeometryCore, ABlockNamingTheLastPointIsReadOnePointAtATime)
   }
 }
 
+/// Largest |cornerAngle(c, d) - atan2(c, d)| in T over angles swept across
+/// [0, pi] at lengths from 1e-6 to 1e6; atan2 in double on the same
+/// (rounded) inputs is the independent reference.
 template <typename T>
 double worstCornerAngleError()
 {

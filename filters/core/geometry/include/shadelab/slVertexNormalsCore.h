@@ -107,8 +107,8 @@ struct ChunkSink
   /// Whether this chunk owns every entry: one chunk, or each chunk its own copy.
   bool ownsEverything() const { return this->lo == this->bounds[0] && this->hi == this->bounds[this->chunks]; }
 
-  /// Whether the @p n entries at @p ids all lie in this chunk's range; then
-  /// add<true>() may skip the test of each one.
+  /// Whether the @p n entries at @p ids all lie in this chunk's range and
+  /// below @p below; then add<true>() may skip the test of each one.
   template <typename AccId>
   bool ownsAll(const AccId* ids, int64_t n, int64_t below) const
   {
