@@ -1,4 +1,5 @@
 #include "BenchMachine.h"
+#include "BenchThreadPlacement.h"
 #include "BenchTiming.h"
 
 #include <vtkSMPTools.h>
@@ -138,6 +139,11 @@ BenchMachine BenchMachine::measure()
   {
     m.wakeUpShort = measureWakeUp(1, 50);
     m.wakeUpLong = measureWakeUp(10, 50);
+    if (placeSMPThreads(true) == m.threads)
+    {
+      m.wakeUpLongPinned = measureWakeUp(10, 50);
+    }
+    placeSMPThreads(false);
   }
   return m;
 }
@@ -153,6 +159,11 @@ void BenchMachine::print() const
   {
     std::printf("second thread's start in a loop of two %d us tasks, median of %d: %s; %s\n", kTaskMicroseconds,
       this->wakeUpShort.tries, describe(this->wakeUpShort).c_str(), describe(this->wakeUpLong).c_str());
+    if (this->wakeUpLongPinned.tries > 0)
+    {
+      std::printf("  the same, each thread pinned to a CPU of its own (then freed for the bench): %s\n",
+        describe(this->wakeUpLongPinned).c_str());
+    }
   }
   std::printf("\n");
 }

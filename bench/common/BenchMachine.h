@@ -14,7 +14,10 @@
  * With more than one thread it also measures how soon a second thread
  * joins a parallel loop after the pool had no work (WakeUp): on a virtual
  * machine that can take longer than a small mesh's whole update, which
- * bounds what a second thread can give there.
+ * bounds what a second thread can give there. It measures that once more
+ * with each thread pinned to a CPU of its own (BenchThreadPlacement.h), then
+ * frees the threads again: the difference is the cost of where the
+ * scheduler puts a woken thread, not of waking it.
  */
 #include <string>
 
@@ -41,6 +44,7 @@ struct BenchMachine
   double bandwidthAllThreads = 0;  ///< GB/s
   std::string loadAverage;         ///< /proc/loadavg's first three fields
   WakeUp wakeUpShort, wakeUpLong;  ///< after 1 ms and 10 ms idle; tries 0 on one thread
+  WakeUp wakeUpLongPinned;         ///< after 10 ms idle, threads pinned; tries 0 if they could not be
 
   /// Reads the machine and measures the bandwidth and the wake-up (about
   /// a second and a half).
