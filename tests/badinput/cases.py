@@ -190,6 +190,35 @@ CASES = [
     mesh_case("vtp appended base64 header block count", "a.vtp", vtp_appended_base64_header(1429727086),
               'DataArray "Points": its compression header declares 1429727086 blocks of 32768 bytes, more than a '
               'file of 465 bytes can hold'),
+    # VTK reads an array with an offset from the appended data whatever its
+    # format says (found by fuzzing: "for-at" for "format", 2.2 GB allocated).
+    mesh_case("vtp appended array without a format", "a.vtp",
+              vtp_appended_base64_header(1429727086).replace(b' format="appended"', b''),
+              'DataArray "Points": its compression header declares 1429727086 blocks of 32768 bytes, more than a '
+              'file of 447 bytes can hold'),
+    # expat reads attributes in single quotes, with white space around "=",
+    # and with character references decoded: so must the check.
+    mesh_case("vtp count in single quotes", "a.vtp",
+              vtp(b"0 1 2", points=10**12).replace(b'NumberOfPoints="1000000000000"', b"NumberOfPoints = '1000000000000'"),
+              'NumberOfPoints=1000000000000 is more than a file of 518 bytes can hold'),
+    mesh_case("vtp count written with a character reference", "a.vtp",
+              vtp(b"0 1 2", points=10**12).replace(b'"1000000000000"', b'"&#49;000000000000"'),
+              'NumberOfPoints=1000000000000 is more than a file of 520 bytes can hold'),
+    # A comment may hold quotes and '<': the counts after it are still read.
+    mesh_case("vtp count after a comment with a quote", "a.vtp",
+              vtp(b"0 1 2", points=10**12).replace(b"<PolyData>", b"<!-- 5 < 6 \" --><PolyData>"),
+              'NumberOfPoints=1000000000000 is more than a file of 532 bytes can hold'),
+    mesh_case("vtp appended offset after white space", "a.vtp",
+              vtp_appended_base64_header(1429727086).replace(b' offset="0"', b'\n offset = "4"').replace(b"\n_", b"\n_AAAA"),
+              'DataArray "Points": its compression header declares 1429727086 blocks of 32768 bytes, more than a '
+              'file of 472 bytes can hold'),
+    mesh_case("vtp negative appended offset", "a.vtp",
+              vtp_appended_base64_header(1).replace(b' offset="0"', b' offset="-12"'),
+              'DataArray "Points": its offset -12 is negative'),
+    mesh_case("vtp entity declaration", "a.vtp",
+              vtp(b"0 1 2").replace(b'<VTKFile', b'<!DOCTYPE VTKFile [<!ENTITY n "1000000000000">]>\n<VTKFile')
+              .replace(b'NumberOfPoints="3"', b'NumberOfPoints="&n;"'),
+              "an entity declaration, which VTK's XML files do not have"),
     # legacy VTK
     mesh_case("vtk index beyond points", "a.vtk", legacy_vtk(b"POLYGONS 1 4\n3 0 1 7\n"), 'polygon 0 names point 7, but the mesh has 3 points (0 to 2)'),
     mesh_case("vtk negative index", "a.vtk", legacy_vtk(b"POLYGONS 1 4\n3 0 -2 1\n"), 'polygon 0 names point -2, but the mesh has 3 points (0 to 2)'),

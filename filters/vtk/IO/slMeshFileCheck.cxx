@@ -56,18 +56,142 @@ std::string slSTLProblem(const std::string& fileName)
 
 namespace
 {
-/// The value of attribute @p name in the tag text @p tag, or "".
+bool isXMLSpace(char c)
+{
+  return c == ' ' || c == '\t' || c == '\r' || c == '\n';
+}
+
+/// The end of the start tag that begins at @p at in @p text: the position
+/// of its closing '>' outside quoted values (npos if the text ends first).
+size_t tagEnd(const std::string& text, size_t at)
+{
+  char quote = 0;
+  for (size_t i = at; i < text.size(); ++i)
+  {
+    const char c = text[i];
+    if (quote)
+    {
+      quote = c == quote ? 0 : quote;
+    }
+    else if (c == '"' || c == '\'')
+    {
+      quote = c;
+    }
+    else if (c == '>')
+    {
+      return i;
+    }
+  }
+  return std::string::npos;
+}
+
+/// @p value with its character references and predefined entities decoded
+/// and each white space character made a space, as expat hands attribute
+/// values to VTK's XML parser.
+std::string xmlAttributeValue(const std::string& value)
+{
+  std::string out;
+  for (size_t i = 0; i < value.size(); ++i)
+  {
+    const char c = value[i];
+    const size_t semicolon = c == '&' ? value.find(';', i) : std::string::npos;
+    if (semicolon == std::string::npos)
+    {
+      out += isXMLSpace(c) ? ' ' : c;
+      continue;
+    }
+    const std::string entity = value.substr(i + 1, semicolon - i - 1);
+    static const char* const names[][2] = { { "lt", "<" }, { "gt", ">" }, { "amp", "&" }, { "quot", "\"" },
+      { "apos", "'" } };
+    bool known = false;
+    for (const auto& name : names)
+    {
+      if (entity == name[0])
+      {
+        out += name[1];
+        known = true;
+      }
+    }
+    if (!known && entity.size() > 1 && entity[0] == '#')
+    {
+      const bool hex = entity[1] == 'x';
+      const unsigned long code = std::strtoul(entity.c_str() + (hex ? 2 : 1), nullptr, hex ? 16 : 10);
+      // A character outside ASCII cannot be part of a number or of one of
+      // VTK's keywords: '?' stands for it.
+      out += code > 0 && code < 128 ? static_cast<char>(code) : '?';
+      known = true;
+    }
+    if (!known)
+    {
+      out += value.substr(i, semicolon - i + 1);
+    }
+    i = semicolon;
+  }
+  return out;
+}
+
+/// Whether the start tag @p tag ("<Name" up to its '>') has attribute
+/// @p name, and its value in @p value. Read as expat reads it: white space
+/// around '=', single or double quotes, references decoded.
+bool findAttribute(const std::string& tag, const std::string& name, std::string* value)
+{
+  size_t i = 1;
+  while (i < tag.size() && !isXMLSpace(tag[i]) && tag[i] != '/')
+  {
+    ++i; // the element's name
+  }
+  while (i < tag.size())
+  {
+    while (i < tag.size() && (isXMLSpace(tag[i]) || tag[i] == '/'))
+    {
+      ++i;
+    }
+    const size_t nameBegin = i;
+    while (i < tag.size() && !isXMLSpace(tag[i]) && tag[i] != '=')
+    {
+      ++i;
+    }
+    const std::string attributeName = tag.substr(nameBegin, i - nameBegin);
+    while (i < tag.size() && isXMLSpace(tag[i]))
+    {
+      ++i;
+    }
+    if (i >= tag.size() || tag[i] != '=')
+    {
+      return false; // not well-formed: expat refuses the file
+    }
+    ++i;
+    while (i < tag.size() && isXMLSpace(tag[i]))
+    {
+      ++i;
+    }
+    if (i >= tag.size() || (tag[i] != '"' && tag[i] != '\''))
+    {
+      return false;
+    }
+    const size_t close = tag.find(tag[i], i + 1);
+    if (close == std::string::npos)
+    {
+      return false;
+    }
+    if (attributeName == name)
+    {
+      if (value)
+      {
+        *value = xmlAttributeValue(tag.substr(i + 1, close - i - 1));
+      }
+      return true;
+    }
+    i = close + 1;
+  }
+  return false;
+}
+
+/// The value of attribute @p name in the start tag @p tag, or "".
 std::string attribute(const std::string& tag, const std::string& name)
 {
-  const std::string key = " " + name + "=\"";
-  const size_t at = tag.find(key);
-  if (at == std::string::npos)
-  {
-    return std::string();
-  }
-  const size_t begin = at + key.size();
-  const size_t end = tag.find('"', begin);
-  return end == std::string::npos ? std::string() : tag.substr(begin, end - begin);
+  std::string value;
+  return findAttribute(tag, name, &value) ? value : std::string();
 }
 
 /// @p bytes bytes decoded from the base64 text of @p text at @p begin, as
@@ -114,23 +238,53 @@ std::string slXMLCountsProblem(const std::string& fileName)
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const size_t appended = bytes.find("<AppendedData");
   const std::string text = bytes.substr(0, appended);
-  static const char* const names[] = { "NumberOfPoints=\"", "NumberOfVerts=\"", "NumberOfLines=\"",
-    "NumberOfStrips=\"", "NumberOfPolys=\"", "NumberOfTuples=\"", "NumberOfComponents=\"" };
-  for (const char* name : names)
+  // expat expands a declared entity in an attribute value; the checks below
+  // read the values with the predefined references only.
+  if (text.find("<!ENTITY") != std::string::npos)
   {
-    for (size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + 1))
+    return "an entity declaration, which VTK's XML files do not have";
+  }
+  static const char* const names[] = { "NumberOfPoints", "NumberOfVerts", "NumberOfLines", "NumberOfStrips",
+    "NumberOfPolys", "NumberOfTuples", "NumberOfComponents" };
+  for (size_t at = text.find('<'); at != std::string::npos && at < text.size(); at = text.find('<', at + 1))
+  {
+    // Comments, CDATA sections and processing instructions may hold any
+    // character but their end marker, quotes and '<' included: skip them.
+    static const char* const skipped[][2] = { { "<!--", "-->" }, { "<![CDATA[", "]]>" }, { "<?", "?>" } };
+    const auto kind = std::find_if(std::begin(skipped), std::end(skipped),
+      [&](const char* const* marks) { return text.compare(at, std::strlen(marks[0]), marks[0]) == 0; });
+    if (kind != std::end(skipped))
     {
-      const size_t begin = at + std::strlen(name);
-      unsigned long long value = 0;
-      size_t i = begin;
-      for (; i < text.size() && i < begin + 21 && text[i] >= '0' && text[i] <= '9'; ++i)
+      at = std::min(text.find((*kind)[1], at + std::strlen((*kind)[0])), text.size());
+      continue;
+    }
+    // Elsewhere in a well-formed file '<' starts a tag, and its value quotes
+    // and '>' close: where they do not, expat refuses the file.
+    const size_t end = tagEnd(text, at);
+    if (end == std::string::npos)
+    {
+      break;
+    }
+    const std::string tag = text.substr(at, end - at);
+    for (const char* name : names)
+    {
+      std::string value;
+      if (!findAttribute(tag, name, &value))
       {
-        value = value * 10 + static_cast<unsigned long long>(text[i] - '0');
+        continue;
       }
-      if (i - begin > 20 || value > limit)
+      // VTK reads a count with operator>>: white space, a sign, digits.
+      size_t begin = value.find_first_not_of(' ');
+      begin = begin != std::string::npos && value[begin] == '+' ? begin + 1 : begin;
+      unsigned long long count = 0;
+      size_t i = begin;
+      for (; i < value.size() && i < begin + 21 && value[i] >= '0' && value[i] <= '9'; ++i)
       {
-        const std::string attributeName(name, std::strlen(name) - 2);
-        return attributeName + "=" + text.substr(begin, std::min<size_t>(i - begin, 20)) +
+        count = count * 10 + static_cast<unsigned long long>(value[i] - '0');
+      }
+      if (begin != std::string::npos && (i - begin > 20 || count > limit))
+      {
+        return std::string(name) + "=" + value.substr(begin, std::min<size_t>(i - begin, 20)) +
           " is more than a file of " + std::to_string(size) + " bytes can hold";
       }
     }
@@ -171,40 +325,55 @@ std::string slXMLCountsProblem(const std::string& fileName)
   }
   for (size_t at = text.find("<DataArray"); at != std::string::npos; at = text.find("<DataArray", at + 1))
   {
+    // VTK starts inline data after the first '>' from the element's start,
+    // even one inside a quoted value; the attributes end at the tag's end.
     const size_t close = text.find('>', at);
-    if (close == std::string::npos)
+    const size_t end = tagEnd(text, at);
+    if (close == std::string::npos || end == std::string::npos)
     {
       break;
     }
-    const std::string tag = text.substr(at, close - at);
+    const std::string tag = text.substr(at, end - at);
     const std::string format = attribute(tag, "format");
+    std::string offsetText;
+    const bool hasOffset = findAttribute(tag, "offset", &offsetText);
     // The first @p n bytes of the array's compression header ("" if its data
     // does not start within the file).
     bool located = false; // the array's data starts within the file
     size_t dataAt = 0;
-    if (format == "binary")
+    // VTK reads an array with an offset from the appended data, whatever its
+    // format says, and one without from the element: binary only when its
+    // format says so.
+    const bool inlineBinary = !hasOffset && format == "binary";
+    if (inlineBinary)
     {
       // vtkXMLDataParser starts inline data at its first non-space character.
       located = true;
       dataAt = text.find_first_not_of(" \t\r\n", close + 1);
       dataAt = dataAt == std::string::npos ? text.size() : dataAt;
     }
-    else if (format == "appended")
+    else if (hasOffset)
     {
-      const unsigned long long offset = std::strtoull(attribute(tag, "offset").c_str(), nullptr, 10);
-      if (appendedStart != std::string::npos && offset < bytes.size() - appendedStart)
+      long long offset = 0;
+      std::istringstream(offsetText) >> offset; // as vtkXMLDataElement reads it
+      if (offset < 0)
+      {
+        return "DataArray \"" + shadelab::printableText(attribute(tag, "Name")) + "\": its offset " +
+          std::to_string(offset) + " is negative";
+      }
+      if (appendedStart != std::string::npos && static_cast<unsigned long long>(offset) < bytes.size() - appendedStart)
       {
         located = true;
         dataAt = appendedStart + static_cast<size_t>(offset);
       }
     }
-    const bool base64Encoded = format == "binary" || (format == "appended" && appendedBase64);
+    const bool base64Encoded = inlineBinary || (hasOffset && appendedBase64);
     auto headerBytes = [&](size_t n) -> std::string {
       if (!located)
       {
         return std::string();
       }
-      return base64Encoded ? base64(format == "binary" ? text : bytes, dataAt, n) : bytes.substr(dataAt, n);
+      return base64Encoded ? base64(inlineBinary ? text : bytes, dataAt, n) : bytes.substr(dataAt, n);
     };
     const std::string name = shadelab::printableText(attribute(tag, "Name"));
     const std::string header = headerBytes(static_cast<size_t>(3 * wordSize));
