@@ -46,8 +46,8 @@ struct BenchMachine
   WakeUp wakeUpShort, wakeUpLong;  ///< after 1 ms and 10 ms idle; tries 0 on one thread
   WakeUp wakeUpLongPinned;         ///< after 10 ms idle, threads pinned; tries 0 if they could not be
 
-  /// Reads the machine and measures the bandwidth and the wake-up (about
-  /// a second and a half).
+  /// Reads the machine and measures the bandwidth and the wake-ups (about
+  /// two seconds).
   static BenchMachine measure();
   /// Prints a few lines describing it.
   void print() const;
