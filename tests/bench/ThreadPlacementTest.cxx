@@ -102,17 +102,6 @@ TEST_F(ThreadPlacement, EachPoolThreadGetsACpuOfItsOwn)
   EXPECT_EQ(used.size(), 2u) << "both threads on one CPU";
 }
 
-TEST_F(ThreadPlacement, StaysPinnedWhenVTKMakesANewPool)
-{
-  ASSERT_EQ(placeSMPThreads(true), 2);
-  vtkSMPTools::Initialize(1);
-  vtkSMPTools::Initialize(2);
-  for (const auto& thread : allowedPerPoolThread())
-  {
-    EXPECT_EQ(thread.second.size(), 1u) << "thread " << thread.first;
-  }
-}
-
 TEST_F(ThreadPlacement, FreedThreadsMayRunAnywhereAgain)
 {
   const std::set<int> before = allowedHere();

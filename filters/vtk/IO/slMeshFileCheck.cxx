@@ -13,6 +13,8 @@
 #include <fstream>
 #include <iterator>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include <sys/stat.h>
 
@@ -130,16 +132,27 @@ std::string xmlAttributeValue(const std::string& value)
   return out;
 }
 
-/// Whether the start tag @p tag ("<Name" up to its '>') has attribute
-/// @p name, and its value in @p value. Read as expat reads it: white space
-/// around '=', single or double quotes, references decoded.
-bool findAttribute(const std::string& tag, const std::string& name, std::string* value)
+/// A start tag's attributes: names and values, in the tag's order.
+using XMLAttributes = std::vector<std::pair<std::string, std::string>>;
+
+/// The attributes of the start tag @p tag ("<Name" up to its '>'), read as
+/// expat reads them: white space around '=', single or double quotes,
+/// references decoded. Ends at the first thing expat would refuse (it then
+/// refuses the file).
+XMLAttributes xmlAttributes(const std::string& tag)
 {
+  XMLAttributes attributes;
   size_t i = 1;
   while (i < tag.size() && !isXMLSpace(tag[i]) && tag[i] != '/')
   {
     ++i; // the element's name
   }
+  const auto skipSpace = [&] {
+    while (i < tag.size() && isXMLSpace(tag[i]))
+    {
+      ++i;
+    }
+  };
   while (i < tag.size())
   {
     while (i < tag.size() && (isXMLSpace(tag[i]) || tag[i] == '/'))
@@ -151,47 +164,44 @@ bool findAttribute(const std::string& tag, const std::string& name, std::string*
     {
       ++i;
     }
-    const std::string attributeName = tag.substr(nameBegin, i - nameBegin);
-    while (i < tag.size() && isXMLSpace(tag[i]))
-    {
-      ++i;
-    }
+    const size_t nameEnd = i;
+    skipSpace();
     if (i >= tag.size() || tag[i] != '=')
     {
-      return false; // not well-formed: expat refuses the file
+      break;
     }
     ++i;
-    while (i < tag.size() && isXMLSpace(tag[i]))
-    {
-      ++i;
-    }
-    if (i >= tag.size() || (tag[i] != '"' && tag[i] != '\''))
-    {
-      return false;
-    }
-    const size_t close = tag.find(tag[i], i + 1);
+    skipSpace();
+    const size_t close = i < tag.size() && (tag[i] == '"' || tag[i] == '\'') ? tag.find(tag[i], i + 1) : std::string::npos;
     if (close == std::string::npos)
     {
-      return false;
+      break;
     }
-    if (attributeName == name)
-    {
-      if (value)
-      {
-        *value = xmlAttributeValue(tag.substr(i + 1, close - i - 1));
-      }
-      return true;
-    }
+    attributes.emplace_back(tag.substr(nameBegin, nameEnd - nameBegin), xmlAttributeValue(tag.substr(i + 1, close - i - 1)));
     i = close + 1;
   }
-  return false;
+  return attributes;
+}
+
+/// The value of attribute @p name among @p attributes, or null.
+const std::string* findAttribute(const XMLAttributes& attributes, const std::string& name)
+{
+  for (const auto& attribute : attributes)
+  {
+    if (attribute.first == name)
+    {
+      return &attribute.second;
+    }
+  }
+  return nullptr;
 }
 
 /// The value of attribute @p name in the start tag @p tag, or "".
 std::string attribute(const std::string& tag, const std::string& name)
 {
-  std::string value;
-  return findAttribute(tag, name, &value) ? value : std::string();
+  const XMLAttributes attributes = xmlAttributes(tag);
+  const std::string* value = findAttribute(attributes, name);
+  return value ? *value : std::string();
 }
 
 /// @p bytes bytes decoded from the base64 text of @p text at @p begin, as
@@ -265,14 +275,15 @@ std::string slXMLCountsProblem(const std::string& fileName)
     {
       break;
     }
-    const std::string tag = text.substr(at, end - at);
+    const XMLAttributes attributes = xmlAttributes(text.substr(at, end - at));
     for (const char* name : names)
     {
-      std::string value;
-      if (!findAttribute(tag, name, &value))
+      const std::string* found = findAttribute(attributes, name);
+      if (!found)
       {
         continue;
       }
+      const std::string& value = *found;
       // VTK reads a count with operator>>: white space, a sign, digits.
       size_t begin = value.find_first_not_of(' ');
       begin = begin != std::string::npos && value[begin] == '+' ? begin + 1 : begin;
@@ -294,7 +305,7 @@ std::string slXMLCountsProblem(const std::string& fileName)
   // size, the last block's size, then each block's compressed size. VTK
   // allocates what the first two say: both must fit the file.
   const size_t fileTag = text.find("<VTKFile");
-  const std::string vtkFile = fileTag == std::string::npos ? std::string() : text.substr(fileTag, text.find('>', fileTag) - fileTag);
+  const std::string vtkFile = fileTag == std::string::npos ? std::string() : text.substr(fileTag, tagEnd(text, fileTag) - fileTag);
   if (attribute(vtkFile, "compressor").empty())
   {
     return std::string();
@@ -333,10 +344,13 @@ std::string slXMLCountsProblem(const std::string& fileName)
     {
       break;
     }
-    const std::string tag = text.substr(at, end - at);
-    const std::string format = attribute(tag, "format");
-    std::string offsetText;
-    const bool hasOffset = findAttribute(tag, "offset", &offsetText);
+    const XMLAttributes attributes = xmlAttributes(text.substr(at, end - at));
+    const std::string* formatValue = findAttribute(attributes, "format");
+    const std::string* nameValue = findAttribute(attributes, "Name");
+    const std::string format = formatValue ? *formatValue : std::string();
+    const std::string name = shadelab::printableText(nameValue ? *nameValue : std::string());
+    const std::string* offsetText = findAttribute(attributes, "offset");
+    const bool hasOffset = offsetText != nullptr;
     // The first @p n bytes of the array's compression header ("" if its data
     // does not start within the file).
     bool located = false; // the array's data starts within the file
@@ -355,11 +369,10 @@ std::string slXMLCountsProblem(const std::string& fileName)
     else if (hasOffset)
     {
       long long offset = 0;
-      std::istringstream(offsetText) >> offset; // as vtkXMLDataElement reads it
+      std::istringstream(*offsetText) >> offset; // as vtkXMLDataElement reads it
       if (offset < 0)
       {
-        return "DataArray \"" + shadelab::printableText(attribute(tag, "Name")) + "\": its offset " +
-          std::to_string(offset) + " is negative";
+        return "DataArray \"" + name + "\": its offset " + std::to_string(offset) + " is negative";
       }
       if (appendedStart != std::string::npos && static_cast<unsigned long long>(offset) < bytes.size() - appendedStart)
       {
@@ -375,7 +388,6 @@ std::string slXMLCountsProblem(const std::string& fileName)
       }
       return base64Encoded ? base64(inlineBinary ? text : bytes, dataAt, n) : bytes.substr(dataAt, n);
     };
-    const std::string name = shadelab::printableText(attribute(tag, "Name"));
     const std::string header = headerBytes(static_cast<size_t>(3 * wordSize));
     if (header.size() < static_cast<size_t>(3 * wordSize))
     {
