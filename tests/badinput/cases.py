@@ -208,6 +208,19 @@ CASES = [
     mesh_case("vtp count after a comment with a quote", "a.vtp",
               vtp(b"0 1 2", points=10**12).replace(b"<PolyData>", b"<!-- 5 < 6 \" --><PolyData>"),
               'NumberOfPoints=1000000000000 is more than a file of 532 bytes can hold'),
+    # Markup inside a comment is not markup: neither a tag that would end
+    # the markup early nor one that would lend the file its attributes.
+    mesh_case("vtp count after a comment naming the appended data", "a.vtp",
+              vtp(b"0 1 2", points=10**12).replace(b"<PolyData>", b"<!-- <AppendedData> --><PolyData>"),
+              'NumberOfPoints=1000000000000 is more than a file of 539 bytes can hold'),
+    mesh_case("vtp compressed header after a comment naming the file", "a.vtp",
+              vtp_compressed_header(2000000000).replace(b"<VTKFile", b"<!-- <VTKFile> -->\n<VTKFile", 1),
+              'DataArray "Points": its compression header declares 2000000000 blocks of 32768 bytes, more than a file '
+              'of 431 bytes can hold'),
+    # Each '<' starts a tag that ends at the last byte: the check reads on
+    # from a tag's end, not from its next byte (which took minutes here).
+    mesh_case("vtp a megabyte of tag starts closed once", "a.vtp", b"<" * 1000000 + b">",
+              'Error parsing XML in stream at line 1, column 1, byte index 1: not well-formed (invalid token)'),
     mesh_case("vtp appended offset after white space", "a.vtp",
               vtp_appended_base64_header(1429727086).replace(b' offset="0"', b'\n offset = "4"').replace(b"\n_", b"\n_AAAA"),
               'DataArray "Points": its compression header declares 1429727086 blocks of 32768 bytes, more than a '

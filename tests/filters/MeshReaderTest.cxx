@@ -18,7 +18,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <fstream>
+#include <iterator>
 
 namespace
 {
@@ -84,6 +86,31 @@ TEST(MeshReader, ReadsVTKWrittenFormats)
   const ReadResult r = read(folder.path("s.stl"));
   EXPECT_EQ(r.error, "");
   EXPECT_EQ(r.mesh->GetNumberOfPolys(), expectedCells); // STL merges points itself
+}
+
+// The VTP check reads the markup as expat does: a tag inside a comment or a
+// processing instruction is text, and a valid file holding one reads.
+TEST(MeshReader, VTPTagsInCommentsAreText)
+{
+  const TestFolder folder;
+  vtkSmartPointer<vtkPolyData> input = sphere();
+  vtkNew<vtkXMLPolyDataWriter> vtp;
+  vtp->SetInputData(input);
+  vtp->SetFileName(folder.path("plain.vtp").c_str());
+  vtp->Write();
+  std::ifstream in(folder.path("plain.vtp"), std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_NE(text.find(" compressor="), std::string::npos) << "the header check applies";
+  // As arrays, each would declare 4294967295 blocks or a negative offset.
+  const std::string lookalikes = "<!-- <DataArray Name=\"a\" format=\"binary\">////////////////</DataArray> -->"
+                                 "<?note <DataArray Name=\"b\" offset=\"-1\"/> ?>";
+  text.insert(text.find("<PolyData>") + std::strlen("<PolyData>"), lookalikes);
+  std::ofstream(folder.path("commented.vtp"), std::ios::binary) << text;
+
+  const ReadResult r = read(folder.path("commented.vtp"));
+  EXPECT_EQ(r.error, "");
+  EXPECT_EQ(r.mesh->GetNumberOfPoints(), input->GetNumberOfPoints());
+  EXPECT_EQ(r.mesh->GetNumberOfPolys(), input->GetNumberOfPolys());
 }
 
 TEST(MeshReader, ObjCornersAreMergedButUVSeamsStay)

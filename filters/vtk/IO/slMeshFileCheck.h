@@ -27,7 +27,7 @@ std::string slOBJProblem(const std::string& fileName);
 std::string slPLYProblem(const std::string& fileName);
 std::string slSTLProblem(const std::string& fileName);
 std::string slGLTFProblem(const std::string& fileName, bool binary);
-std::string slXMLCountsProblem(const std::string& fileName);
+std::string slVTPProblem(const std::string& fileName);
 std::string slLegacyVTKProblem(const std::string& fileName);
 
 #endif
