@@ -12,9 +12,7 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <functional>
-#include <iterator>
 #include <vector>
 
 namespace
@@ -474,8 +472,7 @@ std::uint32_t little32(const unsigned char* b)
 
 std::string slGLTFProblem(const std::string& fileName, bool binary)
 {
-  std::ifstream in(fileName, std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string bytes = slReadWholeFile(fileName);
   std::string text = bytes;
   long long binChunk = -1;
   if (binary)

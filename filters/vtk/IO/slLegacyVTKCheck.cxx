@@ -20,8 +20,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <iterator>
 #include <vector>
 
 namespace
@@ -555,8 +553,7 @@ void walk(const std::string& bytes)
 
 std::string slLegacyVTKProblem(const std::string& fileName)
 {
-  std::ifstream in(fileName, std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string bytes = slReadWholeFile(fileName);
   try
   {
     walk(bytes);

@@ -22,6 +22,10 @@
 /// element or byte where there is one.
 std::string slMeshFileProblem(const std::string& fileName, const std::string& ext);
 
+/// The bytes of the file @p fileName, all of them, in one read ("" if it
+/// does not open). The checks that need the whole file read it so.
+std::string slReadWholeFile(const std::string& fileName);
+
 /// The checks per format, on a file already known to open.
 std::string slOBJProblem(const std::string& fileName);
 std::string slPLYProblem(const std::string& fileName);

@@ -12,8 +12,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <fstream>
-#include <iterator>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -239,14 +237,15 @@ std::string elementAttribute(
 
 std::string slVTPProblem(const std::string& fileName)
 {
-  std::ifstream in(fileName, std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string bytes = slReadWholeFile(fileName);
   const std::vector<slXMLStartTag> tags = slReadXMLStartTags(bytes);
   const bool hasAppended = !tags.empty() && tags.back().name == "AppendedData";
   const size_t markupEnd = hasAppended ? tags.back().begin : bytes.size();
   // expat expands a declared entity in an attribute value; the tags are read
   // with the predefined references only.
-  if (bytes.substr(0, markupEnd).find("<!ENTITY") != std::string::npos)
+  const std::string entity = "<!ENTITY";
+  const auto markupEndAt = bytes.begin() + static_cast<std::ptrdiff_t>(markupEnd);
+  if (std::search(bytes.begin(), markupEndAt, entity.begin(), entity.end()) != markupEndAt)
   {
     return "an entity declaration, which VTK's XML files do not have";
   }
