@@ -221,6 +221,10 @@ CASES = [
     # from a tag's end, not from its next byte (which took minutes here).
     mesh_case("vtp a megabyte of tag starts closed once", "a.vtp", b"<" * 1000000 + b">",
               'Error parsing XML in stream at line 1, column 1, byte index 1: not well-formed (invalid token)'),
+    # Each '&' of a value looks for its ';': once for all of them, not once
+    # each (eight megabytes took minutes).
+    mesh_case("vtp eight megabytes of ampersands in a value", "a.vtp", b'<VTKFile a="' + b"&" * 8000000 + b'">',
+              'Error parsing XML in stream at line 1, column 13, byte index 13: not well-formed (invalid token)'),
     mesh_case("vtp appended offset after white space", "a.vtp",
               vtp_appended_base64_header(1429727086).replace(b' offset="0"', b'\n offset = "4"').replace(b"\n_", b"\n_AAAA"),
               'DataArray "Points": its compression header declares 1429727086 blocks of 32768 bytes, more than a '

@@ -42,10 +42,17 @@ size_t tagEnd(const std::string& text, size_t at)
 std::string xmlAttributeValue(const std::string& value)
 {
   std::string out;
+  // The first ';' at or after i, searched for again only once i has passed
+  // it, so that a value of many '&' and no ';' is read once, not once per '&'.
+  size_t nextSemicolon = value.find(';');
   for (size_t i = 0; i < value.size(); ++i)
   {
     const char c = value[i];
-    const size_t semicolon = c == '&' ? value.find(';', i) : std::string::npos;
+    if (c == '&' && nextSemicolon != std::string::npos && nextSemicolon < i)
+    {
+      nextSemicolon = value.find(';', i);
+    }
+    const size_t semicolon = c == '&' ? nextSemicolon : std::string::npos;
     if (semicolon == std::string::npos)
     {
       out += isXMLSpace(c) ? ' ' : c;
