@@ -249,6 +249,14 @@ CASES = [
               b"\nMETADATA\nINFORMATION 1\nNAME X LOCATION Y\nDATA 1\n\0\0\0\nPOLYGONS 1 4\n" +
               struct.pack(">4i", 3, 0, 1, 2) + b"\n",
               'line 11: a NUL byte within a METADATA block'),
+    # vtkDataReader reads a legacy cell list into int with operator>>: it
+    # crashed on "3.0" (count 3, then ".0"); "1e23" was no number of ids.
+    mesh_case("vtk cell count with a decimal point", "a.vtk", legacy_vtk(b"POLYGONS 1 4\n3.0 0 1 2\n"),
+              'line 8: POLYGONS: "3.0" is not an integer VTK reads as int'),
+    mesh_case("vtk cell id in exponent form", "a.vtk", legacy_vtk(b"POLYGONS 1 4\n3 0 1 1e23\n"),
+              'line 8: POLYGONS: "1e23" is not an integer VTK reads as int'),
+    mesh_case("vtk cell id beyond int", "a.vtk", legacy_vtk(b"POLYGONS 1 4\n3 0 1 4294967298\n"),
+              'line 8: POLYGONS: "4294967298" is not an integer VTK reads as int'),
     mesh_case("vtk dataset type with a tail", "a.vtk", legacy_vtk(b"POLYGONS 1 4\n3 0 1 2\n", dataset=b"POLYDATAx"),
               'line 4: dataset type "POLYDATAX" is not POLYDATA, though VTK would read it as POLYDATA'),
     mesh_case("vtk not polydata", "a.vtk", legacy_vtk(b"", dataset=b"UNSTRUCTURED_GRID"), 'Cannot read dataset type: unstructured_grid'),

@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <vector>
 
 namespace
@@ -193,7 +194,7 @@ public:
       {
         const std::string text = this->word(("value " + std::to_string(i + 1) + " of " + std::to_string(n) + " of " + section).c_str());
         char* end = nullptr;
-        const double value = std::strtod(text.c_str(), &end);
+        std::strtod(text.c_str(), &end);
         if (end == text.c_str() || *end != '\0')
         {
           fail("line " + std::to_string(this->line()) + ": " + section + ": \"" + shadelab::printableText(text) +
@@ -201,7 +202,18 @@ public:
         }
         if (keep)
         {
-          keep->push_back(static_cast<long long>(value));
+          // VTK reads a legacy cell list with operator>> into int: "1e23"
+          // or "3.0" stops it there, as does a value beyond int.
+          errno = 0;
+          char* intEnd = nullptr;
+          const long long id = std::strtoll(text.c_str(), &intEnd, 10);
+          if (*intEnd != '\0' || errno == ERANGE || id < std::numeric_limits<int>::min() ||
+            id > std::numeric_limits<int>::max())
+          {
+            fail("line " + std::to_string(this->line()) + ": " + section + ": \"" + shadelab::printableText(text) +
+              "\" is not an integer VTK reads as int");
+          }
+          keep->push_back(id);
         }
       }
       return;
