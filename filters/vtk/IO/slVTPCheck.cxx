@@ -107,22 +107,20 @@ struct CompressedFile
 
 /// Where the data of the DataArray @p tag starts in @p file, and whether it
 /// is base64: (npos, false) when it does not start within the file, or for
-/// an array that is neither appended nor inline binary.
-std::pair<size_t, bool> arrayDataStart(const CompressedFile& file, const slXMLStartTag& tag)
+/// an array that is neither appended nor inline binary. @p offset: the
+/// array's offset attribute, not negative, or null when it has none.
+std::pair<size_t, bool> arrayDataStart(const CompressedFile& file, const slXMLStartTag& tag, const long long* offset)
 {
-  const std::string* format = slFindXMLAttribute(tag.attributes, "format");
-  const std::string* offsetText = slFindXMLAttribute(tag.attributes, "offset");
   // VTK reads an array with an offset from the appended data, whatever its
   // format says, and one without from the element: binary only when its
   // format says so.
-  if (offsetText)
+  if (offset)
   {
-    long long offset = 0;
-    std::istringstream(*offsetText) >> offset; // not negative: arrayHeaderProblem refuses that first
     const bool within = file.appendedStart != std::string::npos &&
-      static_cast<unsigned long long>(offset) < file.bytes.size() - file.appendedStart;
-    return { within ? file.appendedStart + static_cast<size_t>(offset) : std::string::npos, file.appendedBase64 };
+      static_cast<unsigned long long>(*offset) < file.bytes.size() - file.appendedStart;
+    return { within ? file.appendedStart + static_cast<size_t>(*offset) : std::string::npos, file.appendedBase64 };
   }
+  const std::string* format = slFindXMLAttribute(tag.attributes, "format");
   if (!format || *format != "binary")
   {
     return { std::string::npos, false };
@@ -150,7 +148,7 @@ std::string arrayHeaderProblem(const CompressedFile& file, const slXMLStartTag& 
   {
     return "DataArray \"" + name + "\": its offset " + std::to_string(offset) + " is negative";
   }
-  const std::pair<size_t, bool> start = arrayDataStart(file, tag);
+  const std::pair<size_t, bool> start = arrayDataStart(file, tag, offsetText ? &offset : nullptr);
   const size_t dataAt = start.first;
   const bool base64Encoded = start.second;
   const size_t dataEnd = offsetText ? file.bytes.size() : file.markupEnd;
