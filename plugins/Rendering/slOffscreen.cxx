@@ -30,6 +30,13 @@ vtkSmartPointer<vtkRenderWindow> slOffscreenWindow(int width, int height)
   window->SetOffScreenRendering(1);
   window->SetMultiSamples(0);
   window->SetSize(width, height);
+  // The connection slDisplayProblem() checked (and keeps open): a new one
+  // could meet an X server that resets, and VTK aborts when it cannot open
+  // one. Without a check, VTK opens its own as usual.
+  if (void* display = slCheckedDisplay())
+  {
+    window->SetDisplayId(display);
+  }
   // When it cannot create its GLX context (after slDisplayProblem() could),
   // VTK 9.1 calls abort() unless ExitEvent is observed; it then returns
   // without a context. Stop there with the reason instead of either.

@@ -22,8 +22,11 @@ class vtkRenderWindow;
 SHADELABRENDERPASSES_EXPORT std::string slDisplayProblem();
 
 /// An offscreen window of @p width x @p height, multisampling off, so that
-/// the same scene gives the same pixels. Where VTK would abort() because it
-/// cannot create its OpenGL context, rendering it throws shadelab::Error.
+/// the same scene gives the same pixels. After slDisplayProblem() returned
+/// "", the window renders on the X connection that check opened and kept, so
+/// VTK opens none of its own (it would abort() if that failed). Where VTK
+/// would abort() because it cannot create its OpenGL context, rendering it
+/// throws shadelab::Error.
 SHADELABRENDERPASSES_EXPORT vtkSmartPointer<vtkRenderWindow> slOffscreenWindow(int width, int height);
 
 /// Renders @p window and returns its back buffer as RGB unsigned char, row 0

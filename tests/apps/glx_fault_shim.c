@@ -1,12 +1,16 @@
 /* Preloaded into `shadelab render` by test_glx_faults.py: makes GLX context
  * creation fail on chosen attempts, the way it fails for a moment when many
- * processes start rendering at once on one X server.
+ * processes start rendering at once on one X server, and X connections fail
+ * on chosen attempts, the way an Xvfb refuses them while it resets after its
+ * last client left (xvfb-run without -noreset).
  *
- * Attempts are every call that creates a context, numbered from 0 in the
- * process: glXCreateContext, glXCreateNewContext, and
- * glXCreateContextAttribsARB as glXGetProcAddress(ARB) hands it out. With
- * SHADELAB_GLX_FAIL="FIRST COUNT" attempts FIRST .. FIRST + COUNT - 1 fail
- * (return no context); COUNT -1 means every attempt from FIRST on. */
+ * Context attempts are every call that creates a context, numbered from 0 in
+ * the process: glXCreateContext, glXCreateNewContext, and
+ * glXCreateContextAttribsARB as glXGetProcAddress(ARB) hands it out;
+ * connection attempts are the calls of XOpenDisplay. With
+ * SHADELAB_GLX_FAIL="FIRST COUNT" (contexts) or SHADELAB_XOPEN_FAIL="FIRST
+ * COUNT" (connections) attempts FIRST .. FIRST + COUNT - 1 fail (return
+ * null); COUNT -1 means every attempt from FIRST on. */
 #define _GNU_SOURCE
 #include <GL/glx.h>
 #include <dlfcn.h>
@@ -17,13 +21,16 @@
 typedef GLXContext (*CreateContextAttribs)(Display*, GLXFBConfig, GLXContext, Bool, const int*);
 typedef void (*(*GetProcAddress)(const GLubyte*))(void);
 
-static long attempts = 0;
+static long contextAttempts = 0;
+static long connectionAttempts = 0;
 
-static int failThisAttempt(void)
+/* Whether this attempt (*attempts, then counted) fails by the rule in the
+ * environment variable @rule. */
+static int failThisAttempt(long* attempts, const char* ruleVariable)
 {
   long first = 0, count = 0;
-  const char* rule = getenv("SHADELAB_GLX_FAIL");
-  const long attempt = attempts++;
+  const char* rule = getenv(ruleVariable);
+  const long attempt = (*attempts)++;
   if (!rule || sscanf(rule, "%ld %ld", &first, &count) != 2)
   {
     return 0;
@@ -41,7 +48,7 @@ static CreateContextAttribs realCreateContextAttribs = NULL;
 static GLXContext failingCreateContextAttribs(
   Display* display, GLXFBConfig config, GLXContext share, Bool direct, const int* attributes)
 {
-  return failThisAttempt() ? NULL : realCreateContextAttribs(display, config, share, direct, attributes);
+  return failThisAttempt(&contextAttempts, "SHADELAB_GLX_FAIL") ? NULL : realCreateContextAttribs(display, config, share, direct, attributes);
 }
 
 static void (*wrapProc(const GLubyte* name, void (*proc)(void)))(void)
@@ -67,11 +74,17 @@ void (*glXGetProcAddress(const GLubyte* name))(void)
 GLXContext glXCreateContext(Display* display, XVisualInfo* visual, GLXContext share, Bool direct)
 {
   typedef GLXContext (*Real)(Display*, XVisualInfo*, GLXContext, Bool);
-  return failThisAttempt() ? NULL : ((Real)next("glXCreateContext"))(display, visual, share, direct);
+  return failThisAttempt(&contextAttempts, "SHADELAB_GLX_FAIL") ? NULL : ((Real)next("glXCreateContext"))(display, visual, share, direct);
 }
 
 GLXContext glXCreateNewContext(Display* display, GLXFBConfig config, int type, GLXContext share, Bool direct)
 {
   typedef GLXContext (*Real)(Display*, GLXFBConfig, int, GLXContext, Bool);
-  return failThisAttempt() ? NULL : ((Real)next("glXCreateNewContext"))(display, config, type, share, direct);
+  return failThisAttempt(&contextAttempts, "SHADELAB_GLX_FAIL") ? NULL : ((Real)next("glXCreateNewContext"))(display, config, type, share, direct);
+}
+
+Display* XOpenDisplay(const char* name)
+{
+  typedef Display* (*Real)(const char*);
+  return failThisAttempt(&connectionAttempts, "SHADELAB_XOPEN_FAIL") ? NULL : ((Real)next("XOpenDisplay"))(name);
 }
