@@ -1,4 +1,5 @@
 #include "slNormalsVTKBridge.h"
+#include "shadelab/ThreadSpread.h"
 #include "shadelab/slAtomicMinimum.h"
 
 #include <vtkFloatArray.h>
@@ -19,8 +20,12 @@ slnormals::Parallel slSMPParallel()
   slnormals::Parallel p;
   p.threads = vtkSMPTools::GetEstimatedNumberOfThreads();
   p.forRange = [](int64_t begin, int64_t end, int64_t grain, const slnormals::Parallel::Body& body) {
+    shadelab::ThreadSpread spread;
     vtkSMPTools::For(static_cast<vtkIdType>(begin), static_cast<vtkIdType>(end), static_cast<vtkIdType>(grain),
-      [&body](vtkIdType b, vtkIdType e) { body(b, e); });
+      [&body, &spread](vtkIdType b, vtkIdType e) {
+        spread.enter();
+        body(b, e);
+      });
   };
   return p;
 }

@@ -1,0 +1,61 @@
+#include "shadelab/ThreadSpread.h"
+
+#ifdef __linux__
+#include <sched.h>
+#endif
+
+namespace shadelab
+{
+
+ThreadSpread::ThreadSpread()
+  : Caller(std::this_thread::get_id())
+{
+#ifdef __linux__
+  this->CallerCpu.store(sched_getcpu(), std::memory_order_relaxed);
+#endif
+}
+
+bool ThreadSpread::enter()
+{
+#ifdef __linux__
+  const int cpu = sched_getcpu();
+  if (std::this_thread::get_id() == this->Caller)
+  {
+    this->CallerCpu.store(cpu, std::memory_order_relaxed);
+    // The loop has spawned its tasks and woken the pool by now: a worker
+    // placed on this CPU gets it for a moment and moves off (below).
+    if (!this->CallerYielded.exchange(true, std::memory_order_relaxed))
+    {
+      sched_yield();
+    }
+    return false;
+  }
+  return cpu >= 0 && cpu == this->CallerCpu.load(std::memory_order_relaxed) && moveOff(cpu);
+#else
+  return false;
+#endif
+}
+
+bool ThreadSpread::moveOff(int cpu)
+{
+#ifdef __linux__
+  cpu_set_t allowed;
+  if (cpu < 0 || cpu >= CPU_SETSIZE || sched_getaffinity(0, sizeof(allowed), &allowed) != 0 ||
+    !CPU_ISSET(cpu, &allowed) || CPU_COUNT(&allowed) < 2)
+  {
+    return false;
+  }
+  cpu_set_t others = allowed;
+  CPU_CLR(cpu, &others);
+  // Narrowing the affinity migrates the thread before the call returns;
+  // restoring it leaves the thread where it now runs, free to move again.
+  const bool moved = sched_setaffinity(0, sizeof(others), &others) == 0 && sched_getcpu() != cpu;
+  sched_setaffinity(0, sizeof(allowed), &allowed);
+  return moved;
+#else
+  (void)cpu;
+  return false;
+#endif
+}
+
+} // namespace shadelab
