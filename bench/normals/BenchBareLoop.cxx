@@ -1,5 +1,7 @@
 #include "BenchBareLoop.h"
 
+#include "shadelab/ThreadSpread.h"
+
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
 #include <vtkFloatArray.h>
@@ -54,7 +56,10 @@ template <typename Id>
 void runChunks(const Id* ids, long long triangles, const float* xyz, std::vector<std::vector<float>>& sums,
   long long points, int chunks, bool prefetch)
 {
+  // Its threads are spread as slPolyDataNormals' are (shadelab/ThreadSpread.h).
+  shadelab::ThreadSpread spread;
   vtkSMPTools::For(0, chunks, 1, [&](vtkIdType kb, vtkIdType ke) {
+    spread.enter();
     for (vtkIdType k = kb; k < ke; ++k)
     {
       const long long t0 = triangles * k / chunks, t1 = triangles * (k + 1) / chunks;
