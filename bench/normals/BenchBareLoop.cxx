@@ -1,6 +1,6 @@
 #include "BenchBareLoop.h"
 
-#include "shadelab/ThreadSpread.h"
+#include "slSMPFor.h"
 
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
@@ -56,10 +56,8 @@ template <typename Id>
 void runChunks(const Id* ids, long long triangles, const float* xyz, std::vector<std::vector<float>>& sums,
   long long points, int chunks, bool prefetch)
 {
-  // Its threads are spread as slPolyDataNormals' are (shadelab/ThreadSpread.h).
-  shadelab::ThreadSpread spread;
-  vtkSMPTools::For(0, chunks, 1, [&](vtkIdType kb, vtkIdType ke) {
-    spread.enter();
+  // Its threads are spread as slPolyDataNormals' are (slSMPFor.h).
+  slSMPFor(0, chunks, 1, [&](vtkIdType kb, vtkIdType ke) {
     for (vtkIdType k = kb; k < ke; ++k)
     {
       const long long t0 = triangles * k / chunks, t1 = triangles * (k + 1) / chunks;

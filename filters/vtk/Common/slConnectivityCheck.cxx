@@ -3,10 +3,10 @@
 #include "shadelab/slAtomicMinimum.h"
 #include "shadelab/slIdsBelow.h"
 #include "shadelab/slVectorClones.h"
+#include "slSMPFor.h"
 
 #include <vtkCellArray.h>
 #include <vtkPolyData.h>
-#include <vtkSMPTools.h>
 #include <vtkTypeInt32Array.h>
 #include <vtkTypeInt64Array.h>
 
@@ -59,7 +59,7 @@ std::string cellsProblem(const Id* offsets, vtkIdType numOffsets, const Id* ids,
   }
   // The first decrease, found in parallel like the ids below.
   std::atomic<vtkIdType> firstDecrease(numOffsets);
-  vtkSMPTools::For(1, numOffsets, 65536, [&](vtkIdType begin, vtkIdType end) {
+  slSMPFor(1, numOffsets, 65536, [&](vtkIdType begin, vtkIdType end) {
     const bool bad = anyDecrease(offsets, begin, end);
     for (vtkIdType c = begin; bad && c < end; ++c)
     {
@@ -81,7 +81,7 @@ std::string cellsProblem(const Id* offsets, vtkIdType numOffsets, const Id* ids,
   // The first id outside [0, numPoints), found in parallel: the common case
   // (none) is one branch-free pass.
   std::atomic<vtkIdType> firstBad(numIds);
-  vtkSMPTools::For(0, numIds, 65536, [&](vtkIdType begin, vtkIdType end) {
+  slSMPFor(0, numIds, 65536, [&](vtkIdType begin, vtkIdType end) {
     const bool bad = !slIdsBelow(ids + begin, end - begin, numPoints);
     for (vtkIdType i = begin; bad && i < end; ++i)
     {

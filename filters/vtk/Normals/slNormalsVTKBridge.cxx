@@ -1,6 +1,6 @@
 #include "slNormalsVTKBridge.h"
-#include "shadelab/ThreadSpread.h"
 #include "shadelab/slAtomicMinimum.h"
+#include "slSMPFor.h"
 
 #include <vtkFloatArray.h>
 #include <vtkPoints.h>
@@ -20,12 +20,8 @@ slnormals::Parallel slSMPParallel()
   slnormals::Parallel p;
   p.threads = vtkSMPTools::GetEstimatedNumberOfThreads();
   p.forRange = [](int64_t begin, int64_t end, int64_t grain, const slnormals::Parallel::Body& body) {
-    shadelab::ThreadSpread spread;
-    vtkSMPTools::For(static_cast<vtkIdType>(begin), static_cast<vtkIdType>(end), static_cast<vtkIdType>(grain),
-      [&body, &spread](vtkIdType b, vtkIdType e) {
-        spread.enter();
-        body(b, e);
-      });
+    slSMPFor(static_cast<vtkIdType>(begin), static_cast<vtkIdType>(end), static_cast<vtkIdType>(grain),
+      [&body](vtkIdType b, vtkIdType e) { body(b, e); });
   };
   return p;
 }
@@ -39,7 +35,7 @@ vtkIdType slFirstNonFinitePoint(vtkPoints* points, double* largestSide)
   // Each thread's bounding box, from the same pass (the points are read once).
   vtkSMPThreadLocal<std::array<double, 6>> boxes(
     std::array<double, 6>{ { HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL } });
-  vtkSMPTools::For(0, n, 65536, [&](vtkIdType b, vtkIdType e) {
+  slSMPFor(0, n, 65536, [&](vtkIdType b, vtkIdType e) {
     std::array<double, 6>& box = boxes.Local();
     if (f)
     {

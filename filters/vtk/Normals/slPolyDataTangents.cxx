@@ -3,6 +3,7 @@
 #include "slConnectivityCheck.h"
 #include "slNormalsVTKBridge.h"
 #include "slPolyDataNormals.h"
+#include "slSMPFor.h"
 #include "shadelab/slTangentSeamsCore.h"
 
 #include <vtkCellArray.h>
@@ -16,7 +17,6 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
-#include <vtkSMPTools.h>
 
 #include <algorithm>
 
@@ -76,7 +76,7 @@ int slPolyDataTangents::RequestData(vtkInformation*, vtkInformationVector** inpu
   // Copies in double precision keep the core free of VTK array types.
   std::vector<glm::dvec3> pos(static_cast<size_t>(numPoints)), nrm(static_cast<size_t>(numPoints));
   std::vector<glm::dvec2> uv(static_cast<size_t>(numPoints));
-  vtkSMPTools::For(0, numPoints, 8192, [&](vtkIdType b, vtkIdType e) {
+  slSMPFor(0, numPoints, 8192, [&](vtkIdType b, vtkIdType e) {
     for (vtkIdType i = b; i < e; ++i)
     {
       double p[3], n[3];
