@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <thread>
 
 #include <sched.h>
@@ -135,4 +136,25 @@ TEST_F(ThreadSpreadTest, AWorkerElsewhereAndTheCallerStay)
   EXPECT_EQ(sched_getcpu(), a);
   const cpu_set_t mine = allowedHere();
   EXPECT_EQ(CPU_COUNT(&mine), 1);
+}
+
+TEST(ThreadSpreadYield, TheCallerYieldsOnlyAfterTheWorkersHadAMillisecondIdle)
+{
+  // Made right after another ended (tried again if this thread was held up
+  // for a millisecond in between).
+  bool awake = false;
+  for (int attempt = 0; attempt < 20 && !awake; ++attempt)
+  {
+    {
+      shadelab::ThreadSpread first;
+    }
+    shadelab::ThreadSpread rightAfter;
+    awake = !rightAfter.willYield();
+  }
+  EXPECT_TRUE(awake) << "a loop had just ended: the workers are awake";
+  std::this_thread::sleep_for(std::chrono::milliseconds(3));
+  shadelab::ThreadSpread after_idle;
+  EXPECT_TRUE(after_idle.willYield());
+  after_idle.enter(); // the caller's first chunk: yields
+  EXPECT_FALSE(after_idle.willYield());
 }

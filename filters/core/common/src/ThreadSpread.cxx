@@ -4,15 +4,41 @@
 #include <sched.h>
 #endif
 
+#include <chrono>
+#include <cstdint>
+#include <limits>
+
 namespace shadelab
 {
 
+namespace
+{
+/// Steady-clock nanoseconds.
+int64_t now()
+{
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+    .count();
+}
+
+/// When the last loop of any ThreadSpread ended (steady-clock ns).
+std::atomic<int64_t> lastLoopEnd{ std::numeric_limits<int64_t>::min() / 2 };
+
+/// After this long without a loop the pool's workers are taken to be asleep.
+constexpr int64_t kWorkersAsleepAfterNs = 1000000;
+} // namespace
+
 ThreadSpread::ThreadSpread()
   : Caller(std::this_thread::get_id())
+  , CallerYielded(now() - lastLoopEnd.load(std::memory_order_relaxed) < kWorkersAsleepAfterNs)
 {
 #ifdef __linux__
   this->CallerCpu.store(sched_getcpu(), std::memory_order_relaxed);
 #endif
+}
+
+ThreadSpread::~ThreadSpread()
+{
+  lastLoopEnd.store(now(), std::memory_order_relaxed);
 }
 
 bool ThreadSpread::enter()

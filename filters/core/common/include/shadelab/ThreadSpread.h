@@ -15,7 +15,12 @@
  * A ThreadSpread is made by the thread that starts a loop, and enter() is
  * called at the start of every chunk of the loop, by whichever thread runs
  * it. The starting thread yields its CPU once, at its first chunk, so that
- * a worker woken onto that CPU runs at once; a worker that finds itself on
+ * a worker woken onto that CPU runs at once, if no loop ended in the last
+ * millisecond: only then are the pool's workers asleep (TBB's worker joins
+ * within about 30 us after 1 ms without work and misses most loops after
+ * 10 ms, as shadelab_bench_machine measures), and yielding in every loop of
+ * an update would hand the CPU to other busy processes for nothing. A worker
+ * that finds itself on
  * the starting thread's CPU moves itself to another CPU it is allowed on
  * (its affinity is narrowed to exclude that CPU, which migrates it, and set
  * back straight away). No thread stays pinned: a pinned thread could not
@@ -37,12 +42,18 @@ class ThreadSpread
 public:
   /// Made by the thread that then starts the loop (its "caller").
   ThreadSpread();
+  /// Notes when the loop ended (see willYield()).
+  ~ThreadSpread();
   ThreadSpread(const ThreadSpread&) = delete;
   ThreadSpread& operator=(const ThreadSpread&) = delete;
 
   /// Called first thing in every chunk of the loop, by the thread that runs
   /// it. Returns whether it moved the thread to another CPU.
   bool enter();
+
+  /// Whether the starting thread is still to yield at its first chunk: true
+  /// when no ThreadSpread ended in the millisecond before this one was made.
+  bool willYield() const { return !this->CallerYielded.load(std::memory_order_relaxed); }
 
   /// Moves the calling thread off CPU @p cpu if its affinity allows another
   /// CPU, and restores its affinity. Returns whether it moved.
