@@ -25,7 +25,7 @@ static long contextAttempts = 0;
 static long connectionAttempts = 0;
 
 /* Whether this attempt (*attempts, then counted) fails by the rule in the
- * environment variable @rule. */
+ * environment variable @ruleVariable. */
 static int failThisAttempt(long* attempts, const char* ruleVariable)
 {
   long first = 0, count = 0;
@@ -43,12 +43,17 @@ static void* next(const char* name)
   return dlsym(RTLD_NEXT, name);
 }
 
+static int failContextAttempt(void)
+{
+  return failThisAttempt(&contextAttempts, "SHADELAB_GLX_FAIL");
+}
+
 static CreateContextAttribs realCreateContextAttribs = NULL;
 
 static GLXContext failingCreateContextAttribs(
   Display* display, GLXFBConfig config, GLXContext share, Bool direct, const int* attributes)
 {
-  return failThisAttempt(&contextAttempts, "SHADELAB_GLX_FAIL") ? NULL : realCreateContextAttribs(display, config, share, direct, attributes);
+  return failContextAttempt() ? NULL : realCreateContextAttribs(display, config, share, direct, attributes);
 }
 
 static void (*wrapProc(const GLubyte* name, void (*proc)(void)))(void)
@@ -74,13 +79,13 @@ void (*glXGetProcAddress(const GLubyte* name))(void)
 GLXContext glXCreateContext(Display* display, XVisualInfo* visual, GLXContext share, Bool direct)
 {
   typedef GLXContext (*Real)(Display*, XVisualInfo*, GLXContext, Bool);
-  return failThisAttempt(&contextAttempts, "SHADELAB_GLX_FAIL") ? NULL : ((Real)next("glXCreateContext"))(display, visual, share, direct);
+  return failContextAttempt() ? NULL : ((Real)next("glXCreateContext"))(display, visual, share, direct);
 }
 
 GLXContext glXCreateNewContext(Display* display, GLXFBConfig config, int type, GLXContext share, Bool direct)
 {
   typedef GLXContext (*Real)(Display*, GLXFBConfig, int, GLXContext, Bool);
-  return failThisAttempt(&contextAttempts, "SHADELAB_GLX_FAIL") ? NULL : ((Real)next("glXCreateNewContext"))(display, config, type, share, direct);
+  return failContextAttempt() ? NULL : ((Real)next("glXCreateNewContext"))(display, config, type, share, direct);
 }
 
 Display* XOpenDisplay(const char* name)

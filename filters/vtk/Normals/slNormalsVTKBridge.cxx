@@ -20,8 +20,7 @@ slnormals::Parallel slSMPParallel()
   slnormals::Parallel p;
   p.threads = vtkSMPTools::GetEstimatedNumberOfThreads();
   p.forRange = [](int64_t begin, int64_t end, int64_t grain, const slnormals::Parallel::Body& body) {
-    slSMPFor(static_cast<vtkIdType>(begin), static_cast<vtkIdType>(end), static_cast<vtkIdType>(grain),
-      [&body](vtkIdType b, vtkIdType e) { body(b, e); });
+    slSMPFor(static_cast<vtkIdType>(begin), static_cast<vtkIdType>(end), static_cast<vtkIdType>(grain), body);
   };
   return p;
 }

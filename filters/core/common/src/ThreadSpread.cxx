@@ -20,7 +20,8 @@ int64_t now()
     .count();
 }
 
-/// When the last loop of any ThreadSpread ended (steady-clock ns).
+/// When the last loop of any ThreadSpread ended (steady-clock ns); at first
+/// long ago, so that the first loop yields.
 std::atomic<int64_t> lastLoopEnd{ std::numeric_limits<int64_t>::min() / 2 };
 
 /// After this long without a loop the pool's workers are taken to be asleep.

@@ -20,10 +20,9 @@
  * within about 30 us after 1 ms without work and misses most loops after
  * 10 ms, as shadelab_bench_machine measures), and yielding in every loop of
  * an update would hand the CPU to other busy processes for nothing. A worker
- * that finds itself on
- * the starting thread's CPU moves itself to another CPU it is allowed on
- * (its affinity is narrowed to exclude that CPU, which migrates it, and set
- * back straight away). No thread stays pinned: a pinned thread could not
+ * that finds itself on the starting thread's CPU moves itself to another
+ * CPU it is allowed on (its affinity is narrowed to exclude that CPU, which
+ * migrates it, and set back straight away). No thread stays pinned: a pinned thread could not
  * leave a CPU that another process keeps busy, and a process it started
  * would inherit the single CPU.
  *
