@@ -116,6 +116,12 @@ CASES = [
     # found by fuzzing: a NUL byte cut an ASCII row short for vtkPLY, which then parsed a null word
     mesh_case("ply nul byte in ascii row", "a.ply", ply_ascii(b"3 0 1 2\n").replace(b"1 0 0\n", b"1 \x000 0\n"),
               'line 11 (element "vertex" row 2 of 3): a NUL byte'),
+    # found by fuzzing: vtkPLY splits rows at spaces, tabs and carriage returns only; a vertical tab
+    # joined two indices into one word and it read a word past the row's end
+    mesh_case("ply vertical tab in ascii row", "a.ply", ply_ascii(b"3 0 1\x0b2\n"),
+              'line 13 (element "face" row 1 of 1): "1\\x0B2" is not a number'),
+    mesh_case("ply form feed in ascii row", "a.ply", ply_ascii(b"3 0 1 2\n").replace(b"1 0 0\n", b"1 0\x0c0\n"),
+              'line 11 (element "vertex" row 2 of 3): "0\\x0C0" is not a number'),
     mesh_case("ply vertex without y", "a.ply",
               ply_ascii(b"3 0 1 2\n").replace(b"property float y\n", b"property float x\n"),
               'the header needs an element "vertex" with properties x, y, z and an element "face"'),

@@ -263,6 +263,38 @@ bool parseToken(const std::string& token, bool integral, long long& integer)
   return end != token.c_str() && *end == '\0' && errno != ERANGE;
 }
 
+/// The words of a row as VTK's PLY code splits it: at spaces, tabs and
+/// carriage returns only. A vertical tab or form feed is part of a word there
+/// (a stream would split at it and count a word VTK's reader never finds).
+class RowWords
+{
+public:
+  explicit RowWords(const std::string& line)
+    : Line(line)
+  {
+  }
+  /// The next word into @p word; false after the last.
+  bool next(std::string& word)
+  {
+    auto separator = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
+    while (this->At < this->Line.size() && separator(this->Line[this->At]))
+    {
+      ++this->At;
+    }
+    const size_t start = this->At;
+    while (this->At < this->Line.size() && !separator(this->Line[this->At]))
+    {
+      ++this->At;
+    }
+    word.assign(this->Line, start, this->At - start);
+    return this->At > start;
+  }
+
+private:
+  const std::string& Line;
+  size_t At = 0;
+};
+
 std::string asciiBody(std::istream& in, long lineNumber, const std::vector<Element>& elements, unsigned long long vertices)
 {
   std::string line, token;
@@ -276,7 +308,7 @@ std::string asciiBody(std::istream& in, long lineNumber, const std::vector<Eleme
         return "line " + std::to_string(lineNumber + 1) + ": the file ends before " + rowName(e, row);
       }
       ++lineNumber;
-      std::istringstream words(line);
+      RowWords words(line);
       const std::string where = "line " + std::to_string(lineNumber) + " (" + rowName(e, row) + "): ";
       // VTK's PLY code finds no words in a line that ends the file without
       // a newline, or that overflows its buffer, and reads on as if the row
@@ -300,7 +332,7 @@ std::string asciiBody(std::istream& in, long lineNumber, const std::vector<Eleme
         long long count = 1;
         if (p.countSize > 0)
         {
-          if (!(words >> token))
+          if (!words.next(token))
           {
             return where + "no count for list \"" + shadelab::printableText(p.name) + "\"";
           }
@@ -311,7 +343,7 @@ std::string asciiBody(std::istream& in, long lineNumber, const std::vector<Eleme
         }
         for (long long k = 0; k < count; ++k)
         {
-          if (!(words >> token))
+          if (!words.next(token))
           {
             return where + "fewer values than \"" + shadelab::printableText(p.name) + "\" needs";
           }
