@@ -122,6 +122,11 @@ CASES = [
               'line 13 (element "face" row 1 of 1): "1\\x0B2" is not a number'),
     mesh_case("ply form feed in ascii row", "a.ply", ply_ascii(b"3 0 1 2\n").replace(b"1 0 0\n", b"1 0\x0c0\n"),
               'line 11 (element "vertex" row 2 of 3): "0\\x0C0" is not a number'),
+    # vtkPLY renames the rest of a header line from its first "vertex_index" to "vertex_indices":
+    # here the count goes, and it read the count from a word the line does not have
+    mesh_case("ply element name starting vertex_index", "a.ply",
+              ply_ascii(b"3 0 1 2\n5\n").replace(b"end_header", b"element vertex_indexQ 1\nproperty float a\nend_header"),
+              'line 9: expected 3 words, found "element vertex_indexQ 1"'),
     mesh_case("ply vertex without y", "a.ply",
               ply_ascii(b"3 0 1 2\n").replace(b"property float y\n", b"property float x\n"),
               'the header needs an element "vertex" with properties x, y, z and an element "face"'),

@@ -409,7 +409,16 @@ std::string slPLYProblem(const std::string& fileName)
         return where + "a control byte in the header: \"" + shadelab::printableText(line) + "\"";
       }
     }
-    std::istringstream words(line);
+    // VTK's PLY code replaces the rest of a line from its first
+    // "vertex_index" with "vertex_indices" (so that both names work): a name
+    // that only starts so loses the words after it there.
+    std::string asRead = line;
+    const size_t renamed = asRead.find("vertex_index");
+    if (renamed != std::string::npos)
+    {
+      asRead.replace(renamed, std::string::npos, "vertex_indices");
+    }
+    std::istringstream words(asRead);
     if (!(words >> keyword))
     {
       // VTK's PLY code takes a line without words for the header's end.
@@ -429,7 +438,7 @@ std::string slPLYProblem(const std::string& fileName)
     words.seekg(0);
     words >> keyword;
     const size_t expected = keyword == "element" || keyword == "format" ? 3
-      : keyword == "property"                                          ? (line.find(" list ") != std::string::npos ? 5 : 3)
+      : keyword == "property"                                          ? (asRead.find(" list ") != std::string::npos ? 5 : 3)
                                                                        : 1;
     if (wordCount != expected)
     {
