@@ -127,6 +127,9 @@ CASES = [
     mesh_case("ply element name starting vertex_index", "a.ply",
               ply_ascii(b"3 0 1 2\n5\n").replace(b"end_header", b"element vertex_indexQ 1\nproperty float a\nend_header"),
               'line 9: expected 3 words, found "element vertex_indexQ 1"'),
+    # vtkPolyData builds no cell types around a polygon of fewer than 3 points: the VTP writer crashed
+    mesh_case("ply face of two points", "a.ply", ply_ascii(b"3 0 1 2\n2 0 1\n", faces=2),
+              'polygon 1 has fewer than 3 points (2)'),
     mesh_case("ply vertex without y", "a.ply",
               ply_ascii(b"3 0 1 2\n").replace(b"property float y\n", b"property float x\n"),
               'the header needs an element "vertex" with properties x, y, z and an element "face"'),
@@ -248,6 +251,8 @@ CASES = [
               .replace(b'NumberOfPoints="3"', b'NumberOfPoints="&n;"'),
               "an entity declaration, which VTK's XML files do not have"),
     # legacy VTK
+    mesh_case("vtk polygon of one point", "a.vtk", legacy_vtk(b"POLYGONS 2 6\n3 0 1 2\n1 0\n"),
+              'polygon 1 has fewer than 3 points (1)'),
     mesh_case("vtk index beyond points", "a.vtk", legacy_vtk(b"POLYGONS 1 4\n3 0 1 7\n"), 'polygon 0 names point 7, but the mesh has 3 points (0 to 2)'),
     mesh_case("vtk negative index", "a.vtk", legacy_vtk(b"POLYGONS 1 4\n3 0 -2 1\n"), 'polygon 0 names point -2, but the mesh has 3 points (0 to 2)'),
     # vtkDataReader loops for ever when a numeric METADATA key's values end early.

@@ -86,6 +86,38 @@ vtkSmartPointer<vtkAlgorithm> makeVTKReader(const std::string& ext, const char* 
   return nullptr;
 }
 
+/// The first polygon of fewer than three points in @p offsets (one more
+/// than the polygons), or -1.
+template <typename Offset>
+vtkIdType firstShortPolygon(const Offset* offsets, vtkIdType numberOfOffsets)
+{
+  for (vtkIdType c = 0; c + 1 < numberOfOffsets; ++c)
+  {
+    if (offsets[c + 1] - offsets[c] < 3)
+    {
+      return c;
+    }
+  }
+  return -1;
+}
+
+/// "" unless a polygon of @p polys has fewer than three points: vtkPolyData
+/// then builds no cell types for the mesh ("Invalid cell size for polys"),
+/// and VTK's writers and cell queries follow the missing table (the VTP
+/// writer crashes). The connectivity must be checked (slConnectivityProblem).
+std::string shortPolygonProblem(vtkCellArray* polys)
+{
+  const vtkIdType short_ = polys->IsStorage64Bit()
+    ? firstShortPolygon(polys->GetOffsetsArray64()->GetPointer(0), polys->GetOffsetsArray64()->GetNumberOfValues())
+    : firstShortPolygon(polys->GetOffsetsArray32()->GetPointer(0), polys->GetOffsetsArray32()->GetNumberOfValues());
+  if (short_ < 0)
+  {
+    return std::string();
+  }
+  return "polygon " + std::to_string(short_) + " has fewer than 3 points (" +
+    std::to_string(polys->GetCellSize(short_)) + ")";
+}
+
 /// All polygonal leaves of a composite dataset (glTF meshes and primitives)
 /// appended into one polydata; null when it has none.
 vtkSmartPointer<vtkPolyData> appendLeaves(vtkCompositeDataSet* composite)
@@ -272,7 +304,11 @@ int slMeshReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInform
     }
     mesh->DeepCopy(read);
     // Before anything follows the cells (point merging, the filters).
-    const std::string cellProblem = slConnectivityProblem(mesh);
+    std::string cellProblem = slConnectivityProblem(mesh);
+    if (cellProblem.empty())
+    {
+      cellProblem = shortPolygonProblem(mesh->GetPolys());
+    }
     if (!cellProblem.empty())
     {
       return this->Fail(cellProblem);
