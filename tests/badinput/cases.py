@@ -62,6 +62,16 @@ CASES = [
     mesh_case("obj two coordinates", "a.obj", b"v 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", 'line 1: v needs at least 3 values, it has 2'),
     mesh_case("obj word as coordinate", "a.obj", b"v 0 zero 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", 'line 1: v "zero" is not a number'),
     mesh_case("obj escape bytes as coordinate", "a.obj", b"v 0 \x1b[31mred 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", 'line 1: v "\\x1B[31mred" is not a number'),
+    # vtkOBJReader reads values into floats and two of every vt line: a value beyond float range or a
+    # vt of one value left values unset
+    mesh_case("obj coordinate beyond float", "a.obj", b"v 1e39 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+              'line 1: v coordinate "1e39" is beyond the range of float'),
+    mesh_case("obj vt of one value", "a.obj", obj(b"f 1/1 2/2 3/3\n", b"vt 0.5\nvt 0.5\nvt 0.5\n"),
+              'line 4: vt needs at least 2 values, it has 1'),
+    # vtkOBJReader attaches the listed normals as they are when faces name the same v and vn index
+    mesh_case("obj fewer normals than points", "a.obj",
+              b"v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvn 0 0 1\nvn 0 0 1\nvn 0 0 1\nf 1//1 2//2 3//3\nf 1//1 3//3 2//2\n",
+              'point array "Normals" has 3 tuples for 4 points'),
     mesh_case("obj vt index beyond", "a.obj", obj(b"f 1/1 2/2 3/3\n", b"vt 0 0\nvt 1 0\n"), 'line 6: texture coordinate index 3 is out of range [1, 2]'),
     mesh_case("obj vn index beyond", "a.obj", obj(b"f 1//1 2//2 3//1\n", b"vn 0 0 1\n"), 'line 5: normal index 2 is out of range [1, 1]'),
     mesh_case("obj nan normal", "a.obj", obj(b"f 1//1 2//1 3//1\n", b"vn nan 0 1\n"), 'line 4: vn coordinate "nan" is not a finite number'),

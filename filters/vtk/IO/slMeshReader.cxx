@@ -16,6 +16,7 @@
 #include <vtkAlgorithm.h>
 #include <vtkAppendPolyData.h>
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkCompositeDataIterator.h>
 #include <vtkCompositeDataSet.h>
 #include <vtkDataArray.h>
@@ -26,6 +27,7 @@
 #include <vtkOBJReader.h>
 #include <vtkObjectFactory.h>
 #include <vtkPLYReader.h>
+#include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataReader.h>
@@ -116,6 +118,26 @@ std::string shortPolygonProblem(vtkCellArray* polys)
   }
   return "polygon " + std::to_string(short_) + " has fewer than 3 points (" +
     std::to_string(polys->GetCellSize(short_)) + ")";
+}
+
+/// "" unless an array of @p data has another number of tuples than
+/// @p expected, the mesh's @p what: point merging and the filters index
+/// them by point or cell. vtkOBJReader attaches the listed normals or
+/// texture coordinates as they are when every face names the same index for
+/// v, vt and vn, also when fewer are listed than points.
+std::string arrayLengthProblem(vtkDataSetAttributes* data, vtkIdType expected, const char* kind, const char* what)
+{
+  for (int a = 0; a < data->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* array = data->GetAbstractArray(a);
+    if (array && array->GetNumberOfTuples() != expected)
+    {
+      const char* name = array->GetName();
+      return std::string(kind) + " array \"" + shadelab::printableText(name ? name : "", 100) + "\" has " +
+        std::to_string(array->GetNumberOfTuples()) + " tuples for " + std::to_string(expected) + " " + what;
+    }
+  }
+  return std::string();
 }
 
 /// All polygonal leaves of a composite dataset (glTF meshes and primitives)
@@ -308,6 +330,14 @@ int slMeshReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInform
     if (cellProblem.empty())
     {
       cellProblem = shortPolygonProblem(mesh->GetPolys());
+    }
+    if (cellProblem.empty())
+    {
+      cellProblem = arrayLengthProblem(mesh->GetPointData(), mesh->GetNumberOfPoints(), "point", "points");
+    }
+    if (cellProblem.empty())
+    {
+      cellProblem = arrayLengthProblem(mesh->GetCellData(), mesh->GetNumberOfCells(), "cell", "cells");
     }
     if (!cellProblem.empty())
     {

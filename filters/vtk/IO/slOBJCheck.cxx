@@ -86,6 +86,12 @@ std::string numberProblem(const std::string& token)
   {
     return "coordinate \"" + shadelab::printableText(token) + "\" is not a finite number";
   }
+  // vtkOBJReader reads values into floats with a stream, which fails on a
+  // value beyond float range and leaves the line's other values unset.
+  if (std::isinf(std::strtof(token.c_str(), nullptr)))
+  {
+    return "coordinate \"" + shadelab::printableText(token) + "\" is beyond the range of float";
+  }
   return std::string();
 }
 
@@ -149,7 +155,8 @@ std::string slOBJProblem(const std::string& fileName)
     }
     if (keyword == "v" || keyword == "vt" || keyword == "vn")
     {
-      const int needed = keyword == "vt" ? 1 : 3;
+      // vtkOBJReader reads two values of every vt line (u and v).
+      const int needed = keyword == "vt" ? 2 : 3;
       int count = 0;
       while (words >> token)
       {
