@@ -1,6 +1,7 @@
 // slMeshReader on any bytes as a file of one extension (SL_FUZZ_EXTENSION):
 // either an error message and an empty output, or a mesh that every
-// ShadeLab filter may follow (finite points, cells naming existing points).
+// ShadeLab filter and VTK writer may follow (finite points, cells naming
+// existing points, polygons of 3 points or more, arrays as long as the mesh).
 // For OBJ and PLY, bytes that ShadeLab's own parser takes must also read to
 // exactly what VTK's reader gives.
 #include "FuzzInputFile.h"
@@ -13,6 +14,7 @@
 #include "slUpdateOrThrow.h"
 
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkIdList.h>
 #include <vtkNew.h>
@@ -126,6 +128,30 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   if (failed != (mesh->GetNumberOfPoints() == 0) || !slConnectivityProblem(mesh).empty())
   {
     std::abort();
+  }
+  // Every polygon has 3 points or more (VTK builds no cell types around a
+  // shorter one, and its writers crash), and every array a tuple per point
+  // or cell.
+  for (vtkIdType f = 0; f < mesh->GetPolys()->GetNumberOfCells(); ++f)
+  {
+    if (mesh->GetPolys()->GetCellSize(f) < 3)
+    {
+      std::abort();
+    }
+  }
+  for (int a = 0; a < mesh->GetPointData()->GetNumberOfArrays(); ++a)
+  {
+    if (mesh->GetPointData()->GetAbstractArray(a)->GetNumberOfTuples() != mesh->GetNumberOfPoints())
+    {
+      std::abort();
+    }
+  }
+  for (int a = 0; a < mesh->GetCellData()->GetNumberOfArrays(); ++a)
+  {
+    if (mesh->GetCellData()->GetAbstractArray(a)->GetNumberOfTuples() != mesh->GetNumberOfCells())
+    {
+      std::abort();
+    }
   }
   for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
   {
