@@ -275,6 +275,47 @@ CASES = [
               b"\nMETADATA\nINFORMATION 1\nNAME X LOCATION Y\nDATA 1\n\0\0\0\nPOLYGONS 1 4\n" +
               struct.pack(">4i", 3, 0, 1, 2) + b"\n",
               'line 11: a NUL byte within a METADATA block'),
+    # vtkDataReader compares METADATA keywords case-insensitively and splits
+    # them at any white space; a DATA value it cannot read makes it loop for ever.
+    mesh_case("vtk metadata keywords in lower case and tabs", "a.vtk",
+              legacy_vtk(b"METADATA\ninformation\t2\nNAME COMPONENT_RANGE LOCATION vtkDataArray\nDATA\tx\n\n"
+                         b"POLYGONS 1 4\n3 0 1 2\n"),
+              'line 10: METADATA key vtkDataArray::COMPONENT_RANGE: DATA must give its length and its values'),
+    mesh_case("vtk metadata data line indented", "a.vtk",
+              legacy_vtk(b"METADATA\nINFORMATION\t1\nNAME L2_NORM_RANGE LOCATION vtkDataArray\n DATA 2 nan 1\n\n"
+                         b"POLYGONS 1 4\n3 0 1 2\n"),
+              'line 10: METADATA key vtkDataArray::L2_NORM_RANGE: DATA declares 2 values and its line holds 2, not all numbers'),
+    # VTK allocates components times tuples (a product that can wrap to 0, and
+    # crash it) and per-tuple buffers of the component count.
+    mesh_case("vtk field array size overflowing", "a.vtk",
+              legacy_vtk(b"FIELD f 1\na 16777216 1099511627776 float\n0\nPOLYGONS 1 4\n3 0 1 2\n"),
+              'line 8: FIELD array "a": 16777216 components, more than the file\'s 157 bytes could hold'),
+    mesh_case("vtk field array of many components and no tuples", "a.vtk",
+              legacy_vtk(b"FIELD f 1\na 268435456 0 float\nPOLYGONS 1 4\n3 0 1 2\n"),
+              'line 8: FIELD array "a": 268435456 components, more than the file\'s 144 bytes could hold'),
+    mesh_case("vtk field array of more values than the file holds", "a.vtk",
+              legacy_vtk(b"FIELD f 1\na 4 1099511627776 float\n0\nPOLYGONS 1 4\n3 0 1 2\n"),
+              'line 8: FIELD array "a": 1099511627776 tuples of 4 components, more values than the file\'s 150 bytes could hold'),
+    # VTK reads the file type as one word: the rest of line 3 is content.
+    mesh_case("vtk content after the file type", "a.vtk",
+              b"# vtk DataFile Version 3.0\nt\nASCII DATASET POLYDATA POINTS 3 float\nPOLYGONS 1 4\n3 0 1 2\n",
+              'line 4: POINTS: "POLYGONS" is not a number'),
+    # VTK skips a binary keyword line's rest with getline(line, 256): a longer
+    # one fails its stream, and the values are never read.
+    mesh_case("vtk binary points after a long keyword line", "a.vtk",
+              b"# vtk DataFile Version 3.0\nt\nBINARY\nDATASET POLYDATA\nPOINTS 3 float" + b" " * 300 + b"\n" +
+              struct.pack(">9f", 0, 0, 0, 1, 0, 0, 0, 1, 0) + b"\nPOLYGONS 1 4\n" + struct.pack(">4i", 3, 0, 1, 2) + b"\n",
+              'line 5: POINTS: keyword line longer than the 255 bytes VTK reads before binary data'),
+    mesh_case("vtk binary polygons after a long keyword line", "a.vtk",
+              b"# vtk DataFile Version 3.0\nt\nBINARY\nDATASET POLYDATA\nPOINTS 3 float\n" +
+              struct.pack(">9f", 0, 0, 0, 1, 0, 0, 0, 1, 0) + b"\nPOLYGONS 1 4" + b" " * 300 + b"\n" +
+              struct.pack(">4i", 3, 0, 1, 2) + b"\n",
+              'line 7: POLYGONS: keyword line longer than the 255 bytes VTK reads before binary data'),
+    # vtkDataReader::DecodeString reads past the end of a name shorter than 3
+    # characters holding a '%'.
+    mesh_case("vtk short name with a percent sign", "a.vtk",
+              legacy_vtk(b"POLYGONS 1 4\n3 0 1 2\nPOINT_DATA 3\nSCALARS % float\nLOOKUP_TABLE default\n0 0 0\n"),
+              'line 10: SCALARS: name "%" holds a % in fewer than 3 characters, which VTK decodes by reading past its end'),
     # vtkDataReader reads a legacy cell list into int with operator>>: it
     # crashed on "3.0" (count 3, then ".0"); "1e23" was no number of ids.
     mesh_case("vtk cell count with a decimal point", "a.vtk", legacy_vtk(b"POLYGONS 1 4\n3.0 0 1 2\n"),

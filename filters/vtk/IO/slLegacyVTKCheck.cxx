@@ -1,7 +1,8 @@
-// Legacy VTK polydata (.vtk, ASCII or BINARY): every section holds the
-// values its keyword line announces, within the file, and each legacy cell
-// list adds up to its size. vtkPolyDataReader reads past the end of a short
-// section (and crashes there).
+// Legacy VTK polydata (.vtk, ASCII or BINARY), read as vtkDataReader reads
+// it: every section holds the values its keyword line announces, within the
+// file, each legacy cell list adds up to its size, and METADATA blocks hold
+// what VTK reads without looping for ever. vtkPolyDataReader reads past the
+// end of a short section (and crashes there).
 #include "slMeshFileCheck.h"
 
 #include "shadelab/PrintableText.h"
@@ -12,6 +13,8 @@
 #include <vtkInformationIntegerKey.h>
 #include <vtkInformationIntegerVectorKey.h>
 #include <vtkInformationKeyLookup.h>
+#include <vtkInformationStringKey.h>
+#include <vtkInformationStringVectorKey.h>
 #include <vtkInformationUnsignedLongKey.h>
 
 #include <algorithm>
@@ -35,22 +38,42 @@ struct Problem
   throw Problem{ text };
 }
 
-/// Whether every token of @p tokens is a number (an integer if @p integers).
-bool allNumbers(const std::vector<std::string>& tokens, size_t from, bool integers)
+/// How vtkDataReader reads a METADATA value with operator>>.
+enum class Number
+{
+  Real,  // double
+  Int,   // int
+  Int64, // vtkIdType, unsigned long
+};
+
+/// Whether every token of @p tokens from @p from is a whole number of the
+/// kind @p kind that operator>> reads completely. libstdc++ reads no "nan",
+/// "inf" or hexadecimal doubles, and fails on an int beyond its range; a
+/// failed read is what makes vtkDataReader loop for ever.
+bool allNumbers(const std::vector<std::string>& tokens, size_t from, Number kind)
 {
   for (size_t i = from; i < tokens.size(); ++i)
   {
+    const std::string& t = tokens[i];
     char* end = nullptr;
     errno = 0;
-    if (integers)
+    if (kind == Number::Real)
     {
-      std::strtoll(tokens[i].c_str(), &end, 10);
+      if (t.find_first_not_of("0123456789+-.eE") != std::string::npos)
+      {
+        return false;
+      }
+      std::strtod(t.c_str(), &end);
     }
     else
     {
-      std::strtod(tokens[i].c_str(), &end);
+      const long long value = std::strtoll(t.c_str(), &end, 10);
+      if (kind == Number::Int && (value < std::numeric_limits<int>::min() || value > std::numeric_limits<int>::max()))
+      {
+        return false;
+      }
     }
-    if (end == tokens[i].c_str() || *end != '\0' || errno == ERANGE)
+    if (t.empty() || end == t.c_str() || *end != '\0' || errno == ERANGE)
     {
       return false;
     }
@@ -58,49 +81,92 @@ bool allNumbers(const std::vector<std::string>& tokens, size_t from, bool intege
   return true;
 }
 
-/// The problem with the "DATA ..." line @p line of the information key
-/// NAME @p name LOCATION @p location, or "". vtkDataReader reads a numeric
-/// key's values with operator>>, and a failed read leaves its stream failing
-/// while it waits for the next non-empty line: it then loops for ever. So a
-/// numeric key known to this process (vtkInformationKeyLookup, as VTK looks
-/// it up) must have its DATA complete on its line: one number, or for a
-/// vector key its length and that many numbers.
-std::string metadataDataProblem(const std::string& name, const std::string& location, const std::string& line)
+/// The whitespace-separated words of @p line.
+std::vector<std::string> words(const std::string& line)
 {
-  vtkInformationKey* key = vtkInformationKeyLookup::Find(name, location);
-  const bool vector = vtkInformationDoubleVectorKey::SafeDownCast(key) ||
-    vtkInformationIntegerVectorKey::SafeDownCast(key);
-  const bool scalar = vtkInformationDoubleKey::SafeDownCast(key) || vtkInformationIntegerKey::SafeDownCast(key) ||
-    vtkInformationIdTypeKey::SafeDownCast(key) || vtkInformationUnsignedLongKey::SafeDownCast(key);
-  if (!vector && !scalar)
-  {
-    return "";
-  }
   std::vector<std::string> tokens;
-  for (size_t at = 0; (at = line.find_first_not_of(" \t\r", at)) != std::string::npos;)
+  for (size_t at = 0; (at = line.find_first_not_of(" \t\r\v\f", at)) != std::string::npos;)
   {
-    const size_t end = line.find_first_of(" \t\r", at);
+    const size_t end = line.find_first_of(" \t\r\v\f", at);
     tokens.push_back(line.substr(at, end == std::string::npos ? std::string::npos : end - at));
     at = end;
   }
-  const std::string what = "METADATA key " + shadelab::printableText(location) + "::" + shadelab::printableText(name);
-  const bool integers = vtkInformationIntegerVectorKey::SafeDownCast(key) || vtkInformationIntegerKey::SafeDownCast(key) ||
-    vtkInformationIdTypeKey::SafeDownCast(key) || vtkInformationUnsignedLongKey::SafeDownCast(key);
-  if (scalar)
+  return tokens;
+}
+
+/// The problem with @p text as vtkDataReader::DecodeString decodes it, or "".
+/// It decodes "%XX" escapes, and for a '%' in a string shorter than 3
+/// characters its bound (length - 3, unsigned) wraps: it reads past the end.
+std::string encodedProblem(const std::string& text)
+{
+  if (text.size() < 3 && text.find('%') != std::string::npos)
   {
-    return tokens.size() == 2 && allNumbers(tokens, 1, integers) ? "" : what + ": DATA must be one number";
+    return "\"" + shadelab::printableText(text) +
+      "\" holds a % in fewer than 3 characters, which VTK decodes by reading past its end";
   }
-  if (tokens.size() < 2 || !allNumbers({ tokens[1] }, 0, true))
+  return "";
+}
+
+/// The problem with the DATA line @p line of the information key @p key
+/// (@p what names it), or "". vtkDataReader reads a numeric key's values with
+/// operator>>, and a failed read leaves its stream failing while it waits for
+/// the next non-empty line: it then loops for ever. So a numeric key must
+/// have its DATA complete on its line: one number, or for a vector key its
+/// length and that many numbers; a string vector key its count of lines.
+std::string metadataDataProblem(vtkInformationKey* key, const std::string& what, const std::string& line)
+{
+  const bool vector = vtkInformationDoubleVectorKey::SafeDownCast(key) ||
+    vtkInformationIntegerVectorKey::SafeDownCast(key);
+  const bool strings = vtkInformationStringVectorKey::SafeDownCast(key);
+  const std::vector<std::string> tokens = words(line);
+  if (tokens.empty() || tokens[0] != "DATA")
+  {
+    return what + ": expected its DATA line, found \"" + shadelab::printableText(line) + "\"";
+  }
+  const Number kind = vtkInformationDoubleKey::SafeDownCast(key) || vtkInformationDoubleVectorKey::SafeDownCast(key)
+    ? Number::Real
+    : vtkInformationIntegerKey::SafeDownCast(key) || vtkInformationIntegerVectorKey::SafeDownCast(key) ? Number::Int
+                                                                                                        : Number::Int64;
+  if (strings)
+  {
+    return tokens.size() == 2 && allNumbers(tokens, 1, Number::Int) && tokens[1][0] != '-'
+      ? ""
+      : what + ": DATA must be its number of lines";
+  }
+  if (!vector)
+  {
+    return tokens.size() == 2 && allNumbers(tokens, 1, kind) ? "" : what + ": DATA must be one number";
+  }
+  if (tokens.size() < 2 || !allNumbers({ tokens[1] }, 0, Number::Int))
   {
     return what + ": DATA must give its length and its values";
   }
   const long long length = std::strtoll(tokens[1].c_str(), nullptr, 10);
-  if (length < 0 || static_cast<unsigned long long>(length) != tokens.size() - 2 || !allNumbers(tokens, 2, integers))
+  // For length 0 VTK leaves the rest of the line unread, to be taken for the
+  // block's next line; a negative one it reserves as a huge size.
+  if (length <= 0)
+  {
+    return what + ": DATA declares " + tokens[1] + " values, VTK reads at least 1";
+  }
+  if (static_cast<unsigned long long>(length) != tokens.size() - 2 || !allNumbers(tokens, 2, kind))
   {
     return what + ": DATA declares " + tokens[1] + " values and its line holds " + std::to_string(tokens.size() - 2) +
-      (allNumbers(tokens, 2, integers) ? "" : ", not all numbers");
+      (allNumbers(tokens, 2, kind) ? "" : ", not all numbers");
   }
   return "";
+}
+
+/// Whether VTK takes @p word for the start of a METADATA block: it peeks 8
+/// characters and compares them case-insensitively.
+bool isMetadata(const std::string& word)
+{
+  if (word.size() < 8)
+  {
+    return false;
+  }
+  std::string head = word.substr(0, 8);
+  std::transform(head.begin(), head.end(), head.begin(), [](unsigned char c) { return std::tolower(c); });
+  return head == "metadata";
 }
 
 /// Bytes per value of a legacy type name; 0 for "bit" (packed), -1 unknown.
@@ -178,9 +244,23 @@ public:
     return value;
   }
 
-  /// Skips @p n values of @p type after a keyword line; integers are
-  /// returned through @p keep when given (legacy cell lists).
-  void values(long long n, const std::string& type, const std::string& section, std::vector<long long>* keep = nullptr)
+  /// A name as VTK reads it with ReadString and decodes with DecodeString.
+  std::string name(const char* what, const std::string& section)
+  {
+    const std::string text = this->word(what);
+    const std::string problem = encodedProblem(text);
+    if (!problem.empty())
+    {
+      fail("line " + std::to_string(this->line()) + ": " + section + ": name " + problem);
+    }
+    return text;
+  }
+
+  /// Skips @p tuples tuples of @p components values of @p type after a
+  /// keyword line; integers are returned through @p keep when given (legacy
+  /// cell lists).
+  void values(long long tuples, long long components, const std::string& type, const std::string& section,
+    std::vector<long long>* keep = nullptr)
   {
     const int size = typeSize(type);
     if (size < 0)
@@ -188,6 +268,23 @@ public:
       fail("line " + std::to_string(this->line()) + ": " + section + ": unknown data type \"" +
         shadelab::printableText(type) + "\"");
     }
+    // VTK sizes an array by components times tuples (a product that can
+    // wrap) and allocates per-tuple buffers of the component count even when
+    // there are no tuples: neither may exceed what the file can hold.
+    if (components < 1 || static_cast<unsigned long long>(components) > this->Bytes.size())
+    {
+      fail("line " + std::to_string(this->line()) + ": " + section + ": " + std::to_string(components) +
+        " components, " + (components < 1 ? "fewer than 1" : "more than the file's " + std::to_string(this->Bytes.size()) + " bytes could hold"));
+    }
+    if (tuples > std::numeric_limits<long long>::max() / components ||
+      static_cast<unsigned long long>(tuples * components) / 8 > this->Bytes.size())
+    {
+      fail("line " + std::to_string(this->line()) + ": " + section + ": " + std::to_string(tuples) + " tuples of " +
+        std::to_string(components) + " components, more values than the file's " + std::to_string(this->Bytes.size()) +
+        " bytes could hold");
+    }
+    const long long n = tuples * components;
+    this->Components = components;
     if (!this->Binary)
     {
       for (long long i = 0; i < n; ++i)
@@ -220,6 +317,13 @@ public:
     }
     // Binary: the values start on the line after the keyword, big-endian.
     const size_t newline = this->Bytes.find('\n', this->Position);
+    // VTK skips the rest of the keyword line with getline(line, 256): a
+    // longer rest fails the stream, and the read of the values does nothing.
+    if (n > 0 && std::min(newline, this->Bytes.size()) - this->Position > 255)
+    {
+      fail("line " + std::to_string(this->line()) + ": " + section +
+        ": keyword line longer than the 255 bytes VTK reads before binary data");
+    }
     const size_t start = newline == std::string::npos ? this->Bytes.size() : newline + 1;
     const unsigned long long bytes =
       size == 0 ? (static_cast<unsigned long long>(n) + 7) / 8 : static_cast<unsigned long long>(n) * size;
@@ -243,62 +347,161 @@ public:
     this->Position = start + static_cast<size_t>(bytes);
   }
 
-  /// Skips a METADATA block: lines up to and including the next blank one.
-  /// An "INFORMATION n" line must be followed by n "NAME" and n "DATA" lines
-  /// (VTK reads that many, past the block's end), and the DATA of a numeric
-  /// key must hold what the key's type reads (metadataDataProblem()).
+  /// Skips a METADATA block as vtkDataReader::ReadArray reads it: the
+  /// METADATA line, then lines up to an empty one (after a trailing CR; a
+  /// line of spaces is not empty to VTK). It compares each line's start
+  /// case-insensitively: COMPONENT_NAMES is followed by one name line per
+  /// component of the array before, "information" by a count as sscanf's
+  /// "%d" reads it (any white space), then information keys
+  /// (information()); other lines it ignores.
   void skipMetadata()
   {
-    long long information = -1, names = 0, data = 0;
-    std::string keyName, keyLocation;
+    const long long components = this->Components;
+    std::string text;
+    this->nextLine(text); // the rest of the METADATA line
     for (;;)
     {
-      const size_t newline = this->Bytes.find('\n', this->Position);
-      if (newline == std::string::npos)
+      const long at = this->nextLine(text);
+      if (text.empty())
       {
-        fail("line " + std::to_string(this->line()) + ": the file ends within a METADATA block");
-      }
-      const size_t next = this->Bytes.find('\n', newline + 1);
-      const std::string lineText = this->Bytes.substr(newline + 1, (next == std::string::npos ? this->Bytes.size() : next) - newline - 1);
-      this->Position = newline + 1;
-      // VTK reads this block as text lines; a NUL ends its C strings early.
-      if (lineText.find('\0') != std::string::npos)
-      {
-        fail("line " + std::to_string(this->line()) + ": a NUL byte within a METADATA block");
-      }
-      if (lineText.find_first_not_of(" \t\r") == std::string::npos)
-      {
-        if (information >= 0 && (names != information || data != information))
-        {
-          fail("line " + std::to_string(this->line()) + ": METADATA announces " + std::to_string(information) +
-            " information keys and holds " + std::to_string(std::min(names, data)));
-        }
         return;
       }
-      if (lineText.rfind("INFORMATION ", 0) == 0)
+      std::string lower = text;
+      std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+      if (lower.rfind("component_names", 0) == 0)
       {
-        information = std::strtoll(lineText.c_str() + 12, nullptr, 10);
-      }
-      if (lineText.rfind("NAME ", 0) == 0)
-      {
-        ++names;
-        char name[256] = "", location[256] = "";
-        if (std::sscanf(lineText.c_str(), "NAME %255s LOCATION %255s", name, location) == 2)
+        for (long long i = 0; i < components; ++i)
         {
-          keyName = name;
-          keyLocation = location;
+          const long nameAt = this->nextLine(text);
+          const std::string problem = encodedProblem(text);
+          if (!problem.empty())
+          {
+            fail("line " + std::to_string(nameAt) + ": METADATA component name " + problem);
+          }
         }
       }
-      if (lineText.rfind("DATA ", 0) == 0)
+      else if (lower.rfind("information", 0) == 0)
       {
-        ++data;
-        const std::string problem = metadataDataProblem(keyName, keyLocation, lineText);
+        const size_t digits = lower.find_first_not_of(" \t\n\v\f\r", 11);
+        if (digits == std::string::npos)
+        {
+          continue; // no count: VTK warns and goes on
+        }
+        errno = 0;
+        char* end = nullptr;
+        const long long keys = std::strtoll(lower.c_str() + digits, &end, 10);
+        if (end == lower.c_str() + digits)
+        {
+          continue; // no number: VTK warns and goes on
+        }
+        if (errno == ERANGE || keys > std::numeric_limits<int>::max() || keys < std::numeric_limits<int>::min())
+        {
+          fail("line " + std::to_string(at) + ": METADATA: an information count beyond int");
+        }
+        this->information(keys, at);
+      }
+    }
+  }
+
+  /// The @p keys information keys after an "information" line (line @p at),
+  /// as vtkDataReader::ReadInformation reads them: each key skips empty
+  /// lines, then takes one line; a line starting "NAME " (case-sensitive)
+  /// names a key, others are ignored. A key known to this process
+  /// (vtkInformationKeyLookup, as VTK looks it up) of a type VTK reads takes
+  /// its DATA next (metadataDataProblem()); a string key the next line,
+  /// whose word after DATA VTK decodes; a string vector key as many lines
+  /// as its DATA gives, each decoded.
+  void information(long long keys, long at)
+  {
+    std::string text;
+    for (long long k = 0; k < keys; ++k)
+    {
+      do
+      {
+        if (this->Position >= this->Bytes.size())
+        {
+          fail("line " + std::to_string(at) + ": METADATA announces " + std::to_string(keys) +
+            " information keys and holds " + std::to_string(k));
+        }
+        at = this->nextLine(text);
+      } while (text.empty());
+      char name[256] = "", location[256] = "";
+      if (text.rfind("NAME ", 0) != 0 || std::sscanf(text.c_str(), "NAME %255s LOCATION %255s", name, location) != 2)
+      {
+        continue;
+      }
+      vtkInformationKey* key = vtkInformationKeyLookup::Find(name, location);
+      const std::string what =
+        "METADATA key " + shadelab::printableText(location) + "::" + shadelab::printableText(name);
+      if (vtkInformationStringKey::SafeDownCast(key))
+      {
+        at = this->nextLine(text);
+        char value[256] = "";
+        const std::string problem =
+          std::sscanf(text.c_str(), "DATA %255s", value) == 1 ? encodedProblem(value) : std::string();
         if (!problem.empty())
         {
-          fail("line " + std::to_string(this->line()) + ": " + problem);
+          fail("line " + std::to_string(at) + ": " + what + ": " + problem);
+        }
+        continue;
+      }
+      if (!vtkInformationDoubleKey::SafeDownCast(key) && !vtkInformationDoubleVectorKey::SafeDownCast(key) &&
+        !vtkInformationIntegerKey::SafeDownCast(key) && !vtkInformationIntegerVectorKey::SafeDownCast(key) &&
+        !vtkInformationIdTypeKey::SafeDownCast(key) && !vtkInformationUnsignedLongKey::SafeDownCast(key) &&
+        !vtkInformationStringVectorKey::SafeDownCast(key))
+      {
+        continue; // unknown, or a type VTK does not read: it reads on from the next line
+      }
+      at = this->nextLine(text);
+      const std::string problem = metadataDataProblem(key, what, text);
+      if (!problem.empty())
+      {
+        fail("line " + std::to_string(at) + ": " + problem);
+      }
+      if (vtkInformationStringVectorKey::SafeDownCast(key))
+      {
+        const long long lines = std::strtoll(words(text)[1].c_str(), nullptr, 10);
+        for (long long i = 0; i < lines; ++i)
+        {
+          at = this->nextLine(text);
+          const std::string valueProblem = encodedProblem(text);
+          if (!valueProblem.empty())
+          {
+            fail("line " + std::to_string(at) + ": " + what + ": " + valueProblem);
+          }
         }
       }
     }
+  }
+
+  /// The next line of a METADATA block into @p text, as vtkDataReader's
+  /// ReadLine reads it (a trailing CR removed); returns its line number.
+  long nextLine(std::string& text)
+  {
+    const long at = this->line();
+    if (this->Position >= this->Bytes.size())
+    {
+      fail("line " + std::to_string(at) + ": the file ends within a METADATA block");
+    }
+    const size_t newline = this->Bytes.find('\n', this->Position);
+    const size_t end = newline == std::string::npos ? this->Bytes.size() : newline;
+    text = this->Bytes.substr(this->Position, end - this->Position);
+    this->Position = newline == std::string::npos ? end : newline + 1;
+    // VTK reads this block as text lines into 256-byte buffers, cutting a
+    // longer line; a NUL ends its C strings early.
+    if (text.find('\0') != std::string::npos)
+    {
+      fail("line " + std::to_string(at) + ": a NUL byte within a METADATA block");
+    }
+    if (text.size() > 255)
+    {
+      fail("line " + std::to_string(at) + ": a METADATA line longer than 255 bytes");
+    }
+    if (!text.empty() && text.back() == '\r')
+    {
+      text.pop_back();
+    }
+    return at;
   }
 
   long line() const { return 1 + static_cast<long>(std::count(this->Bytes.begin(), this->Bytes.begin() + static_cast<long>(this->Position), '\n')); }
@@ -314,6 +517,7 @@ private:
   const std::string& Bytes;
   bool Binary;
   size_t Position;
+  long long Components = 1; // of the array before, for a METADATA block's COMPONENT_NAMES
 };
 
 std::string upper(std::string s)
@@ -328,8 +532,10 @@ void fieldArrays(Walker& w, const std::string& section)
   const long long arrays = w.count("the number of field arrays");
   for (long long a = 0; a < arrays; ++a)
   {
+    // VTK decodes an array name (DecodeString); the block after an array
+    // is its METADATA.
     const std::string name = w.word("a field array name");
-    if (upper(name) == "METADATA")
+    if (isMetadata(name))
     {
       w.skipMetadata();
       --a;
@@ -338,7 +544,13 @@ void fieldArrays(Walker& w, const std::string& section)
     const long long components = w.count("the number of components");
     const long long tuples = w.count("the number of tuples");
     const std::string type = w.word("the data type");
-    w.values(components * tuples, type, section + " array \"" + shadelab::printableText(name) + "\"");
+    const std::string array = section + " array \"" + shadelab::printableText(name) + "\"";
+    const std::string problem = encodedProblem(name);
+    if (!problem.empty())
+    {
+      fail("line " + std::to_string(w.line()) + ": " + array + ": name " + problem);
+    }
+    w.values(tuples, components, type, array);
   }
 }
 
@@ -348,7 +560,7 @@ void attributes(Walker& w, long long n, const std::string& keyword, bool binary)
   const std::string section = keyword;
   if (keyword == "SCALARS")
   {
-    w.word("the scalars name");
+    w.name("the scalars name", section);
     const std::string type = w.word("the scalars type");
     // An optional component count, then LOOKUP_TABLE and its name.
     long long components = 1;
@@ -369,39 +581,39 @@ void attributes(Walker& w, long long n, const std::string& keyword, bool binary)
       fail("line " + std::to_string(w.line()) + ": SCALARS: expected LOOKUP_TABLE");
     }
     w.word("the lookup table name");
-    w.values(n * components, type, section);
+    w.values(n, components, type, section);
   }
   else if (keyword == "LOOKUP_TABLE")
   {
     w.word("the lookup table name");
-    w.values(4 * w.count("the lookup table size"), binary ? "unsigned_char" : "float", section);
+    w.values(w.count("the lookup table size"), 4, binary ? "unsigned_char" : "float", section);
   }
   else if (keyword == "VECTORS" || keyword == "NORMALS")
   {
-    w.word("the array name");
-    w.values(3 * n, w.word("the data type"), section);
+    w.name("the array name", section);
+    w.values(n, 3, w.word("the data type"), section);
   }
   else if (keyword == "TEXTURE_COORDINATES")
   {
-    w.word("the array name");
+    w.name("the array name", section);
     const long long dim = w.count("the dimension");
-    w.values(dim * n, w.word("the data type"), section);
+    w.values(n, dim, w.word("the data type"), section);
   }
   else if (keyword == "TENSORS" || keyword == "TENSORS6")
   {
-    w.word("the array name");
-    w.values((keyword == "TENSORS" ? 9 : 6) * n, w.word("the data type"), section);
+    w.name("the array name", section);
+    w.values(n, keyword == "TENSORS" ? 9 : 6, w.word("the data type"), section);
   }
   else if (keyword == "COLOR_SCALARS")
   {
-    w.word("the array name");
+    w.name("the array name", section);
     const long long m = w.count("the number of values");
-    w.values(m * n, binary ? "unsigned_char" : "float", section);
+    w.values(n, m, binary ? "unsigned_char" : "float", section);
   }
   else if (keyword == "GLOBAL_IDS" || keyword == "PEDIGREE_IDS")
   {
-    w.word("the array name");
-    w.values(n, w.word("the data type"), section);
+    w.name("the array name", section);
+    w.values(n, 1, w.word("the data type"), section);
   }
   else if (keyword == "FIELD")
   {
@@ -455,7 +667,10 @@ void walk(const std::string& bytes)
   {
     fail("an ASCII file holding a NUL byte (at byte " + std::to_string(bytes.find('\0')) + ")");
   }
-  Walker w(bytes, binary, end);
+  // VTK reads the file type as one word (ReadString), and the rest of
+  // line 3 is the start of the file's content.
+  const size_t typeEnd = lines[2].find_first_of(" \t\r\v\f");
+  Walker w(bytes, binary, typeEnd == std::string::npos ? end : end - lines[2].size() - 1 + typeEnd);
   const bool offsetCells = major >= 5;
   long long points = -1;
   long long cells = 0;
@@ -480,14 +695,14 @@ void walk(const std::string& bytes)
     {
       fieldArrays(w, "FIELD");
     }
-    else if (keyword == "METADATA")
+    else if (isMetadata(keyword))
     {
       w.skipMetadata();
     }
     else if (keyword == "POINTS")
     {
       points = w.count("the number of points");
-      w.values(3 * points, w.word("the points' data type"), "POINTS");
+      w.values(points, 3, w.word("the points' data type"), "POINTS");
     }
     else if (keyword == "VERTICES" || keyword == "LINES" || keyword == "POLYGONS" || keyword == "TRIANGLE_STRIPS")
     {
@@ -501,18 +716,18 @@ void walk(const std::string& bytes)
           fail("line " + std::to_string(w.line()) + ": " + keyword + ": expected OFFSETS (file version " +
             std::to_string(major) + "." + std::to_string(minor) + ")");
         }
-        w.values(n, w.word("the offsets' type"), keyword + " OFFSETS");
+        w.values(n, 1, w.word("the offsets' type"), keyword + " OFFSETS");
         if (upper(w.word("CONNECTIVITY")) != "CONNECTIVITY")
         {
           fail("line " + std::to_string(w.line()) + ": " + keyword + ": expected CONNECTIVITY after the offsets");
         }
-        w.values(size, w.word("the connectivity type"), keyword + " CONNECTIVITY");
+        w.values(size, 1, w.word("the connectivity type"), keyword + " CONNECTIVITY");
         cells += n > 0 ? n - 1 : 0;
         continue;
       }
       // Legacy: per cell a point count and the ids, adding up to size.
       std::vector<long long> list;
-      w.values(size, "int", keyword, &list);
+      w.values(size, 1, "int", keyword, &list);
       size_t at = 0;
       for (long long c = 0; c < n; ++c)
       {
@@ -547,7 +762,7 @@ void walk(const std::string& bytes)
           break;
         }
         w.word("a keyword");
-        if (next == "METADATA") // an array's information keys
+        if (isMetadata(next)) // an array's information keys
         {
           w.skipMetadata();
           continue;
