@@ -504,7 +504,22 @@ public:
     return at;
   }
 
-  long line() const { return 1 + static_cast<long>(std::count(this->Bytes.begin(), this->Bytes.begin() + static_cast<long>(this->Position), '\n')); }
+  /// The line number at the current position. Counted on from the last
+  /// call (the position only moves forward): a METADATA block asks at each
+  /// of its lines, and counting from the start each time cost a pass over
+  /// the whole file per line.
+  long line() const
+  {
+    if (this->Position < this->CountedTo)
+    {
+      this->CountedTo = 0;
+      this->LinesBefore = 0;
+    }
+    this->LinesBefore += std::count(this->Bytes.begin() + static_cast<std::ptrdiff_t>(this->CountedTo),
+      this->Bytes.begin() + static_cast<std::ptrdiff_t>(this->Position), '\n');
+    this->CountedTo = this->Position;
+    return 1 + static_cast<long>(this->LinesBefore);
+  }
 
 private:
   void skipSpace()
@@ -518,6 +533,8 @@ private:
   bool Binary;
   size_t Position;
   long long Components = 1; // of the array before, for a METADATA block's COMPONENT_NAMES
+  mutable size_t CountedTo = 0;      // line(): where the newlines were counted up to
+  mutable std::ptrdiff_t LinesBefore = 0; // and how many there were
 };
 
 std::string upper(std::string s)
