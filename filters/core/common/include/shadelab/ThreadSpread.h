@@ -22,9 +22,9 @@
  * an update would hand the CPU to other busy processes for nothing. A worker
  * that finds itself on the starting thread's CPU moves itself to another
  * CPU it is allowed on (its affinity is narrowed to exclude that CPU, which
- * migrates it, and set back straight away). No thread stays pinned: a pinned thread could not
- * leave a CPU that another process keeps busy, and a process it started
- * would inherit the single CPU.
+ * migrates it, and set back straight away). No thread stays pinned: a
+ * pinned thread could not leave a CPU that another process keeps busy, and
+ * a process it started would inherit the single CPU.
  *
  * Caveats: Linux only (elsewhere enter() does nothing); a thread whose
  * affinity allows one CPU is left where it is.
