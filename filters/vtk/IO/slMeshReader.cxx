@@ -109,15 +109,15 @@ vtkIdType firstShortPolygon(const Offset* offsets, vtkIdType numberOfOffsets)
 /// writer crashes). The connectivity must be checked (slConnectivityProblem).
 std::string shortPolygonProblem(vtkCellArray* polys)
 {
-  const vtkIdType short_ = polys->IsStorage64Bit()
+  const vtkIdType first = polys->IsStorage64Bit()
     ? firstShortPolygon(polys->GetOffsetsArray64()->GetPointer(0), polys->GetOffsetsArray64()->GetNumberOfValues())
     : firstShortPolygon(polys->GetOffsetsArray32()->GetPointer(0), polys->GetOffsetsArray32()->GetNumberOfValues());
-  if (short_ < 0)
+  if (first < 0)
   {
     return std::string();
   }
-  return "polygon " + std::to_string(short_) + " has fewer than 3 points (" +
-    std::to_string(polys->GetCellSize(short_)) + ")";
+  return "polygon " + std::to_string(first) + " has fewer than 3 points (" +
+    std::to_string(polys->GetCellSize(first)) + ")";
 }
 
 /// "" unless an array of @p data has another number of tuples than
