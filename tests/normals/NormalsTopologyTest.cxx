@@ -1,5 +1,6 @@
 // slPolyDataNormals: face normals, splitting, orientation, cell types,
-// degenerate and bad input, welding. Expected values are analytic.
+// degenerate and bad input, welding. Expected values are analytic, or
+// vtkPolyDataNormals' where it computes the same thing.
 #include "NormalsTestMeshes.h"
 
 #include "slMeshReader.h"
@@ -10,9 +11,11 @@
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCommand.h>
+#include <vtkFeatureEdges.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
+#include <vtkPolyDataNormals.h>
 
 #include <gtest/gtest.h>
 
@@ -20,6 +23,7 @@
 #include <algorithm>
 #include <functional>
 #include <map>
+#include <random>
 #include <string>
 
 namespace
@@ -563,4 +567,91 @@ TEST(Normals, AFilterRunAgainOnAnotherMeshGivesWhatANewFilterGives)
   EXPECT_TRUE(sameValues(a->GetPointData()->GetNormals(), b->GetPointData()->GetNormals()));
   EXPECT_TRUE(sameValues(a->GetPoints()->GetData(), b->GetPoints()->GetData()));
   EXPECT_TRUE(sameValues(a->GetPolys()->GetConnectivityArray(), b->GetPolys()->GetConnectivityArray()));
+}
+
+TEST(Normals, CreasedClosedSurfaceSplitsAsVTKPolyDataNormals)
+{
+  // An icosphere with its points moved out at random: a closed surface whose
+  // points have zero, one, two or more sharp edges (over 30 degrees) around
+  // them. A closed fan's groups are the runs between its sharp edges, one
+  // group when it has only one; vtkPolyDataNormals, which finds the groups
+  // by walking across smooth edges, must make the same points, and with
+  // uniform weighting the same normals.
+  std::vector<Vec> pts;
+  std::vector<std::array<vtkIdType, 3>> tris;
+  normalstest::icosphere(3, pts, tris);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> radius(1.0, 1.3);
+  for (Vec& p : pts)
+  {
+    const double r = radius(rng);
+    p = { r * p[0], r * p[1], r * p[2] };
+  }
+  vtkSmartPointer<vtkPolyData> bumpy = normalstest::makePolyData(pts, tris, pts);
+
+  // The cases must all be there: points with 1, 2 and 3 or more sharp edges.
+  vtkNew<vtkFeatureEdges> sharp;
+  sharp->SetInputData(bumpy);
+  sharp->BoundaryEdgesOff();
+  sharp->NonManifoldEdgesOff();
+  sharp->ManifoldEdgesOff();
+  sharp->FeatureEdgesOn();
+  sharp->SetFeatureAngle(30);
+  sharp->Update();
+  std::map<std::array<double, 3>, int> sharpAt;
+  vtkPolyData* edges = sharp->GetOutput();
+  for (vtkIdType i = 0; i < edges->GetNumberOfPoints(); ++i)
+  {
+    sharpAt[{ edges->GetPoint(i)[0], edges->GetPoint(i)[1], edges->GetPoint(i)[2] }] = 0;
+  }
+  vtkNew<vtkIdList> ends;
+  for (vtkIdType e = 0; e < edges->GetNumberOfCells(); ++e)
+  {
+    edges->GetCellPoints(e, ends);
+    for (vtkIdType k = 0; k < ends->GetNumberOfIds(); ++k)
+    {
+      const double* p = edges->GetPoint(ends->GetId(k));
+      ++sharpAt[{ p[0], p[1], p[2] }];
+    }
+  }
+  std::map<int, int> pointsWith;
+  for (const auto& at : sharpAt)
+  {
+    ++pointsWith[std::min(at.second, 3)];
+  }
+  ASSERT_GT(pointsWith[1], 10);
+  ASSERT_GT(pointsWith[2], 10);
+  ASSERT_GT(pointsWith[3], 10);
+
+  Result ours = run(bumpy, [](slPolyDataNormals* f) { f->SetWeighting(slPolyDataNormals::UNIFORM); });
+  vtkNew<vtkPolyDataNormals> vtk;
+  vtk->SetInputData(bumpy);
+  vtk->Update();
+  ASSERT_EQ(ours.out->GetNumberOfPoints(), vtk->GetOutput()->GetNumberOfPoints());
+  ASSERT_GT(ours.out->GetNumberOfPoints(), bumpy->GetNumberOfPoints());
+  // Each position's normals, sorted, from both.
+  auto normalsAt = [](vtkPolyData* out) {
+    std::map<std::array<double, 3>, std::vector<Vec>> at;
+    for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+    {
+      const double* p = out->GetPoint(i);
+      at[{ p[0], p[1], p[2] }].push_back(tuple(out->GetPointData()->GetNormals(), i));
+    }
+    for (auto& point : at)
+    {
+      std::sort(point.second.begin(), point.second.end());
+    }
+    return at;
+  };
+  const auto a = normalsAt(ours.out), b = normalsAt(vtk->GetOutput());
+  ASSERT_EQ(a.size(), b.size());
+  for (auto i = a.begin(), j = b.begin(); i != a.end(); ++i, ++j)
+  {
+    ASSERT_EQ(i->first, j->first);
+    ASSERT_EQ(i->second.size(), j->second.size()) << "groups at a point";
+    for (size_t g = 0; g < i->second.size(); ++g)
+    {
+      expectNear(i->second[g], j->second[g], 1e-5);
+    }
+  }
 }

@@ -19,8 +19,8 @@
  *
  * Work is parallel: unit polygon normals; a pass over points that builds
  * the groups (keeping each corner's group, 16 bits; a point that is one
- * smooth closed fan is one group without the general grouping work, see
- * smoothClosedFan); then, without welding,
+ * closed fan gets its groups without the general grouping work, see
+ * closedFanGroups); then, without welding,
  * each corner's output point and a polygon-centric weighted sum as in
  * slVertexNormalsCore.h; with welding, a second pass over points.
  */
@@ -66,7 +66,7 @@ struct SplitScratch
   std::vector<int> slot;  ///< per corner, 0..numSlots-1 (welding only)
   std::vector<std::pair<int64_t, int>> slots; ///< (original id, group) per slot
   std::vector<glm::vec<3, T>> sums;
-  bool fan = false; ///< the last point was one smooth closed fan
+  bool fan = false; ///< the last point was one closed fan (consistent by construction)
 
   /// Room for a point of @p corners corners. The per-corner vectors only
   /// grow: five resizes at every point took a fifth of the grouping's
@@ -152,63 +152,26 @@ inline bool fanSteps(const int64_t* prev, const int64_t* next, int k, int* to)
   return true;
 }
 
-/// True if the k corners in @p s form one closed fan with only smooth edges,
-/// so that they are all one group. That is most points of a smooth closed
-/// surface, and it is decided by walking the fan once instead of sorting
-/// edge ends.
-///
-/// From corner 0 the walk goes to the only corner j whose previous point is
-/// the current corner's next point (prev[j] == next[i]) and stops at a sharp
-/// edge, a missing or second such corner, or a return to corner 0 before
-/// all k corners are seen. A walk that comes back to corner 0 after exactly
-/// k steps proves that the step i -> j is a k-cycle, so each edge end w
-/// occurs exactly twice among the 2k ends (once as some next, once as some
-/// prev, from two different corners): every edge at the point is manifold,
-/// each joins the two corners the general pass would join, and all are smooth.
-/// Boundaries, non-manifold edges, bowtie points (two fans), polygons
-/// running the wrong way and sharp edges all return false and take the
-/// general pass, so the groups are the same either way.
-///
-/// Fans of up to kHashedFan corners take every corner's step first
-/// (fanSteps), and it gives the same answer. A corner without a step fails
-/// the walk whether or not the walk would have reached it: a walk that
-/// succeeds reaches every corner. Two corners with the same previous point
-/// need no check: only the first is ever stepped onto, so the walk cannot
-/// reach both, and fails.
+/// True if the k (more than kHashedFan) corners in @p s form one closed fan
+/// with only smooth edges, walked from corner 0 (see closedFanGroups):
+/// each step scans the corners for the one whose previous point is the
+/// current corner's next point, and the walk stops at a sharp edge.
 template <typename T>
-bool smoothClosedFan(const SplitScratch<T>& s, int k, T cosFeature)
+bool smoothClosedFanScanned(const SplitScratch<T>& s, int k, T cosFeature)
 {
-  int to[kHashedFan];
-  const bool hashed = k <= kHashedFan;
-  if (hashed && !fanSteps(s.prev.data(), s.next.data(), k, to))
-  {
-    return false;
-  }
   int i = 0;
   for (int step = 1; step <= k; ++step)
   {
-    int j = -1;
-    if (hashed)
+    // Counted without branches: which prev matches is unpredictable.
+    const int64_t w = s.next[static_cast<size_t>(i)];
+    int j = -1, matches = 0;
+    for (int m = 0; m < k; ++m)
     {
-      j = to[i];
+      const bool match = s.prev[static_cast<size_t>(m)] == w;
+      matches += match;
+      j = match ? m : j;
     }
-    else
-    {
-      // Counted without branches: which prev matches is unpredictable.
-      const int64_t w = s.next[static_cast<size_t>(i)];
-      int matches = 0;
-      for (int m = 0; m < k; ++m)
-      {
-        const bool match = s.prev[static_cast<size_t>(m)] == w;
-        matches += match;
-        j = match ? m : j;
-      }
-      if (matches != 1)
-      {
-        return false;
-      }
-    }
-    if (!smoothAcross(s.normal[static_cast<size_t>(i)], s.normal[static_cast<size_t>(j)], cosFeature))
+    if (matches != 1 || !smoothAcross(s.normal[static_cast<size_t>(i)], s.normal[static_cast<size_t>(j)], cosFeature))
     {
       return false;
     }
@@ -221,10 +184,100 @@ bool smoothClosedFan(const SplitScratch<T>& s, int k, T cosFeature)
   return false;
 }
 
+/// The groups of a point whose k corners in @p s form one closed fan, into
+/// s.group (numbered in order of first corner), and their number; 0 if the
+/// corners are not one closed fan. That is most points of a closed surface,
+/// also on its creases, and it is decided by walking the fan once instead
+/// of sorting edge ends.
+///
+/// Each corner i steps to the first corner j whose previous point is its
+/// next point (prev[j] == next[i]; fanSteps). If the walk from corner 0
+/// comes back to it after exactly k steps, the steps are a k-cycle, so the
+/// k next points are distinct, and so are the k previous points: each edge
+/// end w at the point is one corner's next and another corner's previous
+/// point. Every edge at the point is then manifold and joins the two
+/// corners i, j the general pass would join, and the groups are the runs
+/// of the cycle between its sharp edges (one group for none or one sharp
+/// edge), as the general pass's union would make them. Boundaries,
+/// non-manifold edges, bowtie points (two fans) and polygons running the
+/// wrong way all fail the walk (a corner without a step, or a return to
+/// corner 0 too soon or never) and take the general pass.
+///
+/// Fans of more than kHashedFan corners are left to the general pass
+/// unless they are one smooth closed fan (smoothClosedFanScanned).
+template <typename T>
+int closedFanGroups(SplitScratch<T>& s, int k, T cosFeature)
+{
+  if (k > kHashedFan)
+  {
+    if (!smoothClosedFanScanned(s, k, cosFeature))
+    {
+      return 0;
+    }
+    std::fill(s.group.begin(), s.group.begin() + k, 0);
+    return 1;
+  }
+  int to[kHashedFan];
+  if (!fanSteps(s.prev.data(), s.next.data(), k, to))
+  {
+    return 0;
+  }
+  int step = 1;
+  for (int i = to[0]; i != 0 && step <= k; i = to[i])
+  {
+    ++step;
+  }
+  if (step != k)
+  {
+    return 0;
+  }
+  // Each step's edge, smooth or sharp, tested apart from the walk: along
+  // it, each test waited for the step before.
+  static_assert(kHashedFan <= 32, "one bit a corner");
+  uint32_t sharp = 0;
+  for (int i = 0; i < k; ++i)
+  {
+    sharp |= static_cast<uint32_t>(
+               !smoothAcross(s.normal[static_cast<size_t>(i)], s.normal[static_cast<size_t>(to[i])], cosFeature))
+      << i;
+  }
+  if ((sharp & (sharp - 1)) == 0)
+  {
+    std::fill(s.group.begin(), s.group.begin() + k, 0);
+    return 1;
+  }
+  // Runs once around the cycle from the corner a sharp edge leads to, then
+  // renumbered in order of first corner.
+  int sharpFrom = 0;
+  while (!((sharp >> sharpFrom) & 1))
+  {
+    ++sharpFrom;
+  }
+  int run = 0;
+  for (int i = to[sharpFrom], n = 0; n < k; ++n, i = to[i])
+  {
+    s.group[static_cast<size_t>(i)] = run;
+    run += (sharp >> i) & 1;
+  }
+  int number[kHashedFan];
+  std::fill(number, number + run, -1);
+  int groups = 0;
+  for (int i = 0; i < k; ++i)
+  {
+    int& g = number[s.group[static_cast<size_t>(i)]];
+    if (g < 0)
+    {
+      g = groups++;
+    }
+    s.group[static_cast<size_t>(i)] = g;
+  }
+  return groups;
+}
+
 /// Builds the groups of point @p v from the polygons' unit normals @p unit
 /// (3 per polygon, zero if degenerate) into s.group (per corner,
 /// 0..groups-1, in order of first corner) and returns the number of groups.
-/// s.fan tells whether the point was one smooth closed fan.
+/// s.fan tells whether the point was one closed fan (closedFanGroups).
 template <typename T, typename Id>
 int buildGroups(const Polygons<Id>& polys, const Id* original, const T* unit, const VertexCorners<Id>& vc,
   int64_t v, T cosFeature, SplitScratch<T>& s)
@@ -247,11 +300,11 @@ int buildGroups(const Polygons<Id>& polys, const Id* original, const T* unit, co
       s.orig[i] = static_cast<int64_t>(original[vc.corners[static_cast<size_t>(b + i)]]);
     }
   }
-  s.fan = k > 0 && smoothClosedFan(s, k, cosFeature);
+  const int fanGroups = k > 0 ? closedFanGroups(s, k, cosFeature) : 0;
+  s.fan = fanGroups > 0;
   if (s.fan)
   {
-    std::fill(s.group.begin(), s.group.begin() + k, 0);
-    return 1;
+    return fanGroups;
   }
   s.parent.resize(k);
   std::iota(s.parent.begin(), s.parent.end(), 0);
