@@ -206,11 +206,16 @@ bool scatter(
     {
       const Id* ids = polys.connectivity + polys.begin(f);
       const bool inRange = idsAreEntries && sink.ownsAll(ids, 3 * capacity, numPoints - 1);
-      if (!inRange && !slIdsBelow(ids, 3 * capacity, numPoints))
+      // Otherwise (the split's output ids, or a block at a range's border)
+      // the check asks for ids below the last point, which lets the block
+      // be read in 16-byte loads; only a block naming the last point or
+      // beyond needs a second look.
+      const bool belowLast = inRange || slIdsBelow(ids, 3 * capacity, numPoints - 1);
+      if (!belowLast && !slIdsBelow(ids, 3 * capacity, numPoints))
       {
         return false;
       }
-      if (inRange)
+      if (belowLast)
       {
         block.fillBelowLastPoint(polys.connectivity, xyz, polys.begin(f), capacity);
       }
