@@ -275,10 +275,10 @@ bool scatter(
 }
 
 /// Chunks of a mesh in order hold at least this many polygons, unless that
-/// leaves fewer than 2 per thread. At 0.1M triangles on two threads, 6
-/// chunks instead of 16 took 0.40-0.41 ms an update instead of 0.44-0.53,
-/// and after 10 ms of sleep 0.63-0.70 instead of 0.68-0.80.
-constexpr int64_t kMinChunkPolygons = 16384;
+/// leaves fewer than 2 per thread. On two threads, updates in a loop took
+/// 0.41 ms instead of 0.42-0.52 at 0.1M triangles (4 chunks instead of 16)
+/// and 2.36-2.40 ms instead of 2.41-2.73 at 0.5M (7 instead of 16).
+constexpr int64_t kMinChunkPolygons = 65536;
 
 /// Chunks of polygons and the entry ranges they own (see the file comment).
 struct Partition
