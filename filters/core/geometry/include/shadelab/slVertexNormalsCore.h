@@ -23,12 +23,12 @@
  * order of their points (what generators, readers and most exporters
  * write) a chunk then reaches outside its range only along its borders, and
  * there are several chunks per thread (up to 8, fewer in small meshes) so
- * that threads that start late still get a share. When a sample of polygons says the order is random (more
- * than a quarter of the corners outside their chunk's range), almost every
- * corner would be kept for another range; then there is one chunk per
- * thread, each summing into its own copy of all entries (chunk 0 into the
- * accumulator), and a pass over the points adds the copies in chunk order
- * and normalises. The scatter does not prefetch in random order: asking for
+ * that threads that start late still get a share. When a sample of
+ * polygons says the order is random (more than a quarter of the corners
+ * outside their chunk's range), almost every corner would be kept for
+ * another range; then there is one chunk per thread, each summing into its
+ * own copy of all entries (chunk 0 into the accumulator), and a pass over
+ * the points adds the copies in chunk order and normalises. The scatter does not prefetch in random order: asking for
  * each triangle's points and sums ahead cost the block-wise path below and
  * measured 7-30 % slower than reading them when needed.
  *
@@ -366,12 +366,25 @@ Partition partition(const Polygons<Id>& polys, const AccId* accIds, int64_t numE
     // Fewer chunks for a small mesh: each chunk costs a start, its lists
     // and the corners along its border.
     const int64_t fewer = std::max<int64_t>(2 * threads, polys.numPolygons / kMinChunkPolygons);
-    if (fewer < p.chunks)
+    const int64_t sampledChunks = p.chunks;
+    if (fewer < sampledChunks)
     {
-      // About as many corners cross each border.
-      const double share = p.keptShare * static_cast<double>(fewer - 1) / static_cast<double>(p.chunks - 1);
       inMeshOrder(fewer);
-      p.keptShare = share;
+      bool widerThanOffsets = false; // a Kept offset is 32-bit
+      for (int64_t k = 0; k < p.chunks; ++k)
+      {
+        const int64_t width = p.bounds[static_cast<size_t>(k + 1)] - p.bounds[static_cast<size_t>(k)];
+        widerThanOffsets = widerThanOffsets || width >= maxRange;
+      }
+      if (widerThanOffsets)
+      {
+        inMeshOrder(sampledChunks);
+      }
+      else
+      {
+        // About as many corners cross each border.
+        p.keptShare *= static_cast<double>(fewer - 1) / static_cast<double>(sampledChunks - 1);
+      }
     }
   }
   return p;
