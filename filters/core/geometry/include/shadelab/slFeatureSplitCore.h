@@ -405,8 +405,8 @@ int groupCorners(const Polygons<Id>& polys, const Id* original, const T* unit, c
  *
  * @p inconsistent, when given, asks the pass that builds the groups to look
  * for polygons running the same way along an edge (hasInconsistentEdge() of
- * slOrientationCore.h, at no extra pass over the corners: a smooth closed fan
- * is consistent by construction). If there is one, *@p inconsistent is set,
+ * slOrientationCore.h, at no extra pass over the corners: a closed fan is
+ * consistent by construction). If there is one, *@p inconsistent is set,
  * nothing is allocated or written and -1 is returned: orient the polygons
  * and call again.
  *
