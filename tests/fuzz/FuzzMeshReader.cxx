@@ -139,20 +139,17 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
       std::abort();
     }
   }
-  for (int a = 0; a < mesh->GetPointData()->GetNumberOfArrays(); ++a)
-  {
-    if (mesh->GetPointData()->GetAbstractArray(a)->GetNumberOfTuples() != mesh->GetNumberOfPoints())
+  const auto expectTuples = [](vtkDataSetAttributes* data, vtkIdType expected) {
+    for (int a = 0; a < data->GetNumberOfArrays(); ++a)
     {
-      std::abort();
+      if (data->GetAbstractArray(a)->GetNumberOfTuples() != expected)
+      {
+        std::abort();
+      }
     }
-  }
-  for (int a = 0; a < mesh->GetCellData()->GetNumberOfArrays(); ++a)
-  {
-    if (mesh->GetCellData()->GetAbstractArray(a)->GetNumberOfTuples() != mesh->GetNumberOfCells())
-    {
-      std::abort();
-    }
-  }
+  };
+  expectTuples(mesh->GetPointData(), mesh->GetNumberOfPoints());
+  expectTuples(mesh->GetCellData(), mesh->GetNumberOfCells());
   for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
   {
     double p[3];

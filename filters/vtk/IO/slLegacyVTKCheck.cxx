@@ -248,12 +248,19 @@ public:
   std::string name(const char* what, const std::string& section)
   {
     const std::string text = this->word(what);
+    this->checkName(text, section);
+    return text;
+  }
+
+  /// Fails, at the current line, if VTK cannot decode the name @p text of
+  /// @p section (encodedProblem()).
+  void checkName(const std::string& text, const std::string& section)
+  {
     const std::string problem = encodedProblem(text);
     if (!problem.empty())
     {
       fail("line " + std::to_string(this->line()) + ": " + section + ": name " + problem);
     }
-    return text;
   }
 
   /// Skips @p tuples tuples of @p components values of @p type after a
@@ -562,11 +569,7 @@ void fieldArrays(Walker& w, const std::string& section)
     const long long tuples = w.count("the number of tuples");
     const std::string type = w.word("the data type");
     const std::string array = section + " array \"" + shadelab::printableText(name) + "\"";
-    const std::string problem = encodedProblem(name);
-    if (!problem.empty())
-    {
-      fail("line " + std::to_string(w.line()) + ": " + array + ": name " + problem);
-    }
+    w.checkName(name, array);
     w.values(tuples, components, type, array);
   }
 }
