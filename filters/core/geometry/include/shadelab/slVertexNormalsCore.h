@@ -276,7 +276,7 @@ bool scatter(
 
 /// Chunks of a mesh in order hold at least this many polygons, unless that
 /// leaves fewer than 2 per thread. On two threads, updates in a loop took
-/// 0.41 ms instead of 0.42-0.52 at 0.1M triangles (4 chunks instead of 16)
+/// 0.41 ms instead of 0.44-0.53 at 0.1M triangles (4 chunks instead of 16)
 /// and 2.36-2.40 ms instead of 2.41-2.73 at 0.5M (7 instead of 16).
 constexpr int64_t kMinChunkPolygons = 65536;
 
