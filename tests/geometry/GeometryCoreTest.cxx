@@ -602,6 +602,67 @@ TEST(GeometryCore, FourWideFillReadsWhatFillReads)
   expectFourWideFillAsFill<int64_t>();
 }
 
+/// Scatters @p polys (float points @p xyz) into @p sums with one chunk that
+/// owns every point, asking ahead or not; what scatter() returns.
+bool scatterAngles(const Polygons<int64_t>& polys, const std::vector<float>& xyz, bool lookahead, std::vector<float>& sums)
+{
+  const int64_t numPoints = static_cast<int64_t>(xyz.size() / 3);
+  sums.assign(xyz.size(), 0.0f);
+  const int64_t bounds[2] = { 0, numPoints };
+  std::vector<std::vector<slnormals::detail::Kept<float>>> kept(1);
+  slnormals::detail::ChunkSink<float> sink{ sums.data(), 0, numPoints, bounds, 1, kept.data() };
+  return slnormals::detail::scatter<Weighting::Angle>(
+    polys, polys.connectivity, xyz.data(), numPoints, 0, polys.numPolygons, lookahead, sink);
+}
+
+TEST(GeometryCore, AskingAheadChangesNoSumAndNoCheck)
+{
+  // Three blocks of triangles with random ids (a mesh in random order): the
+  // second block asks for the third, which ends where the connectivity
+  // array does (AddressSanitizer sees a read past it). Asking ahead only
+  // hints, so the sums are the same bits; and a bad id in the third block,
+  // hinted while the second is filled, is still reported and never read.
+  const int64_t numPoints = 300;
+  const int capacity = slnormals::TriangleBlock<float>::Capacity;
+  std::vector<float> xyz(static_cast<size_t>(3 * numPoints));
+  uint32_t state = 4242;
+  const auto next = [&state]() {
+    state = state * 1664525u + 1013904223u;
+    return state >> 8;
+  };
+  for (float& v : xyz)
+  {
+    v = static_cast<float>(next() % 2001) / 1000.0f - 1.0f;
+  }
+  std::vector<int64_t> offsets{ 0 }, connectivity;
+  for (int f = 0; f < 3 * capacity; ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      connectivity.push_back(static_cast<int64_t>(next() % numPoints));
+    }
+    offsets.push_back(static_cast<int64_t>(connectivity.size()));
+  }
+  Polygons<int64_t> p;
+  p.offsets = offsets.data();
+  p.connectivity = connectivity.data();
+  p.numPolygons = 3 * capacity;
+  std::vector<float> plain, ahead;
+  ASSERT_TRUE(scatterAngles(p, xyz, false, plain));
+  ASSERT_TRUE(scatterAngles(p, xyz, true, ahead));
+  EXPECT_EQ(std::memcmp(plain.data(), ahead.data(), plain.size() * sizeof(float)), 0);
+  EXPECT_GT(std::count(plain.begin(), plain.end(), 0.0f), 0) << "some points unused";
+  EXPECT_LT(std::count(plain.begin(), plain.end(), 0.0f), static_cast<long>(plain.size()) / 4);
+  for (const int64_t bad : { int64_t(-1), numPoints, std::numeric_limits<int64_t>::max() / 2,
+         std::numeric_limits<int64_t>::min() })
+  {
+    SCOPED_TRACE(bad);
+    connectivity[static_cast<size_t>(3 * (2 * capacity + 5) + 1)] = bad;
+    EXPECT_FALSE(scatterAngles(p, xyz, false, plain));
+    EXPECT_FALSE(scatterAngles(p, xyz, true, ahead));
+  }
+}
+
 TEST(GeometryCore, ABlockNamingTheLastPointIsReadOnePointAtATime)
 {
   // A strip of 128 triangles over 130 float points, numbered backwards so

@@ -29,6 +29,7 @@
  * normals with float points; see docs/normals.md).
  */
 
+#include "shadelab/slCompilerHints.h"
 #include "shadelab/slVectorClones.h"
 #include "slCornerWeights.h"
 
@@ -41,6 +42,42 @@
 
 namespace slnormals
 {
+
+/// The points and sums a block's triangles will need, asked for ahead (the
+/// next block's, while a block is filled). In a large mesh in random order
+/// each point a triangle reads and each sum it adds to is a cache miss; asked
+/// for one block ahead, the misses overlap with a block's work instead of
+/// stalling it. Null ids: nothing is asked for.
+template <typename T, typename Id, typename AccId>
+struct Lookahead
+{
+  const Id* pointIds = nullptr;  ///< the triangles' point ids (3 a triangle)
+  const AccId* sumIds = nullptr; ///< their sums' entries, same layout
+  const T* points = nullptr;     ///< 3 coordinates a point
+  const T* sums = nullptr;       ///< 3 components an entry
+
+  /// Asks for the points and sums of triangle @p i. The addresses are
+  /// computed in unsigned arithmetic and only hinted, never read, so that
+  /// ids not yet checked can do no harm. Always inlined: GCC takes a
+  /// function whose only effect is a hint for one without effects and
+  /// deletes its calls.
+  SL_ALWAYS_INLINE void triangle(int i) const
+  {
+#if defined(__GNUC__)
+    for (int k = 0; k < 3; ++k)
+    {
+      const uint64_t point = static_cast<uint64_t>(this->pointIds[3 * i + k]);
+      const uint64_t sum = static_cast<uint64_t>(this->sumIds[3 * i + k]);
+      __builtin_prefetch(reinterpret_cast<const void*>(
+        reinterpret_cast<uintptr_t>(this->points) + point * (3 * sizeof(T))), 0);
+      __builtin_prefetch(reinterpret_cast<const void*>(
+        reinterpret_cast<uintptr_t>(this->sums) + sum * (3 * sizeof(T))), 1);
+    }
+#else
+    (void)i;
+#endif
+  }
+};
 
 /// Up to Capacity consecutive triangles: their points in, the contribution
 /// of each corner to its vertex out: corner k of triangle i adds (cornerX,
@@ -82,15 +119,20 @@ struct TriangleBlock
 
   /// Fills the empty block with the @p n (at most Capacity) triangles that
   /// start at connectivity position @p o, one after the other: add() without
-  /// the per-triangle bookkeeping.
-  template <typename Id>
-  void fill(const Id* connectivity, const T* xyz, int64_t o, int n)
+  /// the per-triangle bookkeeping. Triangle i also asks @p ahead for its
+  /// triangle i (which must hold n triangles when its ids are set).
+  template <typename Id, typename AccId = Id>
+  void fill(const Id* connectivity, const T* xyz, int64_t o, int n, const Lookahead<T, Id, AccId>& ahead = {})
   {
     this->start = o;
     this->count = n;
     const Id* ids = connectivity + o;
     for (int i = 0; i < n; ++i, ids += 3)
     {
+      if (ahead.pointIds)
+      {
+        ahead.triangle(i);
+      }
       for (int k = 0; k < 3; ++k)
       {
         const T* p = xyz + 3 * static_cast<int64_t>(ids[k]);
@@ -105,8 +147,9 @@ struct TriangleBlock
   /// a point's coordinates and the next point's x come in one 16-byte load,
   /// and four triangles' corners are transposed into the block at once
   /// (SSE2; fill() elsewhere). @p n must be a multiple of 4.
-  template <typename Id>
-  void fillBelowLastPoint(const Id* connectivity, const T* xyz, int64_t o, int n)
+  template <typename Id, typename AccId = Id>
+  void fillBelowLastPoint(
+    const Id* connectivity, const T* xyz, int64_t o, int n, const Lookahead<T, Id, AccId>& ahead = {})
   {
 #if defined(__SSE2__)
     if constexpr (std::is_same<T, float>::value)
@@ -116,6 +159,13 @@ struct TriangleBlock
       const Id* ids = connectivity + o;
       for (int i = 0; i < n; i += 4, ids += 12)
       {
+        if (ahead.pointIds)
+        {
+          for (int a = i; a < i + 4; ++a)
+          {
+            ahead.triangle(a);
+          }
+        }
         for (int k = 0; k < 3; ++k)
         {
           __m128 p0 = _mm_loadu_ps(xyz + 3 * static_cast<int64_t>(ids[k]));
@@ -131,7 +181,7 @@ struct TriangleBlock
       return;
     }
 #endif
-    this->fill(connectivity, xyz, o, n);
+    this->fill(connectivity, xyz, o, n, ahead);
   }
 
   /// Newell vectors and the weights of @p W (see slCornerWeights.h) of the
