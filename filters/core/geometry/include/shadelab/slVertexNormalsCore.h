@@ -150,18 +150,21 @@ struct ChunkSink
 /// whether offset f + i is offset f + 3 i for every i up to n. The
 /// differences are or-ed together, without a compare or a branch, so that
 /// the loop vectorises (SSE2 subtracts 64-bit lanes; it has no 64-bit
-/// compare). Unsigned arithmetic wraps, and offsets differ by less than its
-/// range, so a zero difference is an equal offset.
+/// compare). The expected offset grows by 3 a step rather than being
+/// computed as 3 i: SSE2 has no 64-bit multiply either, and GCC 12 left the
+/// loop with the multiply scalar. Unsigned arithmetic wraps, and offsets
+/// differ by less than its range, so a zero difference is an equal offset.
 template <typename Id>
 bool consecutiveTriangles(const Polygons<Id>& polys, int64_t f, int64_t n)
 {
   using U = std::make_unsigned_t<Id>;
   const Id* o = polys.offsets + f;
-  const U first = static_cast<U>(o[0]);
+  U expected = static_cast<U>(o[0]);
   U differences = 0;
   for (int64_t i = 1; i <= n; ++i)
   {
-    differences |= static_cast<U>(static_cast<U>(o[i]) - first - static_cast<U>(3 * i));
+    expected += 3;
+    differences |= static_cast<U>(static_cast<U>(o[i]) - expected);
   }
   return differences == 0;
 }
