@@ -291,7 +291,7 @@ bool scatter(const Polygons<Id>& polys, const AccId* accIds, const T* xyz, int64
 /// once the points and sums (24 bytes an entry with float points) outgrow
 /// the 1 MiB L2 cache many times over: on the bench's shuffled torus, two
 /// threads, asking took 0.69-0.75 of the time at 2M triangles (1M points)
-/// and 0.81-0.87 at 8M, about the same (0.96-1.00) at 0.5M, and 1.09-1.10
+/// and 0.81-0.87 at 8M, 0.83-1.03 at 0.5M (250,000 points), and 1.09-1.10
 /// at 0.1M (50,000 points, in cache, where asking only costs instructions).
 /// Asking for each triangle's points and sums 16 triangles ahead, triangle
 /// by triangle instead of block by block, was 7-30 % slower than not asking.
