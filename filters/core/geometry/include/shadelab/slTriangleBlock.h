@@ -58,24 +58,16 @@ struct Lookahead
 
   /// Asks for the points and sums of triangle @p i. The addresses are
   /// computed in unsigned arithmetic and only hinted, never read, so that
-  /// ids not yet checked can do no harm. Always inlined: GCC takes a
-  /// function whose only effect is a hint for one without effects and
-  /// deletes its calls.
+  /// ids not yet checked can do no harm. Always inlined (see slPrefetch()).
   SL_ALWAYS_INLINE void triangle(int i) const
   {
-#if defined(__GNUC__)
     for (int k = 0; k < 3; ++k)
     {
       const uint64_t point = static_cast<uint64_t>(this->pointIds[3 * i + k]);
       const uint64_t sum = static_cast<uint64_t>(this->sumIds[3 * i + k]);
-      __builtin_prefetch(reinterpret_cast<const void*>(
-        reinterpret_cast<uintptr_t>(this->points) + point * (3 * sizeof(T))), 0);
-      __builtin_prefetch(reinterpret_cast<const void*>(
-        reinterpret_cast<uintptr_t>(this->sums) + sum * (3 * sizeof(T))), 1);
+      slPrefetch(reinterpret_cast<const void*>(reinterpret_cast<uintptr_t>(this->points) + point * (3 * sizeof(T))));
+      slPrefetch<true>(reinterpret_cast<const void*>(reinterpret_cast<uintptr_t>(this->sums) + sum * (3 * sizeof(T))));
     }
-#else
-    (void)i;
-#endif
   }
 };
 

@@ -61,24 +61,6 @@ namespace slnormals
 
 namespace detail
 {
-/// A hint that @p address will be read (or written) soon; nothing else.
-inline void prefetch(const void* address, bool forWriting = false)
-{
-#if defined(__GNUC__)
-  if (forWriting)
-  {
-    __builtin_prefetch(address, 1);
-  }
-  else
-  {
-    __builtin_prefetch(address, 0);
-  }
-#else
-  (void)address;
-  (void)forWriting;
-#endif
-}
-
 /// A contribution a chunk keeps for the owner of its entry: the entry as an
 /// offset from the start of the owner's range (ranges hold fewer than 2^31
 /// entries).
@@ -221,11 +203,15 @@ bool scatter(const Polygons<Id>& polys, const AccId* accIds, const T* xyz, int64
       {
         return false;
       }
+      // The next block's ids are read only where the connectivity holds them.
       Lookahead<T, Id, AccId> ahead;
-      const int64_t next = f + capacity < e ? polys.begin(f + capacity) : 0;
-      if (lookahead && f + 2 * capacity <= e && next + 3 * capacity <= polys.begin(polys.numPolygons))
+      if (lookahead && f + 2 * capacity <= e)
       {
-        ahead = { polys.connectivity + next, accIds + next, xyz, sink.acc };
+        const int64_t next = polys.begin(f + capacity);
+        if (next + 3 * capacity <= polys.begin(polys.numPolygons))
+        {
+          ahead = { polys.connectivity + next, accIds + next, xyz, sink.acc };
+        }
       }
       if (belowLast)
       {
@@ -619,7 +605,7 @@ template <typename T, typename Id, typename AccId>
         {
           if (i + 16 < list.size())
           {
-            detail::prefetch(base + 3 * static_cast<int64_t>(list[i + 16].offset), true);
+            slPrefetch<true>(base + 3 * static_cast<int64_t>(list[i + 16].offset));
           }
           const detail::Kept<T>& c = list[i];
           T* a = base + 3 * static_cast<int64_t>(c.offset);
