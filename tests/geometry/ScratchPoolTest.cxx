@@ -8,7 +8,9 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <algorithm>
 #include <cstring>
+#include <random>
 #include <thread>
 #include <vector>
 
@@ -87,6 +89,67 @@ TEST(ScratchPool, LargeBlocksLieOnHugePageBoundariesAndAreNotKept)
   EXPECT_EQ(pool.keptBytes(), b.capacity);
 }
 
+TEST(ScratchPool, ALargeBlockIsKeptOnlyWhenItsReleaseSaysSo)
+{
+  ScratchPool pool;
+  const ScratchPool::Block a = pool.acquire(size_t(3) << 20);
+  pool.release(a);
+  EXPECT_EQ(pool.keptBytes(), 0u);
+  const ScratchPool::Block b = pool.acquire(size_t(3) << 20);
+  std::memset(b.data, 5, b.capacity);
+  pool.release(b, ScratchPool::LargeBlocks::Keep);
+  EXPECT_EQ(pool.keptBytes(), b.capacity);
+  const ScratchPool::Block c = pool.acquire(size_t(3) << 20);
+  EXPECT_EQ(c.data, b.data);
+  EXPECT_EQ(pool.keptBytes(), 0u);
+  pool.release(c, ScratchPool::LargeBlocks::Keep);
+  pool.trim();
+  EXPECT_EQ(pool.keptBytes(), 0u);
+}
+
+TEST(ScratchPool, AKeptLargeBlockStaysWithinTheLimit)
+{
+  ScratchPool pool(size_t(4) << 20);
+  const ScratchPool::Block a = pool.acquire(size_t(5) << 20);
+  pool.release(a, ScratchPool::LargeBlocks::Keep); // 6 MiB: over the limit, freed
+  EXPECT_EQ(pool.keptBytes(), 0u);
+}
+
+TEST(ScratchPool, ALargeRequestNoKeptBlockFitsFreesTheKeptLargeBlocksFirst)
+{
+  ScratchPool pool;
+  const ScratchPool::Block small = pool.acquire(100000), large = pool.acquire(size_t(3) << 20);
+  pool.release(small);
+  pool.release(large, ScratchPool::LargeBlocks::Keep);
+  EXPECT_EQ(pool.keptBytes(), small.capacity + large.capacity);
+  // A request that the large block cannot serve frees it rather than add
+  // new memory beside it; the small block stays.
+  const ScratchPool::Block larger = pool.acquire(size_t(5) << 20);
+  EXPECT_EQ(pool.keptBytes(), small.capacity);
+  pool.release(larger);
+  EXPECT_EQ(pool.keptBytes(), small.capacity);
+  const ScratchPool::Block again = pool.acquire(90000);
+  EXPECT_EQ(again.data, small.data);
+  pool.release(again);
+}
+
+TEST(ScratchPool, FreeingTheLargeBlocksKeepsTheSmallOnes)
+{
+  ScratchPool pool;
+  const ScratchPool::Block a = pool.acquire(size_t(3) << 20), b = pool.acquire(100000),
+                           c = pool.acquire(size_t(2) << 20), d = pool.acquire(300000);
+  pool.release(a, ScratchPool::LargeBlocks::Keep);
+  pool.release(b);
+  pool.release(c, ScratchPool::LargeBlocks::Keep);
+  pool.release(d);
+  EXPECT_EQ(pool.keptBytes(), a.capacity + b.capacity + c.capacity + d.capacity);
+  pool.freeLargeBlocks();
+  EXPECT_EQ(pool.keptBytes(), b.capacity + d.capacity);
+  const ScratchPool::Block e = pool.acquire(250000);
+  EXPECT_EQ(e.data, d.data);
+  pool.release(e);
+}
+
 TEST(ScratchPool, ThreadsShareAPool)
 {
   ScratchPool pool(size_t(8) << 20);
@@ -133,6 +196,13 @@ TEST(ScratchPool, ScratchArraysGiveTheirMemoryBackOnce)
   slnormals::ScratchArray<int> heap(slnormals::Parallel(), 10);
   heap[9] = 9;
   EXPECT_EQ(heap[9], 9);
+  const size_t large = size_t(3) << 20;
+  {
+    slnormals::ScratchArray<char> freed(par, large);
+    slnormals::ScratchArray<char> kept(par, large, slnormals::ScratchArray<char>::LargeBlocks::Keep);
+    slnormals::ScratchArray<char> moved(std::move(kept)); // the choice moves with the memory
+  }
+  EXPECT_EQ(pool.keptBytes(), (size_t(128) << 10) + (size_t(4) << 20)); // 3 MiB in 2 MiB pages
 }
 
 /// A 400 x 400 grid folded along its columns (creases of 45 and 90 degrees),
@@ -175,6 +245,25 @@ struct FoldedGrid
       }
     }
   }
+  /// Puts the polygons in random order (each keeps its corners' order).
+  void shuffle(unsigned seed)
+  {
+    const size_t n = offsets.size() - 1;
+    std::vector<size_t> order(n);
+    for (size_t f = 0; f < n; ++f)
+    {
+      order[f] = f;
+    }
+    std::shuffle(order.begin(), order.end(), std::mt19937(seed));
+    std::vector<int64_t> newOffsets{ 0 }, newConnectivity;
+    for (const size_t f : order)
+    {
+      newConnectivity.insert(newConnectivity.end(), connectivity.begin() + offsets[f], connectivity.begin() + offsets[f + 1]);
+      newOffsets.push_back(static_cast<int64_t>(newConnectivity.size()));
+    }
+    offsets.swap(newOffsets);
+    connectivity.swap(newConnectivity);
+  }
   slnormals::Polygons<int64_t> polygons()
   {
     return { offsets.data(), connectivity.data(), static_cast<int64_t>(offsets.size()) - 1 };
@@ -193,9 +282,13 @@ struct Outputs
   }
 };
 
-Outputs compute(const slnormals::PolygonNormalsSettings& s, ScratchPool* pool)
+Outputs compute(const slnormals::PolygonNormalsSettings& s, ScratchPool* pool, bool randomOrder = false)
 {
   FoldedGrid m;
+  if (randomOrder)
+  {
+    m.shuffle(7);
+  }
   slnormals::Parallel par;
   par.threads = 4; // chunks as for four threads, run one after the other
   par.scratch = pool;
@@ -238,6 +331,34 @@ TEST(ScratchPool, ComputationsOnReusedScratchGiveTheSameBits)
         EXPECT_TRUE(compute(s, &pool) == fresh) << "split " << split << " weld " << weld << " poison " << int(poison);
       }
     }
+  }
+}
+
+TEST(ScratchPool, RandomOrderSumsKeptForTheNextComputationGiveTheSameBits)
+{
+  // In random order, each of the 4 chunks sums into a copy of its own
+  // (3.8 MB of doubles each, the first being the accumulator): large
+  // blocks, which the pool keeps after a computation without splitting.
+  slnormals::PolygonNormalsSettings s;
+  s.split = false;
+  const Outputs fresh = compute(s, nullptr, true);
+  ScratchPool pool(size_t(256) << 20);
+  EXPECT_TRUE(compute(s, &pool, true) == fresh);
+  const size_t copyBytes = 3 * (401 * 401 + 1) * sizeof(double);
+  EXPECT_GE(pool.keptBytes(), 4 * copyBytes);
+  const size_t kept = pool.keptBytes();
+  for (const unsigned char poison : { 0xFF, 0x00, 0x7F })
+  {
+    pool.fillKept(poison);
+    EXPECT_TRUE(compute(s, &pool, true) == fresh) << "poison " << int(poison);
+    EXPECT_EQ(pool.keptBytes(), kept); // the same blocks, taken and given back
+  }
+  // The same mesh in order gives the same normals up to rounding (sums in another order).
+  const Outputs ordered = compute(s, nullptr);
+  ASSERT_EQ(ordered.normals.size(), fresh.normals.size());
+  for (size_t i = 0; i < fresh.normals.size(); ++i)
+  {
+    ASSERT_NEAR(fresh.normals[i], ordered.normals[i], 1e-6f) << i;
   }
 }
 } // namespace

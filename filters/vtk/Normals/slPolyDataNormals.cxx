@@ -157,6 +157,8 @@ int64_t computeInto(const slnormals::PolygonNormalsSettings& settings, bool cell
   bool hasOwned = strips->GetNumberOfCells() > 0;
   if (hasOwned)
   {
+    // Large scratch kept from the last update would sit beside the copy.
+    scratch->freeLargeBlocks();
     owned = slCopyPolygons<Id>(input->GetPolys(), strips);
   }
 
@@ -219,6 +221,8 @@ int64_t computeInto(const slnormals::PolygonNormalsSettings& settings, bool cell
   passCellData(input, output, r.polygons.numPolygons);
   if (cellNormals)
   {
+    // Scratch the pool kept (the vertex sums) would sit beside the new array.
+    scratch->freeLargeBlocks();
     const vtkIdType first = input->GetNumberOfVerts() + input->GetNumberOfLines();
     auto cellNormals = slMakeNormalsArray(first + r.polygons.numPolygons, std::move(lastCells));
     lastCells = cellNormals;

@@ -2,6 +2,7 @@
 
 #include "shadelab/HugePages.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <new>
@@ -69,10 +70,15 @@ ScratchPool::Block ScratchPool::acquire(size_t bytes)
       return b;
     }
   }
+  if (bytes >= kHugePageBytes)
+  {
+    // None fits: the kept large blocks would only sit beside the new one.
+    this->freeLargeBlocks();
+  }
   return allocate(bytes);
 }
 
-void ScratchPool::release(Block block) noexcept
+void ScratchPool::release(Block block, LargeBlocks large) noexcept
 {
   if (!block.data)
   {
@@ -80,9 +86,8 @@ void ScratchPool::release(Block block) noexcept
   }
   {
     std::lock_guard<std::mutex> lock(this->Mutex);
-    // Huge-page blocks are not kept: allocated again they cost a fault per
-    // 2 MiB, and kept they would add to the peak memory of a large run.
-    if (block.capacity < kHugePageBytes && this->KeptTotal + block.capacity <= this->Limit)
+    const bool keepable = block.capacity < kHugePageBytes || large == LargeBlocks::Keep;
+    if (keepable && this->KeptTotal + block.capacity <= this->Limit)
     {
       try
       {
@@ -97,6 +102,19 @@ void ScratchPool::release(Block block) noexcept
     }
   }
   std::free(block.data);
+}
+
+void ScratchPool::freeLargeBlocks() noexcept
+{
+  std::lock_guard<std::mutex> lock(this->Mutex);
+  const auto large = std::partition(
+    this->Kept.begin(), this->Kept.end(), [](const Block& b) { return b.capacity < kHugePageBytes; });
+  for (auto b = large; b != this->Kept.end(); ++b)
+  {
+    this->KeptTotal -= b->capacity;
+    std::free(b->data);
+  }
+  this->Kept.erase(large, this->Kept.end());
 }
 
 void ScratchPool::trim() noexcept

@@ -13,10 +13,17 @@
  * keeps the blocks it handed out, up to a byte limit, and hands them out
  * again.
  *
- * Only blocks under kHugePageBytes are kept; larger ones come from
- * allocateHugePages() (HugePages.h) and are freed on release. Allocated
- * again, they cost one fault per 2 MiB instead of 512, and kept, they would
- * sit idle beside the output of a large run and raise its peak memory.
+ * Blocks of kHugePageBytes or more come from allocateHugePages()
+ * (HugePages.h). They are kept only when released with LargeBlocks::Keep,
+ * which a computation asks for where the block outlives every allocation
+ * of its run: kept elsewhere, a block would sit idle beside memory the run
+ * allocates later (its output, say) and raise its peak memory. A large
+ * block freed does not cost just a fault per 2 MiB when allocated again: on
+ * a virtual machine that returns freed guest memory to its host (free page
+ * reporting, as on ShadeLab's CI machines), a huge page freed a second or
+ * more earlier is mapped again at 0.4-1.4 GB/s instead of about 20. So that
+ * kept large blocks never sit beside new ones either, a large request that
+ * no kept block fits frees the kept large blocks before it allocates.
  * Small blocks are rounded up to 64 KiB, so that a run on a slightly
  * different mesh still finds them.
  *
@@ -50,13 +57,26 @@ public:
     size_t capacity = 0;
   };
 
+  /// Whether release() may keep a block of kHugePageBytes or more.
+  enum class LargeBlocks
+  {
+    Free, ///< freed: the block's run may still allocate after releasing it
+    Keep  ///< kept: released after the last allocation of its run
+  };
+
   /// At least @p bytes, 64-byte aligned, uninitialised: the smallest kept
-  /// block that fits, else a new block. Throws std::bad_alloc.
+  /// block that fits, else a new block (for @p bytes of kHugePageBytes or
+  /// more, after freeing the kept large blocks). Throws std::bad_alloc.
   Block acquire(size_t bytes);
 
-  /// Takes back a block from acquire(): kept if it is under kHugePageBytes
-  /// and the kept blocks stay within the limit, else freed.
-  void release(Block block) noexcept;
+  /// Takes back a block from acquire(): kept if it is under
+  /// kHugePageBytes, or @p large says Keep, and the kept blocks stay within
+  /// the limit; else freed.
+  void release(Block block, LargeBlocks large = LargeBlocks::Free) noexcept;
+
+  /// Frees the kept blocks of kHugePageBytes or more: called before a run
+  /// allocates memory that such a block, kept idle, would sit beside.
+  void freeLargeBlocks() noexcept;
 
   /// Frees every kept block.
   void trim() noexcept;

@@ -498,7 +498,9 @@ int64_t splitVertexNormals(const Polygons<Id>& topology, const Id* original, con
     });
     stored.reset();
     vc.reset();
-    if (!accumulateNormals(topology, outConnectivity, xyz, numPoints, total, weighting, out.normals, parallel))
+    // The split's output is allocated after this: large sums are not kept.
+    if (!accumulateNormals(topology, outConnectivity, xyz, numPoints, total, weighting, out.normals, parallel,
+          shadelab::ScratchPool::LargeBlocks::Free))
     {
       // The corner table was built from these ids, so they were checked.
       throw shadelab::Error("a polygon names a point outside the mesh");

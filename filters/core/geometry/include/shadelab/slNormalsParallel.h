@@ -54,11 +54,17 @@ class ScratchArray
     "scratch values are neither constructed nor destroyed");
 
 public:
+  using LargeBlocks = shadelab::ScratchPool::LargeBlocks;
+
   ScratchArray() = default;
-  /// @p n values from @p parallel's pool. Throws std::bad_alloc.
-  ScratchArray(const Parallel& parallel, size_t n)
+  /// @p n values from @p parallel's pool. @p large: whether the pool may
+  /// keep the memory when it is large (ScratchPool::release()); Keep only
+  /// for an array that outlives every allocation of its computation.
+  /// Throws std::bad_alloc.
+  ScratchArray(const Parallel& parallel, size_t n, LargeBlocks large = LargeBlocks::Free)
     : Pool(parallel.scratch)
     , Size(n)
+    , Large(large)
   {
     if (n && this->Pool)
     {
@@ -84,7 +90,7 @@ public:
   {
     if (this->Pool)
     {
-      this->Pool->release(this->Memory);
+      this->Pool->release(this->Memory, this->Large);
     }
     else
     {
@@ -107,11 +113,13 @@ private:
     std::swap(this->Pool, other.Pool);
     std::swap(this->Memory, other.Memory);
     std::swap(this->Size, other.Size);
+    std::swap(this->Large, other.Large);
   }
 
   shadelab::ScratchPool* Pool = nullptr;
   shadelab::ScratchPool::Block Memory;
   size_t Size = 0;
+  LargeBlocks Large = LargeBlocks::Free;
 };
 
 /// Polygons as VTK 9 stores them: polygon f has the point ids

@@ -492,10 +492,14 @@ inline T* inPlaceAccumulator(float* out)
 /// (the connectivity's layout, values in [0, numEntries), checked by the
 /// caller). Entries no non-degenerate corner reaches get (0, 0, 0). False,
 /// and @p out incomplete, when a polygon names a point outside
-/// [0, numPoints): the points it names are not read.
+/// [0, numPoints): the points it names are not read. @p sumsKept: whether
+/// the pool may keep the scratch sums, large ones too, for the next
+/// computation (ScratchPool::LargeBlocks::Keep): only when the caller
+/// allocates nothing after this call.
 template <typename T, typename Id, typename AccId>
 [[nodiscard]] bool accumulateNormals(const Polygons<Id>& polys, const AccId* accIds, const T* xyz, int64_t numPoints,
-  int64_t numEntries, Weighting weighting, float* out, const Parallel& parallel)
+  int64_t numEntries, Weighting weighting, float* out, const Parallel& parallel,
+  shadelab::ScratchPool::LargeBlocks sumsKept)
 {
   const detail::Partition part = detail::partition(polys, accIds, numEntries, parallel.threads);
   const int64_t chunks = part.chunks;
@@ -504,7 +508,7 @@ template <typename T, typename Id, typename AccId>
   T* acc = detail::inPlaceAccumulator<T>(out);
   if (!acc)
   {
-    scratch = ScratchArray<T>(parallel, static_cast<size_t>(3 * numEntries));
+    scratch = ScratchArray<T>(parallel, static_cast<size_t>(3 * numEntries), sumsKept);
     acc = scratch.data();
   }
   // Random order: half or more of a chunk's corners would be kept for other
@@ -527,7 +531,7 @@ template <typename T, typename Id, typename AccId>
         hi = numEntries;
         if (k > 0)
         {
-          copy[static_cast<size_t>(k)] = ScratchArray<T>(parallel, static_cast<size_t>(3 * numEntries));
+          copy[static_cast<size_t>(k)] = ScratchArray<T>(parallel, static_cast<size_t>(3 * numEntries), sumsKept);
           sums = copy[static_cast<size_t>(k)].data();
         }
       }
@@ -624,12 +628,17 @@ template <typename T, typename Id, typename AccId>
 /// Unit vertex normals of points [0, numPoints) into @p out (3 floats each).
 /// Points used by no non-degenerate polygon get (0, 0, 0). False, and
 /// @p out incomplete, when a polygon names a point outside [0, numPoints)
-/// (not read).
+/// (not read). The pool may keep the scratch sums, however large, for the
+/// next computation: a caller that allocates afterwards first frees them
+/// (ScratchPool::freeLargeBlocks()), so that they never sit idle beside new
+/// memory. In a mesh in random order they are a copy of the sums per extra
+/// thread, freshly mapped on every update otherwise.
 template <typename T, typename Id>
 [[nodiscard]] bool computeVertexNormals(const Polygons<Id>& polys, const T* xyz, int64_t numPoints,
   Weighting weighting, float* out, const Parallel& parallel)
 {
-  return accumulateNormals(polys, polys.connectivity, xyz, numPoints, numPoints, weighting, out, parallel);
+  return accumulateNormals(polys, polys.connectivity, xyz, numPoints, numPoints, weighting, out, parallel,
+    shadelab::ScratchPool::LargeBlocks::Keep);
 }
 
 } // namespace slnormals
