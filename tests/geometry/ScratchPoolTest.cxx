@@ -7,9 +7,10 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdint>
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
+#include <numeric>
 #include <random>
 #include <thread>
 #include <vector>
@@ -250,10 +251,7 @@ struct FoldedGrid
   {
     const size_t n = offsets.size() - 1;
     std::vector<size_t> order(n);
-    for (size_t f = 0; f < n; ++f)
-    {
-      order[f] = f;
-    }
+    std::iota(order.begin(), order.end(), size_t(0));
     std::shuffle(order.begin(), order.end(), std::mt19937(seed));
     std::vector<int64_t> newOffsets{ 0 }, newConnectivity;
     for (const size_t f : order)

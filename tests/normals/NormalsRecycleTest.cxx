@@ -6,17 +6,24 @@
 #include "slPolyDataNormals.h"
 
 #include <vtkCallbackCommand.h>
+#include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
 #include <vtkFloatArray.h>
+#include <vtkIdList.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkSMPTools.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <random>
+#include <sstream>
+#include <string>
 #include <vector>
 
 namespace
@@ -49,6 +56,38 @@ std::vector<float> valuesOf(vtkDataArray* a)
 {
   auto* f = vtkFloatArray::SafeDownCast(a);
   return f ? std::vector<float>(f->GetPointer(0), f->GetPointer(0) + f->GetNumberOfValues()) : std::vector<float>();
+}
+
+/// @p mesh with its triangles in random order.
+vtkSmartPointer<vtkPolyData> withTrianglesShuffled(vtkPolyData* mesh)
+{
+  std::vector<vtkIdType> order(static_cast<size_t>(mesh->GetNumberOfPolys()));
+  for (size_t i = 0; i < order.size(); ++i)
+  {
+    order[i] = static_cast<vtkIdType>(i);
+  }
+  std::shuffle(order.begin(), order.end(), std::mt19937(5));
+  vtkNew<vtkCellArray> cells;
+  vtkNew<vtkIdList> ids;
+  for (const vtkIdType c : order)
+  {
+    mesh->GetCellPoints(c, ids);
+    cells->InsertNextCell(ids);
+  }
+  auto shuffled = vtkSmartPointer<vtkPolyData>::New();
+  shuffled->SetPoints(mesh->GetPoints());
+  shuffled->SetPolys(cells);
+  return shuffled;
+}
+
+/// The scratch memory @p f keeps, as its PrintSelf() says.
+size_t keptScratchBytes(slPolyDataNormals* f)
+{
+  std::ostringstream text;
+  f->Print(text);
+  const std::string key = "Scratch memory kept: ";
+  const size_t at = text.str().find(key);
+  return at == std::string::npos ? 0 : std::stoull(text.str().substr(at + key.size()));
 }
 
 void configure(slPolyDataNormals* f)
@@ -153,4 +192,27 @@ TEST(NormalsRecycle, ArraysOfAnotherSizeAreReplaced)
   vtkDataArray* normals = f->GetOutput()->GetPointData()->GetNormals();
   ASSERT_EQ(normals->GetNumberOfTuples(), smaller->GetNumberOfPoints());
   EXPECT_EQ(valuesOf(normals), valuesOf(fresh->GetOutput()->GetPointData()->GetNormals()));
+}
+
+TEST(NormalsRecycle, RandomOrderSumsAreKeptUnlessAnArrayIsAllocatedAfterThem)
+{
+  // On two threads a mesh in random order sums into a second copy of the
+  // sums, 12 bytes a point: 2.5 MB here, a large block of the pool.
+  vtkSMPTools::Initialize(2);
+  auto mesh = withTrianglesShuffled(normalstest::irregularTorus(1.0, 0.3, 700, 300, 4));
+  const size_t copyBytes = 12 * static_cast<size_t>(mesh->GetNumberOfPoints());
+  vtkNew<slPolyDataNormals> f;
+  f->SplittingOff();
+  f->ConsistencyOff();
+  f->SetInputData(mesh);
+  f->Update();
+  const size_t withSums = keptScratchBytes(f);
+  EXPECT_GE(withSums, copyBytes);
+  // Cell normals are allocated after the sums: the sums are freed first.
+  f->ComputeCellNormalsOn();
+  f->Update();
+  EXPECT_LE(keptScratchBytes(f) + copyBytes, withSums);
+  f->ComputeCellNormalsOff();
+  f->Update();
+  EXPECT_EQ(keptScratchBytes(f), withSums);
 }

@@ -151,14 +151,19 @@ int64_t computeInto(const slnormals::PolygonNormalsSettings& settings, bool cell
 {
   slnormals::Parallel par = slSMPParallel();
   par.scratch = scratch;
+  if (settings.split || !settings.pointNormals)
+  {
+    // Large blocks the pool kept serve only the next vertex sums without
+    // splitting (computeVertexNormals()); kept through another kind of
+    // update they would sit idle beside its memory.
+    scratch->freeLargeBlocks();
+  }
   const int64_t numPoints = input->GetNumberOfPoints();
   vtkCellArray* strips = input->GetStrips();
   slOwnedPolygons<Id> owned;
   bool hasOwned = strips->GetNumberOfCells() > 0;
   if (hasOwned)
   {
-    // Large scratch kept from the last update would sit beside the copy.
-    scratch->freeLargeBlocks();
     owned = slCopyPolygons<Id>(input->GetPolys(), strips);
   }
 
