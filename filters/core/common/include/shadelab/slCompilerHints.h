@@ -18,7 +18,13 @@
  *   without effects and deletes calls to it that it has not inlined, so
  *   slPrefetch() and any function made only of calls to it are always
  *   inlined.
+ * - slPrefetchBytes(address, bytes): slPrefetch() for every cache line of
+ *   [address, address + bytes); the address is only hinted, so it may lie
+ *   anywhere.
  */
+
+#include <cstddef>
+#include <cstdint>
 
 #if defined(__GNUC__) || defined(__clang__)
 #define SL_ALWAYS_INLINE inline __attribute__((always_inline))
@@ -38,6 +44,16 @@ SL_ALWAYS_INLINE void slPrefetch(const void* address)
 #else
   (void)address;
 #endif
+}
+
+SL_ALWAYS_INLINE void slPrefetchBytes(const void* address, size_t bytes)
+{
+  constexpr uintptr_t line = 64;
+  const uintptr_t end = reinterpret_cast<uintptr_t>(address) + bytes;
+  for (uintptr_t a = reinterpret_cast<uintptr_t>(address) & ~(line - 1); a < end; a += line)
+  {
+    slPrefetch(reinterpret_cast<const void*>(a));
+  }
 }
 
 #endif
