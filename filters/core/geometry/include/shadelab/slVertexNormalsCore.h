@@ -506,6 +506,16 @@ void normaliseSums(const T* sums, float* out, int64_t lo, int64_t hi)
   }
 }
 
+/// @p sums[i] += @p more[i] for i in [0, n).
+template <typename T>
+void addInto(T* __restrict sums, const T* __restrict more, int64_t n)
+{
+  for (int64_t i = 0; i < n; ++i)
+  {
+    sums[i] += more[i];
+  }
+}
+
 /// Where the sums go: the float output itself when the points are float,
 /// else a scratch array of T (null: allocate one).
 template <typename T>
@@ -619,17 +629,15 @@ template <typename T, typename Id, typename AccId>
   }
   if (copies)
   {
+    // Piece by piece, so that a piece's sums are still in cache for the
+    // second loop: the copies added into acc in chunk order (flat loops,
+    // which vectorise), then normalised as without copies.
     parallel.forRange(0, numEntries, 16384, [&](int64_t b, int64_t e) {
-      for (int64_t v = b; v < e; ++v)
+      for (int64_t k = 1; k < chunks; ++k)
       {
-        glm::vec<3, T> s(acc[3 * v], acc[3 * v + 1], acc[3 * v + 2]);
-        for (int64_t k = 1; k < chunks; ++k)
-        {
-          const T* c = copy[static_cast<size_t>(k)].data() + 3 * v;
-          s += glm::vec<3, T>(c[0], c[1], c[2]);
-        }
-        detail::storeUnit(s.x, s.y, s.z, out + 3 * v);
+        detail::addInto(acc + 3 * b, copy[static_cast<size_t>(k)].data() + 3 * b, 3 * (e - b));
       }
+      detail::normaliseSums(acc, out, b, e);
     });
     return true;
   }
