@@ -3,6 +3,7 @@
 // shuffled (and each triangle's corners rotated) gets the ordered mesh's
 // normals, permuted, for every weighting, thread count and point type.
 #include "NormalsTestMeshes.h"
+#include "ShuffledMesh.h"
 
 #include "slPolyDataNormals.h"
 #include "shadelab/slVertexNormalsCore.h"
@@ -26,73 +27,11 @@
 
 namespace
 {
-/// Points (xyz) and triangles (3 ids each) as plain arrays.
-template <typename T>
-struct Mesh
-{
-  std::vector<T> xyz;
-  std::vector<int64_t> offsets, connectivity;
-
-  slnormals::Polygons<int64_t> view()
-  {
-    slnormals::Polygons<int64_t> p;
-    p.offsets = this->offsets.data();
-    p.connectivity = this->connectivity.data();
-    p.numPolygons = static_cast<int64_t>(this->offsets.size()) - 1;
-    return p;
-  }
-  int64_t numPoints() const { return static_cast<int64_t>(this->xyz.size() / 3); }
-};
-
-template <typename T>
-Mesh<T> meshOf(vtkPolyData* poly)
-{
-  Mesh<T> m;
-  for (vtkIdType i = 0; i < poly->GetNumberOfPoints(); ++i)
-  {
-    const double* p = poly->GetPoint(i);
-    m.xyz.insert(m.xyz.end(), { static_cast<T>(p[0]), static_cast<T>(p[1]), static_cast<T>(p[2]) });
-  }
-  m.offsets.push_back(0);
-  vtkIdType n;
-  const vtkIdType* ids;
-  vtkCellArray* polys = poly->GetPolys();
-  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
-  {
-    m.connectivity.insert(m.connectivity.end(), ids, ids + n);
-    m.offsets.push_back(static_cast<int64_t>(m.connectivity.size()));
-  }
-  return m;
-}
-
-/// @p m with its points renumbered by @p newId, its triangles in random
-/// order and, with @p rotateCorners, each one's corners rotated by a random
-/// step (same orientation).
-template <typename T>
-Mesh<T> shuffled(const Mesh<T>& m, const std::vector<int64_t>& newId, std::mt19937& rng, bool rotateCorners = true)
-{
-  Mesh<T> s;
-  s.xyz.resize(m.xyz.size());
-  for (int64_t v = 0; v < m.numPoints(); ++v)
-  {
-    std::copy_n(&m.xyz[static_cast<size_t>(3 * v)], 3, &s.xyz[static_cast<size_t>(3 * newId[static_cast<size_t>(v)])]);
-  }
-  std::vector<int64_t> order(m.offsets.size() - 1);
-  std::iota(order.begin(), order.end(), 0);
-  std::shuffle(order.begin(), order.end(), rng);
-  std::uniform_int_distribution<int> step(0, 2);
-  s.offsets.push_back(0);
-  for (int64_t f : order)
-  {
-    const int r = rotateCorners ? step(rng) : 0;
-    for (int k = 0; k < 3; ++k)
-    {
-      s.connectivity.push_back(newId[static_cast<size_t>(m.connectivity[static_cast<size_t>(3 * f + (k + r) % 3)])]);
-    }
-    s.offsets.push_back(static_cast<int64_t>(s.connectivity.size()));
-  }
-  return s;
-}
+using normalstest::Mesh;
+using normalstest::meshOf;
+using normalstest::polyDataOf;
+using normalstest::randomNumbering;
+using normalstest::shuffled;
 
 /// A serial stand-in for a thread pool of @p threads threads that runs the
 /// sub-ranges last first, so that nothing may rely on the order chunks run in.
@@ -121,9 +60,7 @@ void expectSameNormalsInAnyOrder(vtkPolyData* poly, std::vector<int> threadCount
   Mesh<T> ordered = meshOf<T>(poly);
   ASSERT_GT(ordered.offsets.size(), 65537u) << "too small for the chunked path";
   std::mt19937 rng(7);
-  std::vector<int64_t> newId(static_cast<size_t>(ordered.numPoints()));
-  std::iota(newId.begin(), newId.end(), 0);
-  std::shuffle(newId.begin(), newId.end(), rng);
+  const std::vector<int64_t> newId = randomNumbering(ordered.numPoints(), rng);
   Mesh<T> mixed = shuffled(ordered, newId, rng, rotateCorners);
   const int64_t n = ordered.numPoints();
   for (int w = 0; w < 4; ++w)
@@ -188,28 +125,8 @@ TEST(NormalsOrder, FilterGivesShuffledMeshesThePermutedNormals)
   vtkSmartPointer<vtkPolyData> poly = normalstest::irregularTorus(1.0, 0.35, 300, 150, 11);
   Mesh<float> ordered = meshOf<float>(poly);
   std::mt19937 rng(13);
-  std::vector<int64_t> newId(static_cast<size_t>(ordered.numPoints()));
-  std::iota(newId.begin(), newId.end(), 0);
-  std::shuffle(newId.begin(), newId.end(), rng);
+  const std::vector<int64_t> newId = randomNumbering(ordered.numPoints(), rng);
   const Mesh<float> mixed = shuffled(ordered, newId, rng);
-  auto toPolyData = [](const Mesh<float>& m) {
-    vtkNew<vtkFloatArray> xyz;
-    xyz->SetNumberOfComponents(3);
-    xyz->SetNumberOfTuples(m.numPoints());
-    std::copy(m.xyz.begin(), m.xyz.end(), xyz->GetPointer(0));
-    vtkNew<vtkPoints> points;
-    points->SetData(xyz);
-    vtkNew<vtkCellArray> cells;
-    for (size_t f = 0; f + 1 < m.offsets.size(); ++f)
-    {
-      const vtkIdType ids[3] = { m.connectivity[3 * f], m.connectivity[3 * f + 1], m.connectivity[3 * f + 2] };
-      cells->InsertNextCell(3, ids);
-    }
-    auto out = vtkSmartPointer<vtkPolyData>::New();
-    out->SetPoints(points);
-    out->SetPolys(cells);
-    return out;
-  };
   auto normalsOf = [](vtkPolyData* in) {
     vtkNew<slPolyDataNormals> f;
     f->SetInputData(in);
@@ -217,7 +134,7 @@ TEST(NormalsOrder, FilterGivesShuffledMeshesThePermutedNormals)
     f->Update();
     return vtkSmartPointer<vtkDataArray>(f->GetOutput()->GetPointData()->GetNormals());
   };
-  vtkSmartPointer<vtkDataArray> a = normalsOf(toPolyData(ordered)), b = normalsOf(toPolyData(mixed));
+  vtkSmartPointer<vtkDataArray> a = normalsOf(polyDataOf(ordered)), b = normalsOf(polyDataOf(mixed));
   ASSERT_TRUE(a && b);
   double worst = 0;
   for (int64_t v = 0; v < ordered.numPoints(); ++v)

@@ -2,16 +2,15 @@
 // nothing else holds them: the refilled values must be those a new filter
 // computes, and arrays that something else holds must never be written.
 #include "NormalsTestMeshes.h"
+#include "ShuffledMesh.h"
 
 #include "slPolyDataNormals.h"
 
 #include <vtkCallbackCommand.h>
-#include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
 #include <vtkFloatArray.h>
-#include <vtkIdList.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -20,8 +19,6 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -56,28 +53,6 @@ std::vector<float> valuesOf(vtkDataArray* a)
 {
   auto* f = vtkFloatArray::SafeDownCast(a);
   return f ? std::vector<float>(f->GetPointer(0), f->GetPointer(0) + f->GetNumberOfValues()) : std::vector<float>();
-}
-
-/// @p mesh with its triangles in random order.
-vtkSmartPointer<vtkPolyData> withTrianglesShuffled(vtkPolyData* mesh)
-{
-  std::vector<vtkIdType> order(static_cast<size_t>(mesh->GetNumberOfPolys()));
-  for (size_t i = 0; i < order.size(); ++i)
-  {
-    order[i] = static_cast<vtkIdType>(i);
-  }
-  std::shuffle(order.begin(), order.end(), std::mt19937(5));
-  vtkNew<vtkCellArray> cells;
-  vtkNew<vtkIdList> ids;
-  for (const vtkIdType c : order)
-  {
-    mesh->GetCellPoints(c, ids);
-    cells->InsertNextCell(ids);
-  }
-  auto shuffled = vtkSmartPointer<vtkPolyData>::New();
-  shuffled->SetPoints(mesh->GetPoints());
-  shuffled->SetPolys(cells);
-  return shuffled;
 }
 
 /// The scratch memory @p f keeps, as its PrintSelf() says.
@@ -199,7 +174,7 @@ TEST(NormalsRecycle, RandomOrderSumsAreKeptUnlessAnArrayIsAllocatedAfterThem)
   // On two threads a mesh in random order sums into a second copy of the
   // sums, 12 bytes a point: 2.5 MB here, a large block of the pool.
   vtkSMPTools::Initialize(2);
-  auto mesh = withTrianglesShuffled(normalstest::irregularTorus(1.0, 0.3, 700, 300, 4));
+  auto mesh = normalstest::inRandomOrder(normalstest::irregularTorus(1.0, 0.3, 700, 300, 4), 5);
   const size_t copyBytes = 12 * static_cast<size_t>(mesh->GetNumberOfPoints());
   vtkNew<slPolyDataNormals> f;
   f->SplittingOff();
