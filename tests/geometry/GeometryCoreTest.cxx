@@ -500,33 +500,33 @@ TEST(GeometryCore, IdsWithinAgreesWithTwoSignedComparesOnEveryBound)
   }
 }
 
-TEST(GeometryCore, AVX2AndBaselineLoopsGiveTheSameBits)
+TEST(GeometryCore, VectorAndBaselineLoopsGiveTheSameBits)
 {
   if (!slHasAVX2())
   {
     GTEST_SKIP() << "this CPU runs the baseline loops only";
   }
-  // Triangles of every shape, degenerate ones included; no FMA in either
-  // version, so the weights and unit vectors must agree to the bit.
-  slnormals::TriangleBlock<float> baseline, avx2;
+  // Triangles of every shape, degenerate ones included; no version fuses
+  // multiply-adds (AVX-512 brings FMA, its clone turns fusing off), so the
+  // weights and unit vectors must agree to the bit.
+  slnormals::TriangleBlock<float> triangles{};
   uint32_t state = 12345;
   const auto next = [&state]() {
     state = state * 1664525u + 1013904223u;
     return static_cast<float>(state >> 8) / 16777216.0f - 0.5f;
   };
-  baseline.count = slnormals::TriangleBlock<float>::Capacity;
-  for (int i = 0; i < baseline.count; ++i)
+  for (int i = 0; i < triangles.Capacity; ++i)
   {
     for (int k = 0; k < 3; ++k)
     {
-      baseline.x[k][i] = next();
-      baseline.y[k][i] = i % 7 == 0 ? 0.0f : next();
-      baseline.z[k][i] = i % 11 == 0 ? baseline.z[0][i] : next();
+      triangles.x[k][i] = next();
+      triangles.y[k][i] = i % 7 == 0 ? 0.0f : next();
+      triangles.z[k][i] = i % 11 == 0 ? triangles.z[0][i] : next();
     }
   }
-  baseline.x[1][5] = baseline.x[0][5]; // a triangle with two equal points
-  baseline.y[1][5] = baseline.y[0][5];
-  baseline.z[1][5] = baseline.z[0][5];
+  triangles.x[1][5] = triangles.x[0][5]; // a triangle with two equal points
+  triangles.y[1][5] = triangles.y[0][5];
+  triangles.z[1][5] = triangles.z[0][5];
   const auto same = [](const float* a, const float* b, int n) {
     for (int i = 0; i < n; ++i)
     {
@@ -537,13 +537,27 @@ TEST(GeometryCore, AVX2AndBaselineLoopsGiveTheSameBits)
     }
     return ::testing::AssertionSuccess();
   };
-  avx2 = baseline;
-  baseline.weighLoop<Weighting::Angle>();
-  avx2.weighAVX2<Weighting::Angle>();
-  EXPECT_TRUE(same(&baseline.cornerX[0][0], &avx2.cornerX[0][0], 3 * baseline.Capacity));
-  EXPECT_TRUE(same(&baseline.cornerY[0][0], &avx2.cornerY[0][0], 3 * baseline.Capacity));
-  EXPECT_TRUE(same(&baseline.cornerZ[0][0], &avx2.cornerZ[0][0], 3 * baseline.Capacity));
-  EXPECT_EQ(baseline.cornerX[0][5], 0.0f); // the degenerate triangle weighs 0
+  const auto sameWeights = [&same](const slnormals::TriangleBlock<float>& a, const slnormals::TriangleBlock<float>& b) {
+    const int n = 3 * a.Capacity;
+    return same(&a.cornerX[0][0], &b.cornerX[0][0], n) && same(&a.cornerY[0][0], &b.cornerY[0][0], n) &&
+      same(&a.cornerZ[0][0], &b.cornerZ[0][0], n);
+  };
+  // A full block, and one whose last triangles go through the loops' scalar ends.
+  for (const int count : { triangles.Capacity, triangles.Capacity - 3 })
+  {
+    SCOPED_TRACE(count);
+    triangles.count = count;
+    slnormals::TriangleBlock<float> baseline = triangles, avx2 = triangles, avx512 = triangles;
+    baseline.weighLoop<Weighting::Angle>();
+    avx2.weighAVX2<Weighting::Angle>();
+    EXPECT_TRUE(sameWeights(baseline, avx2));
+    EXPECT_EQ(baseline.cornerX[0][5], 0.0f); // the degenerate triangle weighs 0
+    if (slHasAVX512())
+    {
+      avx512.weighAVX512<Weighting::Angle>();
+      EXPECT_TRUE(sameWeights(baseline, avx512));
+    }
+  }
 
   // Normalising, in place and apart, a zero sum among them.
   std::vector<float> sums(3 * 37);

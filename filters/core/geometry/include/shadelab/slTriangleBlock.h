@@ -17,8 +17,9 @@
  * The loop vectorises only with -fno-math-errno and -fno-trapping-math, which
  * the module's CMakeLists.txt sets: they let sqrt and division run on vectors
  * and change no result. On x86-64, weigh()'s loop is also compiled for AVX2
- * and picked at run time on CPUs that have it (slVectorClones.h). FMA is not
- * enabled, so both versions round alike and give the same weights.
+ * and AVX-512 and picked at run time on CPUs that have them
+ * (slVectorClones.h). No version fuses multiply-adds, so all round alike
+ * and give the same weights.
  *
  * A block holds consecutive triangles of the connectivity only (triangle i
  * starts at start + 3 i), so it stores no per-triangle position. That is also
@@ -178,11 +179,15 @@ struct TriangleBlock
 
   /// Newell vectors and the weights of @p W (see slCornerWeights.h) of the
   /// count triangles; a degenerate triangle (zero Newell vector) weighs 0.
-  /// In the loop's AVX2 version where the CPU has it.
+  /// In the loop's AVX-512 or AVX2 version where the CPU has it.
   template <Weighting W>
   void weigh()
   {
-    if (slHasAVX2())
+    if (slHasAVX512())
+    {
+      this->weighAVX512<W>();
+    }
+    else if (slHasAVX2())
     {
       this->weighAVX2<W>();
     }
@@ -195,6 +200,13 @@ struct TriangleBlock
   /// weigh() in its AVX2 version (the CPU must have AVX2).
   template <Weighting W>
   SL_TARGET_AVX2 void weighAVX2()
+  {
+    this->weighLoop<W>();
+  }
+
+  /// weigh() in its AVX-512 version (the CPU must have it, see slHasAVX512()).
+  template <Weighting W>
+  SL_TARGET_AVX512 void weighAVX512()
   {
     this->weighLoop<W>();
   }
