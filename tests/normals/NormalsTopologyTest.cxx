@@ -68,6 +68,7 @@ struct Result
   vtkSmartPointer<vtkPolyData> out;
   int errors = 0, warnings = 0;
   vtkIdType flipped = 0;
+  std::string lastError;
 };
 
 Result run(vtkPolyData* input, const std::function<void(slPolyDataNormals*)>& configure = {})
@@ -81,9 +82,13 @@ Result run(vtkPolyData* input, const std::function<void(slPolyDataNormals*)>& co
   Result r;
   vtkNew<vtkCallbackCommand> count;
   count->SetClientData(&r);
-  count->SetCallback([](vtkObject*, unsigned long event, void* data, void*) {
+  count->SetCallback([](vtkObject*, unsigned long event, void* data, void* message) {
     auto* run = static_cast<Result*>(data);
     (event == vtkCommand::ErrorEvent ? run->errors : run->warnings)++;
+    if (event == vtkCommand::ErrorEvent && message)
+    {
+      run->lastError = static_cast<const char*>(message);
+    }
   });
   f->AddObserver(vtkCommand::ErrorEvent, count);
   f->AddObserver(vtkCommand::WarningEvent, count);
@@ -361,6 +366,24 @@ TEST(Normals, NaNCoordinatesGiveAnErrorAndAnEmptyOutput)
     EXPECT_EQ(r.out->GetNumberOfPoints(), 0);
     EXPECT_EQ(r.out->GetNumberOfCells(), 0);
   }
+}
+
+TEST(Normals, TheFirstOfManyNonFinitePointsIsNamed)
+{
+  // Points are checked in pieces of 16,384, in parallel: bad points in two
+  // later pieces, the later piece's first in a row, must name the first.
+  std::vector<std::array<double, 3>> points(70000);
+  for (size_t i = 0; i < points.size(); ++i)
+  {
+    points[i] = { static_cast<double>(i % 97), static_cast<double>(i / 97), 0.0 };
+  }
+  points[65000][2] = HUGE_VAL;
+  points[40000][1] = std::nan("");
+  auto m = mesh(points, { { 0, 1, 97 } });
+  Result r = run(m);
+  EXPECT_EQ(r.errors, 1);
+  EXPECT_NE(r.lastError.find("point 40000 has a NaN or infinite coordinate"), std::string::npos) << r.lastError;
+  EXPECT_EQ(r.out->GetNumberOfPoints(), 0);
 }
 
 TEST(Normals, WeldingHidesTheTeapotsUnweldedSeams)

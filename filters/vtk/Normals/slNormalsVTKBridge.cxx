@@ -34,7 +34,10 @@ vtkIdType slFirstNonFinitePoint(vtkPoints* points, double* largestSide)
   // Each thread's bounding box, from the same pass (the points are read once).
   vtkSMPThreadLocal<std::array<double, 6>> boxes(
     std::array<double, 6>{ { HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL } });
-  slSMPFor(0, n, 65536, [&](vtkIdType b, vtkIdType e) {
+  // Pieces of 16,384 points: a mesh of 0.1M triangles (50,000 points) is
+  // then checked on every thread, not by one while the others wait (its
+  // updates on two threads took 1.6-2 % less time than with 65,536).
+  slSMPFor(0, n, 16384, [&](vtkIdType b, vtkIdType e) {
     std::array<double, 6>& box = boxes.Local();
     if (f)
     {
