@@ -574,6 +574,14 @@ TEST(GeometryCore, VectorAndBaselineLoopsGiveTheSameBits)
   EXPECT_TRUE(same(inPlace.data(), inPlaceAVX2.data(), 3 * 37));
   EXPECT_TRUE(same(apart.data(), apartAVX2.data(), 3 * 37));
   EXPECT_TRUE(same(inPlace.data(), apart.data(), 3 * 37));
+  if (slHasAVX512())
+  {
+    std::vector<float> inPlaceAVX512 = sums, apartAVX512(sums.size());
+    slnormals::detail::normaliseSumsAVX512(inPlaceAVX512.data(), inPlaceAVX512.data(), 0, 37);
+    slnormals::detail::normaliseSumsAVX512(sums.data(), apartAVX512.data(), 0, 37);
+    EXPECT_TRUE(same(inPlace.data(), inPlaceAVX512.data(), 3 * 37));
+    EXPECT_TRUE(same(apart.data(), apartAVX512.data(), 3 * 37));
+  }
   EXPECT_EQ(apart[31], 0.0f);
   EXPECT_NEAR(std::sqrt(apart[0] * apart[0] + apart[1] * apart[1] + apart[2] * apart[2]), 1.0f, 1e-6f);
 }
