@@ -25,8 +25,8 @@
  * GCC and Clang on x86-64 only; elsewhere slHasAVX2() is false and the
  * baseline version is all there is.
  *
- * SL_TARGET_AVX512 and slHasAVX512() do the same for AVX-512 (F, VL, BW, DQ:
- * x86-64-v4), for arithmetic loops that gain from sixteen floats a vector
+ * SL_TARGET_AVX512 and slHasAVX512() do the same for AVX-512 (F, VL, BW and
+ * DQ), for arithmetic loops that gain from sixteen floats a vector
  * and mask registers instead of blends (the corner weights: about 1.8 times
  * as fast as AVX2 on a Zen 5). AVX-512 brings FMA, and GCC fuses a * b + c
  * by default where FMA exists, which would round differently from the other
