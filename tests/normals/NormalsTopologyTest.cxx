@@ -370,8 +370,9 @@ TEST(Normals, NaNCoordinatesGiveAnErrorAndAnEmptyOutput)
 
 TEST(Normals, TheFirstOfManyNonFinitePointsIsNamed)
 {
-  // Points are checked in pieces of 16,384, in parallel: bad points in two
-  // later pieces, the later piece's first in a row, must name the first.
+  // Float points are checked in parallel pieces (of 16,384 points): one bad
+  // point in each of two pieces, and the error must name the first of them
+  // whichever piece is checked first.
   std::vector<std::array<double, 3>> points(70000);
   for (size_t i = 0; i < points.size(); ++i)
   {

@@ -18,6 +18,8 @@
  * bool pick(...) { return slHasAVX2() ? loopAVX2(...) : loop(...); }
  * @endcode
  *
+ * A loop with an AVX-512 clone too (below) asks slHasAVX512() first.
+ *
  * Not GCC's target_clones: it makes an IFUNC symbol that GCC 12 exports
  * whatever its visibility or linkage, so a template instantiated in two of
  * ShadeLab's libraries was bound across them, and the dynamic linker printed
