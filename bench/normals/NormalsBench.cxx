@@ -75,7 +75,7 @@ struct Result
   std::string label;
   double triangles = 0;
   double nsPerTriangle = 0;     ///< slPolyDataNormals angle, no split, all threads
-  double bareNsPerTriangle = 0; ///< the bare loop, all threads: the least a pass can cost
+  double bareNsPerTriangle = 0; ///< the bare loop, all threads (memory traffic alone)
   Spread overTMPN, overPDN, splitOverPDN, speedUp;
   Spread overBare;    ///< slPolyDataNormals' time over the bare loop's, all threads
   Spread bareSpeedUp; ///< the bare loop from one thread to all
