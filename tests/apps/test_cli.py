@@ -66,6 +66,21 @@ class RenderTest(unittest.TestCase):
         self.assertEqual(png_size(self.out), (800, 600))
         self.assertEqual(os.listdir(self.folder.name), ["out.png"], "no temporary file left")
 
+    def test_vtk_lighting_notes_what_it_cannot_show(self):
+        # One note per item the scene holds and VTK's lighting lacks, from the
+        # material (emission, model, frequency) and from the lights alike.
+        scene = self.write("s.json", json.dumps({
+            "shading": {"model": "blinn-phong-normalized", "frequency": "gouraud"},
+            "material": {"emission": [0.2, 0.1, 0.0]},
+            "lights": [{"type": "spot", "position": [0, 0, 5], "direction": [0, 0, -1], "cutoff": 30, "edge": 5}]}))
+        r = run("render", SPOT, "--scene", scene, "--size", "64x48", "--vtk-lighting", "-o", self.out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        notes = [line for line in r.stderr.splitlines() if line.startswith("shadelab render: note: ")]
+        for item in ("material.emission", "shading.frequency", "shading.model", "lights[0].edge"):
+            self.assertEqual(sum(item in line for line in notes), 1, (item, r.stderr))
+        quiet = run("render", SPOT, "--scene", scene, "--size", "64x48", "--vtk-lighting", "-q", "-o", self.out)
+        self.assertEqual((quiet.returncode, quiet.stderr), (0, ""))
+
     def test_builtin_scene_size_and_formats(self):
         for mesh in ("fandisk.obj", "teapot.obj"):
             r = run("render", os.path.join(DATA, "meshes", mesh), "--size", "64x48", "-o", self.out)

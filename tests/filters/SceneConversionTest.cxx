@@ -101,6 +101,41 @@ TEST(SceneConversion, MaterialToVTK)
   EXPECT_NE(notes.find("VTK 9.1 lights Gouraud per fragment"), std::string::npos);
 }
 
+TEST(SceneConversion, NotesOfLightsAndMaterialAddUpInEitherOrder)
+{
+  // A scene applied to an actor and to a renderer lists what both lose,
+  // whichever comes first; applying one part again replaces only its notes.
+  for (const bool actorFirst : { true, false })
+  {
+    auto scene = loadScene();
+    vtkNew<vtkRenderer> renderer;
+    vtkNew<vtkActor> actor;
+    renderer->AddActor(actor);
+    if (actorFirst)
+    {
+      EXPECT_TRUE(scene->ApplyToActor(actor));
+      scene->ApplyToRenderer(renderer);
+    }
+    else
+    {
+      scene->ApplyToRenderer(renderer);
+      EXPECT_TRUE(scene->ApplyToActor(actor));
+    }
+    std::string notes = scene->GetConversionNotes();
+    EXPECT_NE(notes.find("material.emission"), std::string::npos) << actorFirst;
+    EXPECT_NE(notes.find("lights[2].edge"), std::string::npos) << actorFirst;
+
+    scene->ApplyToRenderer(renderer);
+    EXPECT_EQ(std::string(scene->GetConversionNotes()), notes) << "applied twice, listed once";
+    vtkNew<vtkProperty> plain;
+    plain->SetInterpolationToPhong();
+    scene->SetMaterialFromVTK(plain);
+    notes = scene->GetConversionNotes();
+    EXPECT_EQ(notes.find("material."), std::string::npos) << notes;
+    EXPECT_NE(notes.find("lights[2].edge"), std::string::npos) << notes;
+  }
+}
+
 TEST(SceneConversion, LambertTurnsVTKSpecularOff)
 {
   auto scene = loadScene();

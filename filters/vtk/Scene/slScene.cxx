@@ -119,9 +119,10 @@ std::string slScene::GetBrdfFilePath() const
   return besideSceneFile(this->Data->brdf.file, this->Data->sourceFile);
 }
 
-void slScene::Note(const std::string& item)
+const char* slScene::GetConversionNotes()
 {
-  this->ConversionNotes += item + "\n";
+  this->ConversionNotes = this->LightNotes + this->MaterialNotes;
+  return this->ConversionNotes.c_str();
 }
 
 void slScene::PrintSelf(ostream& os, vtkIndent indent)

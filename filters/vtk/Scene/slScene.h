@@ -73,9 +73,11 @@ public:
   /// The scene as JSON text.
   std::string ToJSON() const;
 
-  /// What the last conversion to or from VTK could not carry, one item per
-  /// line ("" when nothing was lost).
-  const char* GetConversionNotes() const { return this->ConversionNotes.c_str(); }
+  /// What the last conversion of the lights and the last of the material,
+  /// to or from VTK, could not carry, one item per line ("" when nothing was
+  /// lost). A scene applied to a renderer and an actor (in either order)
+  /// lists what both lose.
+  const char* GetConversionNotes();
 
   ///@{
   /// Lighting model by its scene-file name ("lambert", "phong", "blinn-phong",
@@ -150,10 +152,14 @@ private:
   slScene(const slScene&) = delete;
   void operator=(const slScene&) = delete;
 
-  void Note(const std::string& item);
-
   std::unique_ptr<shadelab::Scene> Data;
-  std::string ConversionNotes;
+  // Notes of the last conversion of each part: ApplyLights() and
+  // SetLightsFromVTK() replace LightNotes, ApplyMaterial() and
+  // SetMaterialFromVTK() MaterialNotes, so that one part's conversion does
+  // not drop what the other's found.
+  std::string LightNotes;
+  std::string MaterialNotes;
+  std::string ConversionNotes; ///< both, as GetConversionNotes() returns them
 };
 
 #endif

@@ -30,6 +30,12 @@ glm::vec3 toVec3(const double v[3])
   return glm::vec3(static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]));
 }
 
+/// Adds @p item, one line, to @p notes.
+void note(std::string& notes, const std::string& item)
+{
+  notes += item + "\n";
+}
+
 std::string lightPath(size_t index)
 {
   return "lights[" + std::to_string(index) + "]";
@@ -38,6 +44,7 @@ std::string lightPath(size_t index)
 
 void slScene::ApplyLights(vtkRenderer* renderer)
 {
+  this->LightNotes.clear();
   renderer->RemoveAllLights();
   renderer->AutomaticLightCreationOff();
   const std::vector<shadelab::SceneLight>& lights = this->Data->lights;
@@ -67,7 +74,7 @@ void slScene::ApplyLights(vtkRenderer* renderer)
     light->SetIntensity(l.intensity);
     if (l.ambient != glm::vec3(0.0f))
     {
-      this->Note(lightPath(i) + ".ambient: VTK's shaders ignore a light's ambient colour");
+      note(this->LightNotes, lightPath(i) + ".ambient: VTK's shaders ignore a light's ambient colour");
     }
 
     if (!shadelab::lightTakes(l.type, shadelab::kLightPosition))
@@ -88,7 +95,7 @@ void slScene::ApplyLights(vtkRenderer* renderer)
       light->SetAttenuationValues(l.attenuation.x, l.attenuation.y, l.attenuation.z);
       if (l.attenuation.x < 1.0f)
       {
-        this->Note(lightPath(i) +
+        note(this->LightNotes, lightPath(i) +
           ".attenuation: VTK has no min(1, .) clamp, so it brightens where c1 + c2 d + c3 d^2 < 1");
       }
       if (shadelab::lightTakes(l.type, shadelab::kLightCutoff))
@@ -97,7 +104,7 @@ void slScene::ApplyLights(vtkRenderer* renderer)
         light->SetExponent(l.exponent);
         if (l.edgeDegrees > 0.0f)
         {
-          this->Note(lightPath(i) + ".edge: VTK's spot cone has a hard edge");
+          note(this->LightNotes, lightPath(i) + ".edge: VTK's spot cone has a hard edge");
         }
       }
       else
@@ -111,6 +118,7 @@ void slScene::ApplyLights(vtkRenderer* renderer)
 
 void slScene::ApplyMaterial(vtkProperty* property)
 {
+  this->MaterialNotes.clear();
   const shadelab::SceneMaterial& m = this->Data->material;
   double c[3];
   // VTK adds the property's ambient colour as if under one white ambient
@@ -137,7 +145,7 @@ void slScene::ApplyMaterial(vtkProperty* property)
   property->SetSpecularPower(m.shininess);
   if (m.emission != glm::vec3(0.0f))
   {
-    this->Note("material.emission: VTK's built-in lighting has no emission term");
+    note(this->MaterialNotes, "material.emission: VTK's built-in lighting has no emission term");
   }
   switch (this->Data->frequency)
   {
@@ -146,7 +154,7 @@ void slScene::ApplyMaterial(vtkProperty* property)
       break;
     case shadelab::ShadingFrequency::Gouraud:
       property->SetInterpolationToGouraud();
-      this->Note("shading.frequency: VTK 9.1 lights Gouraud per fragment, like Phong");
+      note(this->MaterialNotes, "shading.frequency: VTK 9.1 lights Gouraud per fragment, like Phong");
       break;
     case shadelab::ShadingFrequency::Phong:
       property->SetInterpolationToPhong();
@@ -155,7 +163,7 @@ void slScene::ApplyMaterial(vtkProperty* property)
   const shadelab::ShadingModel model = this->Data->model;
   if (model != shadelab::ShadingModel::Lambert && model != shadelab::ShadingModel::Phong)
   {
-    this->Note(std::string("shading.model: VTK's built-in lighting does not do \"") +
+    note(this->MaterialNotes, std::string("shading.model: VTK's built-in lighting does not do \"") +
       shadelab::modelName(model) + "\"; it shows " + (lambert ? "lambert" : "phong"));
   }
 }
@@ -189,7 +197,6 @@ void slScene::ApplyToRenderer(vtkRenderer* renderer)
 
 void slScene::ApplyToRenderer(vtkRenderer* renderer, const double bounds[6], int width, int height)
 {
-  this->ConversionNotes.clear();
   double c[3];
   toDouble(this->Data->background, c);
   renderer->SetBackground(c);
@@ -244,7 +251,7 @@ bool slScene::ApplyToActor(vtkActor* actor)
 
 void slScene::SetLightsFromVTK(vtkLightCollection* lights)
 {
-  this->ConversionNotes.clear();
+  this->LightNotes.clear();
   std::vector<shadelab::SceneLight>& out = this->Data->lights;
   out.clear();
   // VTK lights every actor with its property's ambient colour as if under a
@@ -261,7 +268,7 @@ void slScene::SetLightsFromVTK(vtkLightCollection* lights)
   {
     if (!light->GetSwitch())
     {
-      this->Note("VTK light " + std::to_string(index) + " is switched off; skipped");
+      note(this->LightNotes, "VTK light " + std::to_string(index) + " is switched off; skipped");
       continue;
     }
     shadelab::SceneLight l;
@@ -287,7 +294,7 @@ void slScene::SetLightsFromVTK(vtkLightCollection* lights)
     if (!(glm::length(l.direction) > 0.0f))
     {
       l.direction = glm::vec3(0.0f, 0.0f, -1.0f);
-      this->Note("VTK light " + std::to_string(index) + ": position equals focal point; pointing along -z");
+      note(this->LightNotes, "VTK light " + std::to_string(index) + ": position equals focal point; pointing along -z");
     }
     if (!light->GetPositional())
     {
@@ -317,6 +324,7 @@ void slScene::SetLightsFromVTK(vtkLightCollection* lights)
 
 void slScene::SetMaterialFromVTK(vtkProperty* property)
 {
+  this->MaterialNotes.clear(); // reading a vtkProperty notes nothing
   shadelab::SceneMaterial& m = this->Data->material;
   m.ambient = static_cast<float>(property->GetAmbient()) * toVec3(property->GetAmbientColor());
   m.diffuse = static_cast<float>(property->GetDiffuse()) * toVec3(property->GetDiffuseColor());
