@@ -10,7 +10,6 @@
 #include <QApplication>
 #include <QCheckBox>
 #include <QCommandLineParser>
-#include <QFileInfo>
 #include <QSurfaceFormat>
 #include <QTimer>
 #include <QVTKOpenGLNativeWidget.h>
@@ -21,17 +20,13 @@
 namespace
 {
 /// The folder of the bundled example (Spot and the default scene), opened
-/// when no mesh is given: share/shadelab beside an installed program, else
-/// the source tree's data/ for a program run from its build tree.
+/// when no mesh is given: share/shadelab beside the program, installed or in
+/// the build tree (which lays it out as installed). Never a path of the
+/// machine that built it: an installed viewer must not reach into a source
+/// tree.
 QString bundledDataDir()
 {
-  const QString installed =
-    QCoreApplication::applicationDirPath() + "/" + SHADELAB_INSTALLED_DATA_FROM_BIN;
-  if (QFileInfo::exists(installed + "/scenes/default.json"))
-  {
-    return installed;
-  }
-  return SHADELAB_DATA_DIR;
+  return QCoreApplication::applicationDirPath() + "/" + SHADELAB_INSTALLED_DATA_FROM_BIN;
 }
 
 int fail(const QString& message)

@@ -96,6 +96,37 @@ class InstalledTree(unittest.TestCase):
         self.assertEqual(built, installed)
         self.assertGreater(len(installed), 0)
 
+    def test_library_search_paths_stay_in_the_prefix(self):
+        # Every RUNPATH entry of every installed ELF file, $ORIGIN resolved,
+        # lies inside the prefix: a path reaching outside it (to / or /tmp)
+        # would load whatever library someone put there.
+        checked = 0
+        for folder, _, files in os.walk(self.prefix):
+            for name in files:
+                path = os.path.join(folder, name)
+                with open(path, "rb") as f:
+                    if f.read(4) != b"\x7fELF":
+                        continue
+                dynamic = run(["readelf", "-d", path]).stdout
+                for line in dynamic.splitlines():
+                    if "(RUNPATH)" in line or "(RPATH)" in line:
+                        for entry in line.split("[", 1)[1].rstrip("]").split(":"):
+                            if not entry:
+                                continue
+                            resolved = os.path.realpath(entry.replace("$ORIGIN", folder))
+                            self.assertTrue(resolved.startswith(os.path.realpath(self.prefix) + os.sep)
+                                            or resolved == os.path.realpath(self.prefix),
+                                            f"{path}: RUNPATH {entry} resolves to {resolved}")
+                checked += 1
+        self.assertGreater(checked, 5)
+
+    def test_viewer_names_no_source_tree(self):
+        viewer = os.path.join(self.prefix, "bin", "shadelab-viewer")
+        if not os.path.exists(viewer):
+            self.skipTest("built without the viewer")
+        with open(viewer, "rb") as f:
+            self.assertNotIn(os.path.join(SOURCE, "data").encode(), f.read())
+
     def test_installed_programs_run(self):
         shadelab = os.path.join(self.prefix, "bin", "shadelab")
         share = os.path.join(self.prefix, "share", "shadelab")
