@@ -1,6 +1,7 @@
 #include "slSceneRenderer.h"
 
 #include "slCoreBoundary.h"
+#include "slFiniteParameters.h"
 #include "slLightingPass.h"
 #include "slOffscreen.h"
 #include "slRenderNormals.h"
@@ -129,6 +130,12 @@ bool slSceneRenderer::Prepare()
   if (!this->Scene || !this->Mesh)
   {
     vtkErrorMacro(<< "slSceneRenderer needs a scene and a mesh");
+    return false;
+  }
+  const std::string badParameter = slNonFiniteParameter({ { "FeatureAngle", this->FeatureAngle } });
+  if (!badParameter.empty())
+  {
+    vtkErrorMacro(<< badParameter);
     return false;
   }
   const shadelab::Scene& scene = this->Scene->GetScene();

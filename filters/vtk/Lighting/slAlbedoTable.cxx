@@ -3,6 +3,7 @@
 #include "shadelab/Albedo.h"
 #include "shadelab/Scene.h"
 
+#include "slFiniteParameters.h"
 #include "slMaterialNumbers.h"
 
 #include <vtkDoubleArray.h>
@@ -28,6 +29,12 @@ int slAlbedoTable::RequestData(vtkInformation*, vtkInformationVector**, vtkInfor
 {
   using namespace shadelab;
   vtkTable* output = vtkTable::GetData(outputVector);
+  const std::string badParameter = slNonFiniteParameter({ { "MaximumIncidence", this->MaximumIncidence } });
+  if (!badParameter.empty())
+  {
+    vtkErrorMacro(<< badParameter);
+    return 0;
+  }
   const int angles = this->NumberOfAngles;
   vtkNew<vtkDoubleArray> degrees;
   degrees->SetName("IncidenceDegrees");

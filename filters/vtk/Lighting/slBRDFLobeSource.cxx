@@ -2,6 +2,7 @@
 
 #include "shadelab/Scene.h"
 
+#include "slFiniteParameters.h"
 #include "slLobeGeometry.h"
 #include "slMaterialNumbers.h"
 #include "slModelCheck.h"
@@ -116,6 +117,13 @@ vtkFloatArray* slBRDFLobeSource::GetSliceBRDFValues()
 int slBRDFLobeSource::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   using namespace shadelab;
+  const std::string badParameter = slNonFiniteParameter({ { "DiffuseWeight", this->DiffuseWeight },
+    { "SpecularWeight", this->SpecularWeight }, { "IncidenceAngle", this->IncidenceAngle } });
+  if (!badParameter.empty())
+  {
+    vtkErrorMacro(<< badParameter);
+    return 0;
+  }
   const LobeSpec spec = lobeSpec(this, *this->Material);
   const bool given = this->SurfaceBRDFValues || this->SliceBRDFValues;
   std::vector<glm::vec3> surfaceValues, sliceValues;

@@ -1,5 +1,6 @@
 #include "slLobesOnMesh.h"
 
+#include "slFiniteParameters.h"
 #include "slFloat3View.h"
 #include "slLightingSetup.h"
 #include "slLobeGeometry.h"
@@ -36,6 +37,11 @@ int slLobesOnMesh::RequestData(vtkInformation*, vtkInformationVector** inputVect
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   this->NumberOfLobesDrawn = 0;
+  const std::string badParameter = slNonFiniteParameter({ { "Scale", this->Scale } });
+  if (!badParameter.empty())
+  {
+    return this->Fail(output, badParameter);
+  }
   LightingSetup setup;
   if (!this->PrepareLighting(input, output, true, setup))
   {

@@ -4,6 +4,7 @@
 #include "shadelab/RadianceEstimator.h"
 #include "slCoreBoundary.h"
 #include "slEnvironmentLoader.h"
+#include "slFiniteParameters.h"
 #include "slFloat3View.h"
 #include "slLightingSetup.h"
 #include "slRadianceKernel.h"
@@ -71,6 +72,12 @@ int slRadianceReference::RequestData(
   using namespace shadelab;
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  const std::string badParameter = slNonFiniteParameter({ { "EnvironmentScale", this->EnvironmentScale },
+    { "LightRadius", this->LightRadius }, { "DirectionalLightAngle", this->DirectionalLightAngle } });
+  if (!badParameter.empty())
+  {
+    return this->Fail(output, badParameter);
+  }
   LightingSetup setup;
   if (!this->PrepareLighting(input, output, false, setup))
   {

@@ -1,6 +1,7 @@
 #include "slPolyDataNormals.h"
 
 #include "slConnectivityCheck.h"
+#include "slFiniteParameters.h"
 #include "shadelab/slFaceNormalsCore.h"
 #include "shadelab/slPolygonNormalsCore.h"
 #include "slCoreBoundary.h"
@@ -277,6 +278,11 @@ int slPolyDataNormals::RequestData(vtkInformation*, vtkInformationVector** input
   if (!input || input->GetNumberOfPoints() == 0)
   {
     return 1;
+  }
+  const std::string badParameter = slNonFiniteParameter({ { "FeatureAngle", this->FeatureAngle } });
+  if (!badParameter.empty())
+  {
+    return this->Fail(badParameter, output);
   }
   double largestSide = 0.0;
   const vtkIdType bad = slFirstNonFinitePoint(input->GetPoints(), &largestSide);
