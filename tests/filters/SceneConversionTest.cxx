@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <sstream>
 
 namespace
 {
@@ -133,6 +134,24 @@ TEST(SceneConversion, NotesOfLightsAndMaterialAddUpInEitherOrder)
     notes = scene->GetConversionNotes();
     EXPECT_EQ(notes.find("material."), std::string::npos) << notes;
     EXPECT_NE(notes.find("lights[2].edge"), std::string::npos) << notes;
+  }
+}
+
+TEST(SceneConversion, PrintSelfShowsTheWholeSceneAndItsNotes)
+{
+  auto scene = loadScene();
+  std::ostringstream before;
+  scene->Print(before);
+  EXPECT_NE(before.str().find("ConversionNotes: (none)"), std::string::npos) << before.str();
+  vtkNew<vtkProperty> property;
+  scene->ApplyMaterial(property);
+  std::ostringstream after;
+  scene->Print(after);
+  const std::string text = after.str();
+  // Numbers only the JSON part holds: the shininess, a spot's cutoff, the camera.
+  for (const char* item : { "\"shininess\": 40.0", "\"cutoff\": 20.0", "\"viewAngle\": 25.0", "material.emission" })
+  {
+    EXPECT_NE(text.find(item), std::string::npos) << item << "\n" << text;
   }
 }
 

@@ -13,6 +13,10 @@
  * (one line naming the file), an empty output and a failed update
  * (slUpdateOrThrow() gives the line back).
  *
+ * @warning Only the first subimage is read (the first part of a multi-part
+ * EXR, the first page of a TIFF). Integer images deeper than 8 bits (16-bit
+ * PNG or TIFF) come out as float, normalised to [0, 1].
+ *
  * @sa slImageWriter vtkTexture
  */
 

@@ -16,6 +16,10 @@
  * the file and the system's reason, and Write() returning false
  * (slCallOrThrow() gives the line back).
  *
+ * @warning Only unsigned char and float scalars are written (others are an
+ * error, not converted). Float images saved as PNG, JPEG, BMP, TGA or PPM
+ * lose their range: values are clamped to [0, 1] and quantised to 8 bits.
+ *
  * @sa slImageReader vtkWindowToImageFilter
  */
 

@@ -23,6 +23,11 @@
  * Zero-length normals (allowed when ZeroNormalsAreErrors is off) and
  * degenerate cells give 0, never NaN.
  *
+ * @warning The cosine is local: nothing casts shadows, so a point facing a
+ * light behind another part of the mesh still gets its full N̂·L̂. Cell
+ * values at the vertex centroid are not the average of the point values
+ * for point and spot lights.
+ *
  * @sa slLitFilter slRadianceFilter
  */
 

@@ -4,7 +4,7 @@
  * @class   slRadianceFilter
  * @brief   The whole lighting equation evaluated per point: point arrays
  *          Ambient, Diffuse, Specular, Emission and Radiance (RGB float,
- *          linear), optionally one Radiance_<i> array per light.
+ *          linear), optionally one array per light (Radiance_0, Radiance_1, ...).
  *
  * Each point is shaded with its point normal, seen from the eye, under every
  * light of the scene (or of VTK's own lights, see slLitFilter), by
@@ -45,7 +45,7 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /// Also write Radiance_<i> (ambient + diffuse + specular of light i). Off by default.
+  /// Also write Radiance_0, Radiance_1, ...: light i's ambient + diffuse + specular. Off by default.
   vtkSetMacro(PerLightArrays, bool);
   vtkGetMacro(PerLightArrays, bool);
   vtkBooleanMacro(PerLightArrays, bool);

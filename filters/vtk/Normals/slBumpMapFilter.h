@@ -17,6 +17,11 @@
  * texture coordinates, NaN coordinates, or an unreadable image give an
  * error naming the problem (and the file) and an empty output.
  *
+ * @warning The slope is exact only where u and v are arc length: on a mesh
+ * whose texture coordinates are stretched, the bumps steepen or flatten
+ * with the stretch (Scale is in texture units). Only the normals change;
+ * the points stay where they are (slDisplacementFilter moves them).
+ *
  * @sa slNormalMapFilter slDisplacementFilter
  */
 

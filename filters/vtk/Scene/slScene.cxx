@@ -7,6 +7,8 @@
 
 #include <vtkObjectFactory.h>
 
+#include <sstream>
+
 vtkStandardNewMacro(slScene);
 
 slScene::slScene()
@@ -134,4 +136,19 @@ void slScene::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Frequency: " << this->GetFrequencyName() << "\n";
   os << indent << "Lights: " << this->GetNumberOfLights() << "\n";
   os << indent << "ImageSize: " << this->Data->width << " x " << this->Data->height << "\n";
+  // Everything else the scene holds (material, camera, each light, the
+  // texture and .brdf paths) in the scene file's own words.
+  os << indent << "Scene:\n";
+  std::istringstream json(this->ToJSON());
+  for (std::string line; std::getline(json, line);)
+  {
+    os << indent.GetNextIndent() << line << "\n";
+  }
+  os << indent << "ConversionNotes:" << (this->LightNotes.empty() && this->MaterialNotes.empty() ? " (none)" : "")
+     << "\n";
+  std::istringstream notes(this->LightNotes + this->MaterialNotes);
+  for (std::string line; std::getline(notes, line);)
+  {
+    os << indent.GetNextIndent() << line << "\n";
+  }
 }

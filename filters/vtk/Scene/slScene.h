@@ -80,9 +80,11 @@ public:
   const char* GetConversionNotes();
 
   ///@{
-  /// Lighting model by its scene-file name ("lambert", "phong", "blinn-phong",
-  /// "lambert-normalized", "phong-normalized", "blinn-phong-normalized").
-  /// SetModelName() returns false for an unknown name.
+  /// Lighting model by its scene-file name: one of the models of the
+  /// lighting table (shadelab/LightingTables.h), "lambert", "phong",
+  /// "blinn-phong", their "-normalized" variants, "cook-torrance-ggx" and the
+  /// others `shadelab render --help` lists. SetModelName() returns false for
+  /// an unknown name.
   std::string GetModelName() const;
   bool SetModelName(const char* name);
   ///@}
