@@ -85,6 +85,22 @@ class MaterialSetterTest(unittest.TestCase):
                     if not lit:
                         self.assertEqual(obj.GetMaterialParameter(key), schema["minimum"])
 
+    def test_print_names_each_number_by_its_setter(self):
+        """PrintSelf lists each number as Shininess, RoughnessX, ... with the value set."""
+        # Values in every key's range, exact in float, so printed as set.
+        wanted = {key: 1.5 if key == "ior" else 0.25 + i / 16.0 for i, key in enumerate(number_keys())}
+        for make in (shadelab.slRadianceFilter, shadelab.slBRDFLobeSource, shadelab.slAlbedoTable):
+            obj = make()
+            for key, value in wanted.items():
+                if hasattr(obj, "Set" + setter(key)):
+                    getattr(obj, "Set" + setter(key))(value)
+                else:
+                    obj.SetMaterialParameter(key, value)
+            text = str(obj)
+            for key, value in wanted.items():
+                with self.subTest(cls=obj.GetClassName(), key=key):
+                    self.assertIn("  %s: %g\n" % (setter(key), value), text)
+
     def test_setter_equals_the_scene_key(self):
         """OverrideMaterial with one number set equals a scene file holding it, and differs from the default."""
         for key, schema in number_keys().items():

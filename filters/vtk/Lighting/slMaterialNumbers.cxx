@@ -6,6 +6,7 @@
 #include <vtkSetGet.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstring>
 #include <limits>
 #include <string>
@@ -70,7 +71,11 @@ void slPrintMaterialNumbers(ostream& os, vtkIndent indent, const shadelab::Scene
   {
     if (k.number)
     {
-      os << indent << k.name << ": " << material.*(k.number) << "\n";
+      // Under the setter's name (key "roughnessX": SetRoughnessX), as
+      // slLitFilter prints the same numbers.
+      std::string setterName = k.name;
+      setterName[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(setterName[0])));
+      os << indent << setterName << ": " << material.*(k.number) << "\n";
     }
   }
 }
