@@ -176,6 +176,14 @@ const std::map<std::string, std::string>& objFiles()
     { "all three, forward references", "f 1/2/1 2/1/1 3/3/1\t\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\n"
                                        "vn 0 0 1\n" },
     { "negative zero", "v 0 0 0\nv -0 0 0\nv 1 0 0\nv 0 1 0\nf 1 3 4\nf 2 3 4\n" },
+    // Faces of several forms: (-1, -1) for the corners, or the points, no
+    // vt is given for; the normals of the v list, where every vn index is
+    // its v index.
+    { "faces with and without vt", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/1\nf 1 2 3\n" },
+    { "faces with and without vt, of the v list", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvt 0 0\nvt 1 0\nvt 0 1\n"
+                                                  "vt 1 1\nf 1/1 2/2 3/3\nf 1 2 4\n" },
+    { "faces with and without vn", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvn 0 0 1\nvn 0 0 1\nvn 0 0 1\nvn 0 1 0\n"
+                                   "f 1//1 2//2 3//3\nf 1 2 4\n" },
   };
   return files;
 }
@@ -215,9 +223,8 @@ TEST(MeshFormats, OBJOutsideTheCommonFormGoesToVTK)
   const std::map<std::string, std::string> declined = {
     { "group", "v 0 0 0\nv 1 0 0\nv 0 1 0\ng part\nf 1 2 3\n" },
     { "negative index", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n" },
-    { "mixed forms", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/1\nf 1 2 3\n" },
     { "vertex colours", "v 0 0 0 1 0 0\nv 1 0 0 1 0 0\nv 0 1 0 1 0 0\nf 1 2 3\n" },
-    { "line", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nl 1 2\n" },
+    { "line naming a normal", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nl 1//1 2\n" },
     { "continued line", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 \\\n3\n" },
   };
   for (const auto& file : declined)
@@ -409,13 +416,14 @@ TEST(MeshFormats, OBJStopsAtTheFirstFailedPieceAndSaysWhy)
   }
 }
 
-TEST(MeshFormats, OBJCornersNamingOtherNormalsReadAlikeOnAnyThreadCount)
+namespace
 {
-  // Over 1 MiB, so that 2 and 4 threads parse it in stretches. Every face
-  // names one index for v and vn, except, in some cases, the first or the
-  // last face, whose first corner takes the second point's normal.
-  const int n = 150;
-  std::string points, faces;
+/// An OBJ grid of n x n points over 1 MiB (so that 2 and 4 threads parse it
+/// in stretches): "v" and "vn" lines in @p points, and in @p faces a
+/// triangle per grid cell whose corners name one index for v and vn.
+/// Returns the number of faces.
+int objGrid(int n, std::string& points, std::string& faces)
+{
   for (int j = 0; j < n; ++j)
   {
     for (int i = 0; i < n; ++i)
@@ -429,11 +437,76 @@ TEST(MeshFormats, OBJCornersNamingOtherNormalsReadAlikeOnAnyThreadCount)
   {
     for (int i = 0; i + 1 < n; ++i, ++faceCount)
     {
-      const int a = j * n + i + 1, b = a + 1, c = a + n + 1;
-      faces += "f " + std::to_string(a) + "//" + std::to_string(a) + " " + std::to_string(b) + "//" +
-        std::to_string(b) + " " + std::to_string(c) + "//" + std::to_string(c) + "\n";
+      const std::string a = std::to_string(j * n + i + 1), b = std::to_string(j * n + i + 2),
+                        c = std::to_string(j * n + i + n + 2);
+      faces += "f " + a + "//" + a + " " + b + "//" + b + " " + c + "//" + c + "\n";
     }
   }
+  return faceCount;
+}
+
+/// Parses @p text on 2 and 4 threads and expects every array as @p one
+/// (parsed on 1 thread) has it.
+void expectSameOnMoreThreads(const std::string& text, const slMeshArrays& one, const char* what)
+{
+  for (int threads : { 2, 4 })
+  {
+    slMeshArrays many;
+    ASSERT_TRUE(slParseOBJ(text.data(), text.size(), false, many, threads)) << what;
+    EXPECT_EQ(many.points, one.points) << what << ", " << threads << " threads";
+    EXPECT_EQ(many.normals, one.normals) << what << ", " << threads << " threads";
+    EXPECT_EQ(many.offsets, one.offsets) << what << ", " << threads << " threads";
+    EXPECT_EQ(many.connectivity, one.connectivity) << what << ", " << threads << " threads";
+    EXPECT_EQ(many.lineSizes, one.lineSizes) << what << ", " << threads << " threads";
+    EXPECT_EQ(many.vertexSizes, one.vertexSizes) << what << ", " << threads << " threads";
+  }
+}
+} // namespace
+
+TEST(MeshFormats, OBJLinesPointsAndFacesOfSeveralFormsReadAlikeOnAnyThreadCount)
+{
+  // Over 1 MiB, so that 2 and 4 threads parse it in stretches: a grid whose
+  // faces name one index for v and vn, an "l" and a "p" element, and a face
+  // without vn first or last, with or without a face whose corner takes
+  // another point's normal.
+  const int n = 150;
+  std::string points, faces;
+  objGrid(n, points, faces);
+  const std::string elements = "l 1 2 3\np 4 5\n", bare = "f 1 2 152\n", odd = "f 1//2 2//2 152//152\n";
+  struct Case
+  {
+    const char* what;
+    std::string text;
+    bool normals; // kept: the v list's, or none (a point per corner would lack one)
+  };
+  const Case cases[] = { { "bare face last", points + elements + faces + bare, true },
+    { "bare face first", points + bare + faces + elements, true },
+    { "bare and odd faces", points + odd + faces + elements + bare, false } };
+  for (const Case& c : cases)
+  {
+    ASSERT_GT(c.text.size(), size_t(1) << 20);
+    slMeshArrays one;
+    ASSERT_TRUE(slParseOBJ(c.text.data(), c.text.size(), false, one, 1)) << c.what;
+    // The v list's points, lines and vertex cells naming them after the faces.
+    ASSERT_EQ(one.points.size(), size_t(3 * n * n)) << c.what;
+    EXPECT_EQ(one.normals.size(), c.normals ? one.points.size() : 0u) << c.what;
+    EXPECT_EQ(one.lineSizes, std::vector<std::int64_t>({ 3 })) << c.what;
+    EXPECT_EQ(one.vertexSizes, std::vector<std::int64_t>({ 2 })) << c.what;
+    const std::vector<std::int64_t> elementIds(one.connectivity.end() - 5, one.connectivity.end());
+    EXPECT_EQ(elementIds, std::vector<std::int64_t>({ 0, 1, 2, 3, 4 })) << c.what;
+    EXPECT_EQ(static_cast<size_t>(one.offsets.back()) + 5, one.connectivity.size()) << c.what;
+    expectSameOnMoreThreads(c.text, one, c.what);
+  }
+}
+
+TEST(MeshFormats, OBJCornersNamingOtherNormalsReadAlikeOnAnyThreadCount)
+{
+  // Over 1 MiB, so that 2 and 4 threads parse it in stretches. Every face
+  // names one index for v and vn, except, in some cases, the first or the
+  // last face, whose first corner takes the second point's normal.
+  const int n = 150;
+  std::string points, faces;
+  const int faceCount = objGrid(n, points, faces);
   const std::string odd = "f 1//2 2//2 152//152\n"; // point 1 with point 2's normal (0, 1.5, 1)
   const std::pair<const char*, std::string> cases[] = { { "same everywhere", points + faces },
     { "odd first face", points + odd + faces }, { "odd last face", points + faces + odd } };
@@ -458,14 +531,6 @@ TEST(MeshFormats, OBJCornersNamingOtherNormalsReadAlikeOnAnyThreadCount)
       // The next corner names point 2 and its own normal.
       EXPECT_EQ(one.normals[3 * k + 4], 1.5f) << what;
     }
-    for (int threads : { 2, 4 })
-    {
-      slMeshArrays many;
-      ASSERT_TRUE(slParseOBJ(text.data(), text.size(), false, many, threads)) << what;
-      EXPECT_EQ(many.points, one.points) << what << ", " << threads << " threads";
-      EXPECT_EQ(many.normals, one.normals) << what << ", " << threads << " threads";
-      EXPECT_EQ(many.offsets, one.offsets) << what << ", " << threads << " threads";
-      EXPECT_EQ(many.connectivity, one.connectivity) << what << ", " << threads << " threads";
-    }
+    expectSameOnMoreThreads(text, one, what);
   }
 }

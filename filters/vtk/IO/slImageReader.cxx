@@ -4,6 +4,7 @@
 #include "slImageFileCheck.h"
 #include "slStderrCapture.h"
 
+#include "shadelab/InputFile.h"
 #include "shadelab/PrintableText.h"
 
 #include <vtkFloatArray.h>
@@ -14,8 +15,6 @@
 #include <vtkPointData.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtkUnsignedCharArray.h>
-
-#include <filesystem>
 
 
 vtkStandardNewMacro(slImageReader);
@@ -65,11 +64,13 @@ int slImageReader::RequestInformation(vtkInformation*, vtkInformationVector**, v
   // The extent is only known after reading; report it here from the header.
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   int extent[6] = { 0, -1, 0, -1, 0, 0 };
-  // A file whose length fields reach past its end is reported by RequestData;
-  // its header is not read here, as its library would allocate what they claim.
+  // A file whose length fields reach past its end, and one that is not a
+  // regular file, are reported by RequestData; no header is read here, as
+  // the library would allocate what the fields claim or read a device for ever.
   std::string ignored;
   const slImageCodec* codec = slLoadImageCodec(ignored);
-  if (codec && this->FileName && slImageFileProblem(this->FileName).empty())
+  if (codec && this->FileName && shadelab::inputFileProblem(this->FileName, "an image file").empty() &&
+    slImageFileProblem(this->FileName).empty())
   {
     const slStderrCapture quiet;
     slImageHeader header;
@@ -94,10 +95,11 @@ int slImageReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInfor
     return 0;
   }
 
-  std::error_code ignored;
-  if (std::filesystem::is_directory(name, ignored))
+  // Before any reading: a directory reads as nothing, a device never ends.
+  const std::string inputProblem = shadelab::inputFileProblem(name, "an image file");
+  if (!inputProblem.empty())
   {
-    vtkErrorMacro(<< name << ": cannot read image: it is a directory");
+    vtkErrorMacro(<< name << ": " << inputProblem);
     return 0;
   }
   const std::string fileProblem = slImageFileProblem(name);

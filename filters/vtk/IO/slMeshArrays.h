@@ -2,9 +2,10 @@
 #define slMeshArrays_h
 /**
  * @file slMeshArrays.h
- * @brief A polygon mesh as plain arrays, what ShadeLab's own OBJ and PLY
- * parsers fill without VTK (slOBJFormat.h, slPLYFormat.h); slMeshArraysVTK.h
- * turns it into vtkPolyData. Internal to ShadeLab::IO.
+ * @brief A polygon mesh, with any lines and vertex cells, as plain arrays:
+ * what ShadeLab's own OBJ and PLY parsers fill without VTK (slOBJFormat.h,
+ * slPLYFormat.h); slMeshArraysVTK.h turns it into vtkPolyData. Internal to
+ * ShadeLab::IO.
  */
 
 #include <cstddef>
@@ -17,7 +18,11 @@ struct slMeshArrays
   std::vector<float> normals;         ///< nx, ny, nz per point, or empty
   std::vector<float> tcoords;         ///< u, v per point, or empty
   std::vector<std::int64_t> offsets;  ///< polygon k is connectivity[offsets[k], offsets[k+1])
+  /// The polygons' point ids, then the lines', then the vertex cells' (one
+  /// array: renumbering the points renumbers them all).
   std::vector<std::int64_t> connectivity;
+  std::vector<std::int64_t> lineSizes;   ///< points per line (OBJ "l"), or empty
+  std::vector<std::int64_t> vertexSizes; ///< points per vertex cell (OBJ "p"), or empty
 };
 
 /// Values of a float or double array, read as double (what a writer sees).

@@ -86,12 +86,42 @@ bool indices(vtkDataArray* array, slIndicesView& view)
 
 void slToPolyData(slMeshArrays& mesh, bool tcoordsFirst, vtkPolyData* output)
 {
+  output->Initialize();
+  // The lines and vertex cells, whose ids follow the polygons'.
+  std::size_t from = mesh.offsets.empty() ? 0 : static_cast<std::size_t>(mesh.offsets.back());
+  const std::size_t polygonIds = from;
+  for (std::vector<std::int64_t>* sizes : { &mesh.lineSizes, &mesh.vertexSizes })
+  {
+    if (sizes->empty())
+    {
+      continue;
+    }
+    std::vector<std::int64_t> offsets{ 0 };
+    for (std::int64_t size : *sizes)
+    {
+      offsets.push_back(offsets.back() + size);
+    }
+    std::vector<std::int64_t> cellIds(mesh.connectivity.begin() + static_cast<std::ptrdiff_t>(from),
+      mesh.connectivity.begin() + static_cast<std::ptrdiff_t>(from) + offsets.back());
+    from += static_cast<std::size_t>(offsets.back());
+    vtkNew<vtkCellArray> cells;
+    cells->SetData(ids(offsets), ids(cellIds));
+    if (sizes == &mesh.lineSizes)
+    {
+      output->SetLines(cells);
+    }
+    else
+    {
+      output->SetVerts(cells);
+    }
+    std::vector<std::int64_t>().swap(*sizes);
+  }
+  mesh.connectivity.resize(polygonIds);
   vtkNew<vtkPoints> points;
   points->SetData(floats(mesh.points, 3, nullptr));
   vtkNew<vtkCellArray> polys;
   vtkSmartPointer<vtkIdTypeArray> offsets = ids(mesh.offsets);
   polys->SetData(offsets, ids(mesh.connectivity));
-  output->Initialize();
   output->SetPoints(points);
   output->SetPolys(polys);
   vtkPointData* pd = output->GetPointData();

@@ -11,10 +11,11 @@
 
 class vtkPolyData;
 
-/// Fills @p output with @p mesh: float points, polygons, and the point
-/// arrays "TCoords" and "Normals" (active texture coordinates and normals)
-/// when present, added in the order @p tcoordsFirst says (the order of the
-/// VTK reader being stood in for). Frees @p mesh's arrays as it goes.
+/// Fills @p output with @p mesh: float points, polygons, lines and vertex
+/// cells, and the point arrays "TCoords" and "Normals" (active texture
+/// coordinates and normals) when present, added in the order @p tcoordsFirst
+/// says (the order of the VTK reader being stood in for). Frees @p mesh's
+/// arrays as it goes.
 void slToPolyData(slMeshArrays& mesh, bool tcoordsFirst, vtkPolyData* output);
 
 /// Views @p mesh for a formatter: its points, active point normals (3

@@ -59,17 +59,20 @@ struct Cursor
   }
 };
 
+/// The form of an element's corners: bit 1 set if they name a vt, bit 2 a vn.
 enum Form
 {
   Unknown = -1,
   V = 0,
   VT = 1,
   VN = 2,
-  VTN = 3
+  VTN = 3,
+  Mixed = 4 // faces of several forms
 };
 
-/// Reads a face's corners into @p corners (v, vt, vn; 0 where absent).
-bool face(Cursor& c, int& form, std::vector<std::int64_t>& corners, std::int64_t& count)
+/// Reads an element's corners, all of one form, into @p corners (v, vt,
+/// vn; 0 where absent) and that form into @p form.
+bool element(Cursor& c, int& form, std::vector<std::int64_t>& corners, std::int64_t& count)
 {
   count = 0;
   for (c.skipBlanks(); c.at < c.end; c.skipBlanks())
@@ -120,7 +123,7 @@ bool face(Cursor& c, int& form, std::vector<std::int64_t>& corners, std::int64_t
     corners.push_back(n);
     ++count;
   }
-  return count >= 3;
+  return count >= 1;
 }
 
 void append(std::string& out, double value, bool isDouble)
@@ -161,36 +164,60 @@ namespace
 struct Chunk
 {
   std::vector<float> v, vt, vn;
-  std::vector<std::int64_t> corners;     // v index - 1 per corner
-  std::vector<std::int32_t> t, n;        // vt and vn index per corner, when the form has them (see sameIndex)
+  std::vector<std::int64_t> corners;     // v index - 1 per face corner
+  std::vector<std::int32_t> t, n;        // vt and vn index per face corner, 0 for none (see sameIndex)
   std::vector<std::int64_t> faceCorners; // corners per face
-  int form = Unknown;
+  // "l" and "p" elements: v index - 1 per corner, corners per element.
+  std::vector<std::int64_t> lineIds, lineSizes, vertexIds, vertexSizes;
+  std::int64_t lineTexture = 0; // the largest vt index of an "l" corner (checked, then ignored as VTK does)
+  int form = Unknown;           // the faces' one form, or Mixed
+  int given = 0;                // the Form bits some face has
+  int everyFace = VTN;          // the Form bits every face has
+  int kept = 0;                 // which of t (bit 1) and n (bit 2) are filled, once spelt out
   bool ok = true;
-  // Every corner so far names its v index for vt and vn too (the common
-  // case, "f 1//1 2//2 3//3"): t and n are then left empty, which saves
-  // writing, joining and faulting in 8 bytes per corner, until spelt out.
+  // Every face so far has one form, and every corner names its v index for
+  // vt and vn too (the common case, "f 1//1 2//2 3//3"): t and n are then
+  // left empty, which saves writing, joining and faulting in 8 bytes per
+  // corner, until spelt out.
   bool sameIndex = true;
 
-  /// Fills t and n from the corners' v indices, for the form @p hasT,
-  /// @p hasN; from then on every corner's t and n are kept.
-  void spellOut(bool hasT, bool hasN)
+  /// Fills t and n (those @p keep names) from the corners' v indices and
+  /// the faces' one form; from then on every corner's t and n are kept.
+  void spellOut(int keep)
   {
     if (!this->sameIndex)
     {
       return;
     }
     this->sameIndex = false;
+    this->kept = keep;
+    const int has = this->form == Unknown ? V : this->form;
     for (std::int64_t a : this->corners)
     {
-      if (hasT)
+      if (keep & VT)
       {
-        this->t.push_back(static_cast<std::int32_t>(a + 1));
+        this->t.push_back(has & VT ? static_cast<std::int32_t>(a + 1) : 0);
       }
-      if (hasN)
+      if (keep & VN)
       {
-        this->n.push_back(static_cast<std::int32_t>(a + 1));
+        this->n.push_back(has & VN ? static_cast<std::int32_t>(a + 1) : 0);
       }
     }
+  }
+
+  /// Adds, spelt out, the arrays among t and n that @p keep names and no
+  /// face so far needed: zero for every corner.
+  void widen(int keep)
+  {
+    if ((keep & VT) && !(this->kept & VT))
+    {
+      this->t.assign(this->corners.size(), 0);
+    }
+    if ((keep & VN) && !(this->kept & VN))
+    {
+      this->n.assign(this->corners.size(), 0);
+    }
+    this->kept |= keep;
   }
 };
 
@@ -241,28 +268,54 @@ void parseLines(const char* begin, const char* end, Chunk& chunk)
     }
     else if (length == 1 && keyword[0] == 'f')
     {
+      int here = Unknown;
       std::int64_t count = 0;
       corners.clear();
-      ok = face(c, chunk.form, corners, count);
-      const bool hasT = chunk.form == VT || chunk.form == VTN, hasN = chunk.form == VN || chunk.form == VTN;
+      ok = element(c, here, corners, count) && count >= 3;
+      // Faces may differ in form ("f 1//1 2//1 3//1" beside "f 1 2 4"):
+      // t and n then hold 0 for the corners of faces without them.
+      chunk.form = chunk.form == Unknown ? here : chunk.form;
+      const bool sameForm = chunk.form == here;
+      const int keep = chunk.given | here;
       for (std::size_t k = 0; ok && k < corners.size(); k += 3)
       {
-        const bool same = (!hasT || corners[k + 1] == corners[k]) && (!hasN || corners[k + 2] == corners[k]);
+        const bool same =
+          sameForm && (!(here & VT) || corners[k + 1] == corners[k]) && (!(here & VN) || corners[k + 2] == corners[k]);
         if (!(chunk.sameIndex && same))
         {
-          chunk.spellOut(hasT, hasN); // before this corner joins the corners spelt out
-          if (hasT)
+          chunk.spellOut(keep); // before this corner joins the corners spelt out
+          chunk.widen(keep);
+          if (keep & VT)
           {
             chunk.t.push_back(static_cast<std::int32_t>(corners[k + 1]));
           }
-          if (hasN)
+          if (keep & VN)
           {
             chunk.n.push_back(static_cast<std::int32_t>(corners[k + 2]));
           }
         }
         chunk.corners.push_back(corners[k] - 1);
       }
+      chunk.form = sameForm ? here : Mixed;
+      chunk.given = keep;
+      chunk.everyFace &= here;
       chunk.faceCorners.push_back(count);
+    }
+    else if (length == 1 && (keyword[0] == 'l' || keyword[0] == 'p'))
+    {
+      // As vtkOBJReader reads them: "l" corners v or v/vt (the vt unused),
+      // "p" corners v; VTK's lines and vertex cells.
+      const bool line = keyword[0] == 'l';
+      int here = Unknown;
+      std::int64_t count = 0;
+      corners.clear();
+      ok = element(c, here, corners, count) && count >= (line ? 2 : 1) && (here == V || (line && here == VT));
+      for (std::size_t k = 0; ok && k < corners.size(); k += 3)
+      {
+        (line ? chunk.lineIds : chunk.vertexIds).push_back(corners[k] - 1);
+        chunk.lineTexture = std::max(chunk.lineTexture, corners[k + 1]);
+      }
+      (line ? chunk.lineSizes : chunk.vertexSizes).push_back(count);
     }
     else
     {
@@ -319,23 +372,29 @@ bool slParseOBJ(const char* text, std::size_t size, bool merge, slMeshArrays& me
   {
     w.join();
   }
-  int form = Unknown;
+  int given = 0, everyFace = VTN;
+  std::int64_t lineTexture = 0;
   for (const Chunk& c : chunks)
   {
-    if (!c.ok || (c.form != Unknown && form != Unknown && c.form != form))
+    if (!c.ok)
     {
       return false;
     }
-    form = c.form == Unknown ? form : c.form;
+    given |= c.given;
+    everyFace &= c.everyFace;
+    lineTexture = std::max(lineTexture, c.lineTexture);
   }
-  const bool hasT = form == VT || form == VTN, hasN = form == VN || form == VTN;
-  // t and n are kept per corner only if some corner names another index.
-  const bool sameIndex = std::all_of(chunks.begin(), chunks.end(), [](const Chunk& c) { return c.sameIndex; });
+  const bool hasT = (given & VT) != 0, hasN = (given & VN) != 0;
+  // t and n are kept per corner only if some corner names another index,
+  // or some faces have no vt (t then tells the corners with one from them).
+  const bool sameIndex = std::all_of(chunks.begin(), chunks.end(), [](const Chunk& c) { return c.sameIndex; }) &&
+    (!hasT || (everyFace & VT));
   if (!sameIndex)
   {
     for (Chunk& c : chunks)
     {
-      c.spellOut(hasT, hasN);
+      c.spellOut(given);
+      c.widen(given);
     }
   }
   std::vector<float> v = joined(chunks, &Chunk::v), vt = joined(chunks, &Chunk::vt), vn = joined(chunks, &Chunk::vn);
@@ -349,58 +408,100 @@ bool slParseOBJ(const char* text, std::size_t size, bool merge, slMeshArrays& me
   {
     mesh.offsets[f + 1] = mesh.offsets[f] + faceCorners[f];
   }
+  // The lines' and vertex cells' ids follow the faces' (slMeshArrays).
+  const std::size_t cornerCount = mesh.connectivity.size();
+  for (std::vector<std::int64_t> Chunk::*ids : { &Chunk::lineIds, &Chunk::vertexIds })
+  {
+    const std::vector<std::int64_t> more = joined(chunks, ids);
+    mesh.connectivity.insert(mesh.connectivity.end(), more.begin(), more.end());
+  }
+  mesh.lineSizes = joined(chunks, &Chunk::lineSizes);
+  mesh.vertexSizes = joined(chunks, &Chunk::vertexSizes);
+  const bool elements = mesh.connectivity.size() > cornerCount; // "l" or "p"
 
   const std::int64_t nv = static_cast<std::int64_t>(v.size() / 3), nt = static_cast<std::int64_t>(vt.size() / 2),
                      nn = static_cast<std::int64_t>(vn.size() / 3);
-  if (form == Unknown || (!hasT && nt > 0) || (!hasN && nn > 0))
+  if (faceCorners.empty() || (!hasT && nt > 0) || (!hasN && nn > 0) || lineTexture > nt)
   {
     return false;
   }
-  const std::size_t cornerCount = mesh.connectivity.size();
-  bool same = true; // every corner names one index for v, vt and vn
-  for (std::size_t k = 0; k < cornerCount; ++k)
+  bool sameT = true, sameN = true; // every corner naming a vt (vn) names its v index
+  for (std::size_t k = 0; k < mesh.connectivity.size(); ++k)
   {
     const std::int64_t a = mesh.connectivity[k];
     if (a >= nv)
     {
       return false;
     }
-    if (sameIndex)
+    if (sameIndex || k >= cornerCount)
     {
-      continue; // t and n are a + 1: checked against nt and nn below
+      continue; // t and n are 0 or a + 1: checked against nt and nn below
     }
     if ((hasT && t[k] > nt) || (hasN && n[k] > nn))
     {
       return false;
     }
-    same = same && (!hasT || t[k] == a + 1) && (!hasN || n[k] == a + 1);
+    sameT = sameT && (!hasT || t[k] == 0 || t[k] == a + 1);
+    sameN = sameN && (!hasN || n[k] == 0 || n[k] == a + 1);
   }
-  if (same && ((hasT && nt != nv) || (hasN && nn != nv)))
+  // The points vtkOBJReader makes: the v list, or one per corner when a vt
+  // or vn index differs from its v index. Normals per corner need a vn at
+  // every corner: every face has one, and there is no "l" or "p" element
+  // (vtkOBJReader 9.1 drops such faces and elements instead). Where some
+  // point would have no normal, the normals are left out: the programs
+  // compute them.
+  const bool normalsPerCorner = (everyFace & VN) && !elements;
+  bool normals = hasN && (sameN || normalsPerCorner);
+  const bool same = sameT && (sameN || !normals);
+  normals = normals && (same || normalsPerCorner);
+  if (same && ((hasT && nt != nv) || (normals && nn != nv)))
   {
     return false; // vtkOBJReader's arrays would not match its points
   }
-
-  // The points vtkOBJReader makes: the v list, or one per corner.
   if (same)
   {
+    if (hasT)
+    {
+      // vtkOBJReader gives a point its vt through a face corner naming
+      // one, and (-1, -1) to the points no such corner names.
+      std::vector<bool> textured(static_cast<std::size_t>(nv));
+      for (std::size_t k = 0; k < cornerCount; ++k)
+      {
+        if (sameIndex || t[k] != 0)
+        {
+          textured[static_cast<std::size_t>(mesh.connectivity[k])] = true;
+        }
+      }
+      for (std::size_t i = 0; i < textured.size(); ++i)
+      {
+        if (!textured[i])
+        {
+          vt[2 * i] = vt[2 * i + 1] = -1.0f;
+        }
+      }
+    }
     mesh.points = std::move(v);
     mesh.tcoords = std::move(vt);
-    mesh.normals = std::move(vn);
+    mesh.normals = normals ? std::move(vn) : std::vector<float>();
   }
   else
   {
-    mesh.points.resize(3 * cornerCount);
-    mesh.tcoords.resize(hasT ? 2 * cornerCount : 0);
-    mesh.normals.resize(hasN ? 3 * cornerCount : 0);
-    for (std::size_t k = 0; k < cornerCount; ++k)
+    const std::size_t total = mesh.connectivity.size();
+    mesh.points.resize(3 * total);
+    mesh.tcoords.resize(hasT ? 2 * total : 0);
+    mesh.normals.resize(normals ? 3 * total : 0);
+    // vtkOBJReader's texture coordinate for a corner without one.
+    static const float none[2] = { -1.0f, -1.0f };
+    for (std::size_t k = 0; k < total; ++k)
     {
       const std::size_t a = static_cast<std::size_t>(mesh.connectivity[k]);
       std::memcpy(&mesh.points[3 * k], &v[3 * a], 3 * sizeof(float));
       if (hasT)
       {
-        std::memcpy(&mesh.tcoords[2 * k], &vt[2 * static_cast<std::size_t>(t[k] - 1)], 2 * sizeof(float));
+        const std::int32_t tk = k < cornerCount ? t[k] : 0;
+        std::memcpy(&mesh.tcoords[2 * k], tk > 0 ? &vt[2 * static_cast<std::size_t>(tk - 1)] : none, 2 * sizeof(float));
       }
-      if (hasN)
+      if (normals)
       {
         std::memcpy(&mesh.normals[3 * k], &vn[3 * static_cast<std::size_t>(n[k] - 1)], 3 * sizeof(float));
       }

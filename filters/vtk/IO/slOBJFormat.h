@@ -20,15 +20,20 @@
 
 /// Fills @p mesh from @p size bytes of OBJ text at @p text as vtkOBJReader
 /// reads them (float values; one point per vertex when every corner's vt and
-/// vn index equals its v index, else one per corner), followed, if @p merge,
-/// by the merging of points equal in position, normal and texture coordinate
-/// (slMergeIdenticalPoints, first occurrence first). Returns false, leaving
-/// @p mesh unspecified, unless the text consists only of blank lines,
-/// comments, "v x y z", "vt u v", "vn x y z" lines and "f" lines of 3 or
-/// more corners, all faces with corners of one form (v, v/vt, v//vn or
-/// v/vt/vn, positive indices naming existing values), with finite decimal
-/// numbers, lines of at most 1000 bytes, and vt (vn) lines only if faces use
-/// them. Parses on @p threads threads (at least one).
+/// vn index, where it has one, equals its v index, else one per corner and
+/// per "l" and "p" corner; texture coordinates (-1, -1) where no face corner
+/// gives one), followed, if
+/// @p merge, by the merging of points equal in position, normal and texture
+/// coordinate (slMergeIdenticalPoints, first occurrence first). Unlike
+/// vtkOBJReader 9.1 it keeps every face and "l" and "p" element, and leaves
+/// out the normals when some point would have none (see docs/mesh-io.md).
+/// Returns false, leaving @p mesh unspecified, unless the text consists only
+/// of blank lines, comments, "v x y z", "vt u v", "vn x y z" lines, "f"
+/// lines of 3 or more corners of one form each (v, v/vt, v//vn or v/vt/vn),
+/// "l" lines of 2 or more v or v/vt corners and "p" lines of v corners,
+/// with positive indices naming existing values, at least one face, finite
+/// decimal numbers, lines of at most 1000 bytes, and vt (vn) lines only if
+/// faces use them. Parses on @p threads threads (at least one).
 SHADELABIO_EXPORT bool slParseOBJ(const char* text, std::size_t size, bool merge, slMeshArrays& mesh, int threads);
 
 /// Formats @p mesh as OBJ text: "v", then "vn" and "vt" lines if the mesh

@@ -1,6 +1,7 @@
 #include "shadelab/BrdfFile.h"
 
 #include "shadelab/Error.h"
+#include "shadelab/InputFile.h"
 #include "shadelab/PrintableText.h"
 
 #include <algorithm>
@@ -410,6 +411,12 @@ BrdfFile parseBrdfText(const std::string& text, const std::string& path)
 
 BrdfFile readBrdfFile(const std::string& path)
 {
+  // Before the size is asked: a directory or a device has none to go by.
+  const std::string fileProblem = inputFileProblem(path, "a BRDF file");
+  if (!fileProblem.empty())
+  {
+    throw Error(path + ": " + fileProblem);
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in)
   {

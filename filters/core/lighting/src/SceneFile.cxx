@@ -2,6 +2,7 @@
 
 #include "shadelab/AtomicFile.h"
 #include "shadelab/BrdfAssignment.h"
+#include "shadelab/InputFile.h"
 #include "shadelab/PrintableText.h"
 #include "shadelab/SceneKeys.h"
 #include "shadelab/SceneLimits.h"
@@ -11,7 +12,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <set>
@@ -624,10 +624,10 @@ Scene parseScene(const std::string& jsonText, const std::string& fileName)
 
 Scene readSceneFile(const std::string& path)
 {
-  std::error_code ignored;
-  if (std::filesystem::is_directory(path, ignored))
+  const std::string fileProblem = inputFileProblem(path, "a scene file");
+  if (!fileProblem.empty())
   {
-    throw Error(path + ": is a directory, not a scene file");
+    throw Error(path + ": " + fileProblem);
   }
   std::ifstream in(path, std::ios::binary);
   if (!in)

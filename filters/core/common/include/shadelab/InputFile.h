@@ -1,0 +1,28 @@
+#ifndef shadelab_InputFile_h
+#define shadelab_InputFile_h
+/**
+ * @file InputFile.h
+ * @brief The one check every reader makes before opening an input file
+ * (mesh, scene, image, .brdf): that it is a regular file.
+ *
+ * A directory opens on Linux and reads as nothing; a device such as
+ * /dev/zero never ends, and a FIFO or socket blocks until a writer comes.
+ * A reader given one would fail with a misleading parse error, grow its
+ * buffer until memory runs out, or hang.
+ */
+
+#include <string>
+
+namespace shadelab
+{
+
+/// Why @p path is no input file: "is a directory, not @p what" (@p what
+/// is e.g. "a mesh file"), or "is not a regular file (a device, pipe or
+/// socket)"; symbolic links are followed. "" for a regular file, and for a
+/// path that cannot be looked at (missing, no permission), which the
+/// reader's opening of it then reports.
+std::string inputFileProblem(const std::string& path, const std::string& what);
+
+} // namespace shadelab
+
+#endif
