@@ -336,5 +336,113 @@ class MaterialOptionsTest(unittest.TestCase):
             self.assertAlmostEqual(peak * 4.0 * math.pi * 0.2 * 0.5, 1.0, delta=1e-4)
 
 
+def limited_run(*args, cwd=None):
+    """run() with at most 3 GB of address space and 60 s: a reader that never stops fails, not the machine."""
+    import resource
+
+    def limit():
+        resource.setrlimit(resource.RLIMIT_AS, (3 << 30, 3 << 30))
+    return subprocess.run([SHADELAB, *args], capture_output=True, text=True, timeout=60, preexec_fn=limit, cwd=cwd)
+
+
+class SpecialFilesTest(unittest.TestCase):
+    """Every input must be a regular file: a device reads for ever, a FIFO blocks."""
+
+    def test_devices_and_fifos_are_refused(self):
+        with tempfile.TemporaryDirectory() as folder:
+            with open(os.path.join(folder, "t.obj"), "w") as f:
+                f.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
+            for name in ("z.obj", "z.png"):
+                os.symlink("/dev/zero", os.path.join(folder, name))
+            os.mkfifo(os.path.join(folder, "s.json"))
+            before = sorted(os.listdir(folder))
+            for args, path in ((["normals", "z.obj"], "z.obj"),
+                               (["light", "t.obj", "--diffuse-texture", "z.png"], "z.png"),
+                               (["cosine", "t.obj", "--scene", "/dev/zero"], "/dev/zero"),
+                               (["cosine", "t.obj", "--scene", "s.json"], "s.json")):
+                r = limited_run(*args, "-o", "out.vtp", cwd=folder)
+                self.assertEqual(r.returncode, 1, args)
+                self.assertEqual(r.stderr, "shadelab %s: %s: is not a regular file (a device, pipe or socket)\n"
+                                 % (args[0], path))
+                self.assertEqual(sorted(os.listdir(folder)), before, "nothing written")
+
+
+class LobeOptionsTest(unittest.TestCase):
+    def test_field_image_options_are_not_offered(self):
+        # lobe draws its own images (-o LOBE.png); --image and --fields are the lit meshes' of cosine, light, reference.
+        self.assertNotIn("--image", run("lobe", "--help").stdout)
+        self.assertNotIn("--fields", run("lobe", "--help").stdout)
+        self.assertIn("--image", run("cosine", "--help").stdout)
+
+
+def read_vtp(path):
+    import vtk
+    reader = vtk.vtkXMLPolyDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    return reader.GetOutput()
+
+
+def cells(mesh, cell_type):
+    """The point ids of each cell of @cell_type (a VTK cell type number) in @mesh."""
+    import vtk
+    ids = vtk.vtkIdList()
+    out = []
+    for c in range(mesh.GetNumberOfCells()):
+        if mesh.GetCellType(c) == cell_type:
+            mesh.GetCellPoints(c, ids)
+            out.append([ids.GetId(k) for k in range(ids.GetNumberOfIds())])
+    return out
+
+
+class OBJElementsTest(unittest.TestCase):
+    """OBJ faces beside l and p elements, and faces with and without vn, as `shadelab normals` reads them."""
+    TRIANGLE, LINE, VERTEX = 5, 3, 1
+
+    def face_normal(self, mesh, polygon):
+        (ax, ay, az), (bx, by, bz), (cx, cy, cz) = (mesh.GetPoint(i) for i in polygon[:3])
+        u, v = (bx - ax, by - ay, bz - az), (cx - ax, cy - ay, cz - az)
+        n = (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
+        length = math.sqrt(sum(x * x for x in n))
+        return tuple(x / length for x in n)
+
+    def normals(self, text):
+        with tempfile.TemporaryDirectory() as folder:
+            path, out = os.path.join(folder, "m.obj"), os.path.join(folder, "m.vtp")
+            with open(path, "w") as f:
+                f.write(text)
+            r = run("normals", path, "-o", out)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            return read_vtp(out)
+
+    def assert_flat_faces(self, mesh):
+        """Every triangle's points carry its own face normal (sharp edges are split)."""
+        normals = mesh.GetPointData().GetNormals()
+        for polygon in cells(mesh, self.TRIANGLE):
+            for i in polygon:
+                for got, want in zip(normals.GetTuple(i), self.face_normal(mesh, polygon)):
+                    self.assertAlmostEqual(got, want, places=6)
+
+    def test_faces_with_lines_and_points(self):
+        mesh = self.normals("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nl 1 2\np 3\n")
+        self.assertEqual(mesh.GetNumberOfPoints(), 3)
+        self.assertEqual(cells(mesh, self.TRIANGLE), [[0, 1, 2]])
+        self.assertEqual(cells(mesh, self.LINE), [[0, 1]])
+        self.assertEqual(cells(mesh, self.VERTEX), [[2]])
+        self.assertEqual(self.face_normal(mesh, [0, 1, 2]), (0.0, 0.0, 1.0))
+        self.assert_flat_faces(mesh)
+
+    def test_faces_with_and_without_normals(self):
+        # Both faces are read; the file's vn covers only the first, so the normals are computed.
+        mesh = self.normals("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvn 0 0 1\nf 1//1 2//1 3//1\nf 1 2 4\n")
+        triangles = cells(mesh, self.TRIANGLE)
+        self.assertEqual(len(triangles), 2)
+        corners = sorted(sorted(mesh.GetPoint(i) for i in t) for t in triangles)
+        self.assertEqual(corners, [[(0, 0, 0), (0, 0, 1), (1, 0, 0)], [(0, 0, 0), (0, 1, 0), (1, 0, 0)]])
+        # The triangles meet at a right angle: (0, 0, 1) and, oriented alike across their shared edge, (0, 1, 0).
+        self.assertEqual(sorted(self.face_normal(mesh, t) for t in triangles), [(0.0, 0.0, 1.0), (0.0, 1.0, 0.0)])
+        self.assert_flat_faces(mesh)
+
+
 if __name__ == "__main__":
     unittest.main(verbosity=2)

@@ -5,6 +5,9 @@
 #include "VTKErrors.h"
 
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkIdList.h>
 #include <vtkNew.h>
 #include <vtkPLYWriter.h>
 #include <vtkPointData.h>
@@ -21,6 +24,7 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <vector>
 
 namespace
 {
@@ -127,6 +131,63 @@ TEST(MeshReader, ObjCornersAreMergedButUVSeamsStay)
   // Corners: 6. Vertex 3 (same UV twice) merges; vertex 1 keeps two UVs.
   EXPECT_EQ(r.mesh->GetNumberOfPoints(), 5);
   EXPECT_NE(r.mesh->GetPointData()->GetTCoords(), nullptr);
+}
+
+TEST(MeshReader, OBJLinesPointsAndFacesWithoutNormalsKeepEveryCell)
+{
+  // vtkOBJReader 9.1 labels only faces in its "GroupIds" array and drops the
+  // faces without vn beside faces with one; every cell is read here.
+  const TestFolder folder;
+  const auto cell = [](vtkCellArray* cells, vtkIdType c) {
+    vtkNew<vtkIdList> ids;
+    cells->GetCellAtId(c, ids);
+    return std::vector<vtkIdType>(ids->begin(), ids->end());
+  };
+  const auto arraysFit = [](vtkPolyData* mesh) {
+    for (int a = 0; a < mesh->GetCellData()->GetNumberOfArrays(); ++a)
+    {
+      EXPECT_EQ(mesh->GetCellData()->GetArray(a)->GetNumberOfTuples(), mesh->GetNumberOfCells());
+    }
+  };
+  folder.write("lines.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nl 1 2\np 3\n");
+  ReadResult r = read(folder.path("lines.obj"));
+  ASSERT_EQ(r.error, "");
+  ASSERT_EQ(r.mesh->GetNumberOfPoints(), 3);
+  ASSERT_EQ(r.mesh->GetNumberOfCells(), 3);
+  EXPECT_EQ(cell(r.mesh->GetPolys(), 0), std::vector<vtkIdType>({ 0, 1, 2 }));
+  EXPECT_EQ(cell(r.mesh->GetLines(), 0), std::vector<vtkIdType>({ 0, 1 }));
+  EXPECT_EQ(cell(r.mesh->GetVerts(), 0), std::vector<vtkIdType>({ 2 }));
+  arraysFit(r.mesh);
+
+  folder.write("mixed.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvn 0 0 1\nf 1//1 2//1 3//1\nf 1 2 4\n");
+  r = read(folder.path("mixed.obj"));
+  ASSERT_EQ(r.error, "");
+  ASSERT_EQ(r.mesh->GetNumberOfPolys(), 2);
+  EXPECT_EQ(r.mesh->GetNumberOfPoints(), 4);
+  EXPECT_EQ(cell(r.mesh->GetPolys(), 0), std::vector<vtkIdType>({ 0, 1, 2 }));
+  EXPECT_EQ(cell(r.mesh->GetPolys(), 1), std::vector<vtkIdType>({ 0, 1, 3 }));
+  // The second face's points have no normal in the file: none is made up.
+  EXPECT_EQ(r.mesh->GetPointData()->GetNormals(), nullptr);
+  arraysFit(r.mesh);
+
+  // With groups the file goes to vtkOBJReader, whose GroupIds has a value
+  // per face only: the lines and points get the group -1.
+  folder.write("groups.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\ng a\nf 1 2 3\nl 1 2\ng b\nf 1 2 4\np 3\n");
+  r = read(folder.path("groups.obj"));
+  ASSERT_EQ(r.error, "");
+  ASSERT_EQ(r.mesh->GetNumberOfPolys(), 2);
+  ASSERT_EQ(r.mesh->GetNumberOfLines(), 1);
+  ASSERT_EQ(r.mesh->GetNumberOfVerts(), 1);
+  vtkDataArray* groups = r.mesh->GetCellData()->GetArray("GroupIds");
+  ASSERT_NE(groups, nullptr);
+  std::vector<double> groupOfCell;
+  for (vtkIdType c = 0; c < groups->GetNumberOfTuples(); ++c)
+  {
+    groupOfCell.push_back(groups->GetTuple1(c));
+  }
+  // VTK's cell order: the vertex cell, the line, then the faces of a and b.
+  EXPECT_EQ(groupOfCell, std::vector<double>({ -1, -1, 0, 1 }));
+  arraysFit(r.mesh);
 }
 
 TEST(MeshReader, ReadsOFFWithNgonsAndComments)

@@ -3,6 +3,7 @@
 // file, each legacy cell list adds up to its size, and METADATA blocks hold
 // what VTK reads without looping for ever. vtkPolyDataReader reads past the
 // end of a short section (and crashes there).
+#include "slMeshAttributeCheck.h"
 #include "slMeshFileCheck.h"
 
 #include "shadelab/PrintableText.h"
@@ -192,6 +193,12 @@ int typeSize(std::string type)
   return -1;
 }
 
+std::string upper(std::string s)
+{
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::toupper(c); });
+  return s;
+}
+
 class Walker
 {
 public:
@@ -294,6 +301,7 @@ public:
     this->Components = components;
     if (!this->Binary)
     {
+      const bool asFloat = upper(type) == "FLOAT";
       for (long long i = 0; i < n; ++i)
       {
         const std::string text = this->word(("value " + std::to_string(i + 1) + " of " + std::to_string(n) + " of " + section).c_str());
@@ -303,6 +311,14 @@ public:
         {
           fail("line " + std::to_string(this->line()) + ": " + section + ": \"" + shadelab::printableText(text) +
             "\" is not a number");
+        }
+        // VTK reads each value with >>, which reads no "nan" or "inf" and
+        // fails on a float beyond float range: it would stop there and take
+        // the value for the next keyword ("Unrecognized keyword: nan").
+        const std::string finite = slNonFiniteTextProblem(text, asFloat);
+        if (!finite.empty())
+        {
+          fail("line " + std::to_string(this->line()) + ": " + section + ": " + finite);
         }
         if (keep)
         {
@@ -543,12 +559,6 @@ private:
   mutable size_t CountedTo = 0;      // line(): where the newlines were counted up to
   mutable std::ptrdiff_t LinesBefore = 0; // and how many there were
 };
-
-std::string upper(std::string s)
-{
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::toupper(c); });
-  return s;
-}
 
 void fieldArrays(Walker& w, const std::string& section)
 {

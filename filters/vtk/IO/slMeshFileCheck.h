@@ -34,4 +34,10 @@ std::string slGLTFProblem(const std::string& fileName, bool binary);
 std::string slVTPProblem(const std::string& fileName);
 std::string slLegacyVTKProblem(const std::string& fileName);
 
+/// For a VTP file slVTPProblem() passed and VTK's reader then failed on: the
+/// DataArray whose compressed data does not uncompress, and the block, or
+/// "". VTK's compressors name neither; this uncompresses the data a second
+/// time, so it runs only once VTK's reader has failed.
+std::string slVTPDataProblem(const std::string& fileName);
+
 #endif

@@ -5,12 +5,14 @@
 #include "slErrorCapture.h"
 #include "slFileExtension.h"
 #include "slMeshArraysVTK.h"
+#include "slMeshAttributeCheck.h"
 #include "slMeshFileCheck.h"
 #include "slOBJFormat.h"
 #include "slOFFParser.h"
 #include "slPLYFormat.h"
 #include "slPointWelding.h"
 
+#include "shadelab/InputFile.h"
 #include "shadelab/PrintableText.h"
 
 #include <vtkAlgorithm.h>
@@ -37,7 +39,6 @@
 #include <vtkXMLPolyDataReader.h>
 
 #include <cmath>
-#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <new>
@@ -138,6 +139,35 @@ std::string arrayLengthProblem(vtkDataSetAttributes* data, vtkIdType expected, c
     }
   }
   return std::string();
+}
+
+/// vtkOBJReader 9.1 gives its cell array "GroupIds" a value per face only,
+/// although VTK orders a mesh's vertex and line cells (OBJ "p" and "l")
+/// before its faces. Gives those cells the group -1 (the reader records none
+/// for them), so that the array has a value per cell again.
+void completeOBJGroupIds(vtkPolyData* mesh)
+{
+  vtkDataArray* groups = mesh->GetCellData()->GetArray("GroupIds");
+  const vtkIdType others = mesh->GetNumberOfVerts() + mesh->GetNumberOfLines();
+  if (!groups || others == 0 || groups->GetNumberOfComponents() != 1 ||
+    groups->GetNumberOfTuples() != mesh->GetNumberOfPolys() + mesh->GetNumberOfStrips())
+  {
+    return;
+  }
+  vtkSmartPointer<vtkDataArray> complete;
+  complete.TakeReference(groups->NewInstance());
+  complete->SetName(groups->GetName());
+  complete->SetNumberOfTuples(others + groups->GetNumberOfTuples());
+  for (vtkIdType c = 0; c < others; ++c)
+  {
+    complete->SetTuple1(c, -1.0);
+  }
+  for (vtkIdType f = 0; f < groups->GetNumberOfTuples(); ++f)
+  {
+    complete->SetTuple1(others + f, groups->GetTuple1(f));
+  }
+  mesh->GetCellData()->RemoveArray("GroupIds");
+  mesh->GetCellData()->AddArray(complete);
 }
 
 /// All polygonal leaves of a composite dataset (glTF meshes and primitives)
@@ -266,10 +296,10 @@ int slMeshReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInform
   {
     return this->Fail("unsupported mesh format \"" + ext + "\" (supported: " + GetSupportedExtensions() + ")");
   }
-  std::error_code ignored;
-  if (std::filesystem::is_directory(this->FileName, ignored))
+  const std::string fileProblem = shadelab::inputFileProblem(this->FileName, "a mesh file");
+  if (!fileProblem.empty())
   {
-    return this->Fail("is a directory, not a mesh file");
+    return this->Fail(fileProblem);
   }
   std::ifstream probe(this->FileName, std::ios::binary);
   if (!probe)
@@ -312,8 +342,11 @@ int slMeshReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInform
     }
     if (errors->HasError())
     {
+      // VTK's compressors say that data did not uncompress, not which: the
+      // VTP check finds the array and block.
+      const std::string dataProblem = ext == ".vtp" ? slVTPDataProblem(this->FileName) : std::string();
       // VTK's messages may quote bytes of the file.
-      return this->Fail(shadelab::printableText(errors->GetError(), 200));
+      return this->Fail(!dataProblem.empty() ? dataProblem : shadelab::printableText(errors->GetError(), 200));
     }
     vtkSmartPointer<vtkPolyData> read = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
     if (auto* composite = vtkCompositeDataSet::SafeDownCast(reader->GetOutputDataObject(0)))
@@ -325,6 +358,10 @@ int slMeshReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInform
       return this->Fail("the file does not hold polygonal data (vtkPolyData)");
     }
     mesh->DeepCopy(read);
+    if (ext == ".obj")
+    {
+      completeOBJGroupIds(mesh);
+    }
     // Before anything follows the cells (point merging, the filters).
     std::string cellProblem = slConnectivityProblem(mesh);
     if (cellProblem.empty())
@@ -361,6 +398,13 @@ int slMeshReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInform
   if (bad >= 0)
   {
     return this->Fail("point " + std::to_string(bad) + " has a NaN or infinite coordinate");
+  }
+  // Every format's normals, texture coordinates and tangents, as the filters
+  // would carry a NaN into their output.
+  const std::string attributeProblem = slNonFiniteAttributeProblem(mesh);
+  if (!attributeProblem.empty())
+  {
+    return this->Fail(attributeProblem);
   }
   output->ShallowCopy(mesh);
   return 1;

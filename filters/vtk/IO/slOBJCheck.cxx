@@ -1,6 +1,7 @@
 // OBJ: every index of an f, l or p line names an existing v, vt or vn,
 // every v, vt and vn value is a finite number, and nothing in the file makes
 // vtkOBJReader read or write out of bounds.
+#include "slMeshAttributeCheck.h"
 #include "slMeshFileCheck.h"
 
 #include "shadelab/PrintableText.h"
@@ -76,23 +77,16 @@ std::string numberProblem(const std::string& token)
 {
   errno = 0;
   char* end = nullptr;
-  const double value = std::strtod(token.c_str(), &end);
+  std::strtod(token.c_str(), &end);
   const bool decimal = token.find_first_of("xXpP") == std::string::npos;
   if (end == token.c_str() || *end != '\0' || !decimal)
   {
     return "\"" + shadelab::printableText(token) + "\" is not a number";
   }
-  if (!std::isfinite(value))
-  {
-    return "coordinate \"" + shadelab::printableText(token) + "\" is not a finite number";
-  }
   // vtkOBJReader reads values into floats with a stream, which fails on a
   // value beyond float range and leaves the line's other values unset.
-  if (std::isinf(std::strtof(token.c_str(), nullptr)))
-  {
-    return "coordinate \"" + shadelab::printableText(token) + "\" is beyond the range of float";
-  }
-  return std::string();
+  const std::string finite = slNonFiniteTextProblem(token, true);
+  return finite.empty() ? finite : "coordinate " + finite;
 }
 
 /// Resolves one index of kind @p what (1-based, or negative: relative to the

@@ -2,6 +2,7 @@
 // the header announces, with list counts that fit their line (ASCII) or the
 // file (binary) and face indices that name existing vertices. VTK's PLY code
 // calls exit() at an early end of file and reads past a line's values.
+#include "slMeshAttributeCheck.h"
 #include "slMeshFileCheck.h"
 
 #include "shadelab/PrintableText.h"
@@ -12,6 +13,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <vector>
 
@@ -76,6 +78,21 @@ int typeSize(const std::string& type, bool& isFloat, bool& isSigned)
 bool isFaceIndexList(const Element& e, const Property& p)
 {
   return e.name == "face" && p.countSize > 0 && (p.name == "vertex_indices" || p.name == "vertex_index");
+}
+
+/// Whether vtkPLYReader reads @p p of @p e into the normals or texture
+/// coordinates, as floats: a NaN or infinity there would reach the filters.
+/// (It reads no other float property but x, y, z, which slMeshReader checks
+/// as points.)
+bool isFloatAttribute(const Element& e, const Property& p)
+{
+  if (e.name == "face")
+  {
+    return p.countSize > 0 && p.name == "texcoord";
+  }
+  static const char* const names[] = { "nx", "ny", "nz", "u", "v", "texture_u", "texture_v" };
+  return e.name == "vertex" && p.countSize == 0 &&
+    std::find(std::begin(names), std::end(names), p.name) != std::end(names);
 }
 
 std::string indexRange(long long index, unsigned long long vertices)
@@ -350,6 +367,11 @@ std::string asciiBody(std::istream& in, long lineNumber, const std::vector<Eleme
           if (!parseToken(token, !p.isFloat, number))
           {
             return where + "\"" + shadelab::printableText(token) + "\" is not a number";
+          }
+          const std::string finite = isFloatAttribute(e, p) ? slNonFiniteTextProblem(token, true) : std::string();
+          if (!finite.empty())
+          {
+            return where + shadelab::printableText(p.name) + " " + finite;
           }
           if (isFaceIndexList(e, p) && !p.isFloat && (number < 0 || static_cast<unsigned long long>(number) >= vertices))
           {
