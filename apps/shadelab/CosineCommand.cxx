@@ -47,8 +47,8 @@ int runCosine(const std::vector<std::string>& args)
   return runMeshJobs("cosine", jobs, [&](const MeshJob& job) {
     filter->SetInputData(loadMeshWithNormals(job.input));
     runLitFilter(filter, job.input);
-    writeFieldImageIfAsked(
-      cl, filter->GetOutput(), scene, cl.has("light") ? "CosThetaRaw,CosTheta" : "CosThetaRaw_0,CosTheta_0");
+    writeFieldImageIfAsked(cl, filter->GetOutput(), scene,
+      cl.has("light") ? "CosThetaRaw,CosTheta" : "CosThetaRaw_0,CosTheta_0", job.output);
     writeMesh(filter->GetOutput(), job.output, cl);
     std::cout << "wrote " << job.output << "\n";
   });

@@ -3,6 +3,7 @@
 #include "CommandLine.h"
 #include "MaterialOptions.h"
 
+#include "shadelab/AtomicFile.h"
 #include "shadelab/DefaultScene.h"
 #include "shadelab/Scene.h"
 #include "slImageWriter.h"
@@ -189,6 +190,15 @@ void writeImage(vtkImageData* image, const std::string& path)
   writer->SetInputData(image);
   writer->SetFileName(path.c_str());
   slCallOrThrow(writer, [&] { return writer->Write(); });
+}
+
+void checkOutputsCanBeCreated(const std::vector<std::string>& paths)
+{
+  for (const std::string& path : paths)
+  {
+    // Creates the temporary file the write would make, and removes it.
+    const AtomicOutput probe(path);
+  }
 }
 
 } // namespace app

@@ -75,6 +75,13 @@ void writeMesh(vtkPolyData* mesh, const std::string& path, const CommandLine& cl
 /// Writes an image all-or-nothing. Throws shadelab::Error.
 void writeImage(vtkImageData* image, const std::string& path);
 
+/// Throws shadelab::Error as a write would ("PATH: cannot create output
+/// file: REASON") unless a file can be created beside each of @p paths (its
+/// folder exists and takes new files). A command that writes several files
+/// asks first: each write is all-or-nothing, but a later one failing would
+/// leave the earlier ones replaced.
+void checkOutputsCanBeCreated(const std::vector<std::string>& paths);
+
 } // namespace app
 } // namespace shadelab
 

@@ -62,7 +62,7 @@ int runLight(const std::vector<std::string>& args)
   return runMeshJobs("light", jobs, [&](const MeshJob& job) {
     filter->SetInputData(loadMeshWithNormals(job.input));
     runLitFilter(filter, job.input);
-    writeFieldImageIfAsked(cl, filter->GetOutput(), scene, "Ambient,Diffuse,Specular,Radiance");
+    writeFieldImageIfAsked(cl, filter->GetOutput(), scene, "Ambient,Diffuse,Specular,Radiance", job.output);
     writeMesh(filter->GetOutput(), job.output, cl);
     std::cout << "wrote " << job.output << "\n";
   });

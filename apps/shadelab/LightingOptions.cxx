@@ -99,13 +99,16 @@ namespace shadelab
 namespace app
 {
 
-void writeFieldImageIfAsked(
-  const CommandLine& cl, vtkPolyData* mesh, slScene* scene, const std::string& defaultFields)
+void writeFieldImageIfAsked(const CommandLine& cl, vtkPolyData* mesh, slScene* scene, const std::string& defaultFields,
+  const std::string& meshOutput)
 {
   if (!cl.has("image"))
   {
     return;
   }
+  // The mesh is written after the image: a mesh output that cannot be made
+  // must stop the command before the image replaces an existing file.
+  checkOutputsCanBeCreated({ cl.get("image"), meshOutput });
   vtkNew<slFieldImageRenderer> image;
   image->SetMesh(mesh);
   image->SetScene(scene);

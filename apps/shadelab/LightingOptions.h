@@ -41,9 +41,11 @@ void runLitFilter(slLitFilter* filter, const std::string& meshPath);
 /// With --image FILE: renders the arrays named by --fields (comma-separated,
 /// default @p defaultFields) of @p mesh colour-mapped with scalar bars and the
 /// scene's lights as glyphs (slFieldImageRenderer) and writes FILE. Call it
-/// before writing the mesh: a failed rendering then leaves nothing written.
-void writeFieldImageIfAsked(
-  const CommandLine& cl, vtkPolyData* mesh, slScene* scene, const std::string& defaultFields);
+/// before writing the mesh to @p meshOutput, which it first checks can be
+/// created: a failed rendering, or a mesh output that cannot be made, then
+/// leaves nothing written.
+void writeFieldImageIfAsked(const CommandLine& cl, vtkPolyData* mesh, slScene* scene, const std::string& defaultFields,
+  const std::string& meshOutput);
 
 } // namespace app
 } // namespace shadelab

@@ -6,6 +6,7 @@
 #include "Inputs.h"
 #include "LightingOptions.h"
 #include "MaterialOptions.h"
+#include "MeshJobs.h"
 #include "OutputFormats.h"
 
 #include "shadelab/AtomicFile.h"
@@ -27,6 +28,7 @@
 #include <vtkPolyData.h>
 #include <vtkTable.h>
 
+#include <algorithm>
 #include <iostream>
 #include <cctype>
 #include <memory>
@@ -103,6 +105,11 @@ std::vector<OptionSpec> lobeOptions()
 {
   std::vector<OptionSpec> specs =
     withMaterialOptions(litOptions(), "default: the scene's with MESH, else shininess 20 and the default scene's others");
+  // --image and --fields draw the arrays of a lit mesh beside it; lobe draws
+  // its own images (-o LOBE.png, -o LOBES.png), so they are not offered.
+  specs.erase(std::remove_if(specs.begin(), specs.end(),
+                [](const OptionSpec& spec) { return spec.name == "image" || spec.name == "fields"; }),
+    specs.end());
   specs.push_back({ "incidence", "", "DEG", "angle of incidence from the normal (single lobe; default 45)" });
   specs.push_back({ "kd", "", "X", "k_d (single lobe; default 0)" });
   specs.push_back({ "ks", "", "X", "k_s (single lobe; default 1)" });
@@ -151,6 +158,10 @@ int runLobe(const std::vector<std::string>& args)
   const OutputKind kind = cl.has("albedo-table") ? checkOutputName(output, { OutputKind::Table })
                                                  : checkOutputName(output, { OutputKind::Mesh, OutputKind::Image });
   checkOutputOption(cl, "slice", { OutputKind::Mesh });
+  if (cl.has("slice"))
+  {
+    checkDistinctOutputs({ { "-o/--output", output }, { "--slice", cl.get("slice") } });
+  }
   const std::vector<BrdfChoice> brdfs = brdfChoices(cl);
   std::vector<std::string> brdfNames;
   for (const BrdfChoice& choice : brdfs)
@@ -246,12 +257,16 @@ int runLobe(const std::vector<std::string>& args)
       printAlbedos(brdfNames, { evaluators[0]->AlbedoAtIncidence(lobe->GetIncidenceAngle()) },
         lobe->GetIncidenceAngle());
     }
-    writeMesh(lobe->GetOutput(0), output, cl);
     if (cl.has("slice"))
     {
+      // A missing or read-only folder of either file fails here, before
+      // anything is written; then the slice, as --image elsewhere, goes
+      // before the main output, which a failed slice leaves as it was.
+      checkOutputsCanBeCreated({ cl.get("slice"), output });
       writeMesh(lobe->GetSliceOutput(), cl.get("slice"), cl);
       std::cout << "wrote " << cl.get("slice") << "\n";
     }
+    writeMesh(lobe->GetOutput(0), output, cl);
   }
   else
   {

@@ -69,19 +69,37 @@ std::vector<MeshJob> meshJobs(const CommandLine& cl)
   }
   checkOutputName("--format ." + extension, { OutputKind::Mesh });
   std::vector<MeshJob> jobs;
-  std::map<std::string, std::string> writers; // output -> the input that writes it
+  std::vector<std::pair<std::string, std::string>> writers; // (input, the output it writes)
   for (const std::string& mesh : meshes)
   {
     const std::string path =
       (std::filesystem::path(output) / std::filesystem::path(mesh).stem()).string() + "." + extension;
-    const auto [at, added] = writers.emplace(path, mesh);
-    if (!added)
-    {
-      throw UsageError(at->second + " and " + mesh + " would both write " + path);
-    }
+    writers.emplace_back(mesh, path);
     jobs.push_back({ mesh, path });
   }
+  checkDistinctOutputs(writers);
   return jobs;
+}
+
+std::string outputIdentity(const std::string& path)
+{
+  std::error_code error;
+  const std::filesystem::path absolute = std::filesystem::absolute(path, error);
+  const std::filesystem::path identity = error ? absolute : std::filesystem::weakly_canonical(absolute, error);
+  return error ? std::filesystem::path(path).lexically_normal().string() : identity.string();
+}
+
+void checkDistinctOutputs(const std::vector<std::pair<std::string, std::string>>& outputs)
+{
+  std::map<std::string, std::string> writers; // identity -> what writes it first
+  for (const auto& [writer, path] : outputs)
+  {
+    const auto [at, added] = writers.emplace(outputIdentity(path), writer);
+    if (!added)
+    {
+      throw UsageError(at->second + " and " + writer + " would both write " + path);
+    }
+  }
 }
 
 void checkSingleMeshOption(const CommandLine& cl, const std::string& option, const std::vector<MeshJob>& jobs)

@@ -14,6 +14,7 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace shadelab
@@ -39,6 +40,15 @@ std::vector<OptionSpec> withMeshJobOptions(std::vector<OptionSpec> specs);
 /// --format without a folder, or not a mesh format; two MESH arguments that
 /// would write the same file.
 std::vector<MeshJob> meshJobs(const CommandLine& cl);
+
+/// The file @p path names, to tell whether two outputs are one file: made
+/// absolute, with "." and ".." resolved and existing symbolic links followed.
+std::string outputIdentity(const std::string& path);
+
+/// A UsageError "A and B would both write PATH" if two of @p outputs, each
+/// (what writes it, its path), name one file by outputIdentity(): the
+/// second write would replace the first.
+void checkDistinctOutputs(const std::vector<std::pair<std::string, std::string>>& outputs);
 
 /// A UsageError if option @p option of @p cl, which names one file for one
 /// MESH (such as --image), is given for a batch of several.

@@ -90,7 +90,8 @@ int runReference(const std::vector<std::string>& args)
   filter->SetDirectionalLightAngle(cl.getNumber("sun-angle", 0.5, 1e-4, 45.0));
   filter->SetInputData(loadMeshWithNormals(meshPath));
   runLitFilter(filter, meshPath);
-  writeFieldImageIfAsked(cl, filter->GetOutput(), scene, "Radiance,DiscreteRadiance,RadianceError,RadianceStdError");
+  writeFieldImageIfAsked(
+    cl, filter->GetOutput(), scene, "Radiance,DiscreteRadiance,RadianceError,RadianceStdError", cl.get("output"));
   writeMesh(filter->GetOutput(), cl.get("output"), cl);
   printSummary(filter->GetOutput());
   std::cout << "wrote " << cl.get("output") << "\n";

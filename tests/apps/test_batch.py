@@ -3,6 +3,7 @@ a run of its own would give, a failing mesh is one line and does not stop
 the others, and name clashes and misuse are refused before any work."""
 import filecmp
 import os
+import struct
 import subprocess
 import tempfile
 import unittest
@@ -11,6 +12,12 @@ SHADELAB = os.environ["SHADELAB_EXE"]
 SPOT = os.path.join(os.environ["SHADELAB_DATA_DIR"], "meshes", "spot.obj")
 TETRA = b"OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"
 BAD = b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"
+# Three points in uncompressed appended data, under a negative point count.
+NEGATIVE_VTP = (b'<VTKFile type="PolyData" version="0.1" byte_order="LittleEndian" header_type="UInt32">\n'
+                b'<PolyData>\n<Piece NumberOfPoints="-1" NumberOfPolys="0">\n<Points><DataArray type="Float32" '
+                b'Name="Points" NumberOfComponents="3" format="appended" offset="0"/></Points>\n</Piece>\n'
+                b'</PolyData>\n<AppendedData encoding="raw">\n_' + struct.pack("<I9f", 36, 0, 0, 0, 1, 0, 0, 0, 1, 0) +
+                b'\n</AppendedData>\n</VTKFile>\n')
 
 
 COMMANDS = {"normals": ["--weighting", "area"], "light": ["--model", "phong"], "cosine": ["--no-cells"]}
@@ -50,6 +57,16 @@ class BatchTest(unittest.TestCase):
         r = shadelab("normals", SPOT, "tet.off", "-o", "out", "--format", "ply", cwd=self.work)
         self.assertEqual(r.returncode, 0, r.stderr)
         self.assertEqual(sorted(os.listdir(os.path.join(self.work, "out"))), ["spot.ply", "tet.ply"])
+
+    def test_a_file_vtk_would_crash_on_does_not_stop_the_rest(self):
+        # VTK's XML reader read the data before the array's start, and the
+        # crash took the meshes after it with it.
+        with open(os.path.join(self.work, "neg.vtp"), "wb") as f:
+            f.write(NEGATIVE_VTP)
+        r = shadelab("normals", "neg.vtp", "tet.off", "-o", "out", cwd=self.work)
+        self.assertEqual(r.returncode, 1)
+        self.assertEqual(r.stderr, "shadelab normals: neg.vtp: NumberOfPoints=-1 is negative\n")
+        self.assertEqual(os.listdir(os.path.join(self.work, "out")), ["tet.vtp"])
 
     def test_misuse_is_refused_before_any_work(self):
         with open(os.path.join(self.work, "spot.off"), "wb") as f:

@@ -44,6 +44,31 @@ def brdf_case(name, data, message, extra=()):
             "shadelab lobe: " + message + "\n")
 
 
+def ply_ascii_attributes(second_row):
+    """An ASCII PLY tetrahedron with point normals and u, v; line 16 is
+    @second_row (vertex 1)."""
+    header = ply_header(b"ascii", 4, 4).replace(
+        b"property float z\n", b"property float z\nproperty float nx\nproperty float ny\nproperty float nz\n"
+        b"property float u\nproperty float v\n")
+    return (header + b"0 0 0 -1 -1 -1 0 0\n" + second_row + b"0 1 0 0 1 0 0 1\n0 0 1 0 0 1 1 1\n"
+            b"3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n")
+
+
+def legacy_vtk_binary(point_data):
+    """A binary legacy VTK triangle followed by POINT_DATA 3 and @point_data."""
+    return (b"# vtk DataFile Version 3.0\nbad input\nBINARY\nDATASET POLYDATA\nPOINTS 3 float\n" +
+            struct.pack(">9f", 0, 0, 0, 1, 0, 0, 0, 1, 0) + b"\nPOLYGONS 1 4\n" + struct.pack(">4i", 3, 0, 1, 2) +
+            b"\nPOINT_DATA 3\n" + point_data)
+
+
+def half_exr(*values):
+    """An uncompressed OpenEXR 1 pixel wide, a row (top first) per 16-bit
+    half @values in its channel Y, with the offset table."""
+    start = len(exr_scanlines(len(values))) + 8 * len(values)
+    return exr_scanlines(len(values), tail=b"".join(struct.pack("<Q", start + 10 * y) for y in range(len(values))) +
+                         b"".join(struct.pack("<iiH", y, 2, v) for y, v in enumerate(values)))
+
+
 CASES = [
     # OBJ
     mesh_case("obj index beyond vertices", "a.obj", obj(b"f 1 2 9\n"), 'line 4: vertex index 9 is out of range [1, 3]'),
@@ -84,6 +109,11 @@ CASES = [
               "line 4: usemtl name of 100 bytes is longer than the 99 that VTK's OBJ reader holds"),
     mesh_case("obj line index beyond", "a.obj", obj(b"l 1 5\n"), 'line 4: vertex index 5 is out of range [1, 3]'),
     mesh_case("obj point index beyond", "a.obj", obj(b"p 4\n"), 'line 4: vertex index 4 is out of range [1, 3]'),
+    # ShadeLab's own parser reads faces with l and p elements, and faces of several forms: it declines
+    # these, so the check names the line.
+    mesh_case("obj line index beyond beside a face", "a.obj", obj(b"f 1 2 3\nl 1 5\n"), 'line 5: vertex index 5 is out of range [1, 3]'),
+    mesh_case("obj nan normal beside a face without one", "a.obj", obj(b"f 1//1 2//1 3//1\nf 1 2 3\n", b"vn nan 0 1\n"),
+              'line 4: vn coordinate "nan" is not a finite number'),
     mesh_case("obj face of two corners", "a.obj", obj(b"f 1 2\n"), 'line 4: f needs at least 3 vertices, it has 2'),
     mesh_case("obj no faces", "a.obj", obj(b""), 'no polygons among its 0 cells'),
     mesh_case("obj empty", "a.obj", b"", 'the file is empty'),
@@ -260,6 +290,69 @@ CASES = [
               vtp(b"0 1 2").replace(b'<VTKFile', b'<!DOCTYPE VTKFile [<!ENTITY n "1000000000000">]>\n<VTKFile')
               .replace(b'NumberOfPoints="3"', b'NumberOfPoints="&n;"'),
               "an entity declaration, which VTK's XML files do not have"),
+    # VTK reads a negative count as it is: it read the data as far before the
+    # array as the count was below zero (a crash), compressed or not.
+    mesh_case("vtp negative point count", "a.vtp",
+              vtp_appended_base64_header(0, struct.pack("<I9f", 36, 0, 0, 0, 1, 0, 0, 0, 1, 0))
+              .replace(b'base64"', b'raw"').replace(b' compressor="vtkZLibDataCompressor"', b'')
+              .replace(b'NumberOfPoints="3"', b'NumberOfPoints="-1"'),
+              'NumberOfPoints=-1 is negative'),
+    # An LZ4 block of 36 literal bytes.
+    mesh_case("vtp negative point count with lz4", "a.vtp",
+              vtp_appended_base64_header(0, struct.pack("<4I2B9f", 1, 32768, 36, 38, 0xF0, 21, 0, 0, 0, 1, 0, 0, 0, 1, 0))
+              .replace(b'base64"', b'raw"').replace(b"vtkZLib", b"vtkLZ4")
+              .replace(b'NumberOfPoints="3"', b'NumberOfPoints="-1"'),
+              'NumberOfPoints=-1 is negative'),
+    # zlib.compress of the three points.
+    mesh_case("vtp negative point count with zlib", "a.vtp",
+              vtp_appended_base64_header(0, struct.pack("<4I", 1, 32768, 36, 16) + b"x\x9cc`@\x06\r\xf6\x0cX\xf8\x00\x14\x8a\x01\x7f")
+              .replace(b'base64"', b'raw"').replace(b'NumberOfPoints="3"', b'NumberOfPoints=" -1"'),
+              'NumberOfPoints=-1 is negative'),
+    mesh_case("vtp negative vertex count", "a.vtp", vtp(b"0 1 2").replace(b'NumberOfVerts="0"', b'NumberOfVerts="-2"'),
+              'NumberOfVerts=-2 is negative'),
+    # VTK 9.1 crashed reading a String array's appended data.
+    mesh_case("vtp string point data in appended data", "a.vtp",
+              vtp_appended_base64_header(0, struct.pack("<I9f", 36, 0, 0, 0, 1, 0, 0, 0, 1, 0) * 2)
+              .replace(b'base64"', b'raw"').replace(b' compressor="vtkZLibDataCompressor"', b'')
+              .replace(b"<Points>", b'<PointData><DataArray type="String" Name="s" NumberOfComponents="3" '
+                       b'format="appended" offset="40"/></PointData>\n<Points>'),
+              'DataArray "s": type "String" is not one of the numeric types VTK writes (Int8, UInt8, Int16, UInt16, '
+              'Int32, UInt32, Int64, UInt64, Float32, Float64)'),
+    mesh_case("vtp array without a type", "a.vtp", vtp(b"0 1 2").replace(b'type="Float32"', b'Name="Points"'),
+              'DataArray "Points": it has no type (one of the numeric types VTK writes: Int8, UInt8, Int16, UInt16, '
+              'Int32, UInt32, Int64, UInt64, Float32, Float64)'),
+    # VTK sizes a tuple buffer by the component count: -1 threw, 0 read one component.
+    mesh_case("vtp negative component count", "a.vtp",
+              vtp(b"0 1 2").replace(b'NumberOfComponents="3"', b'Name="Points" NumberOfComponents="-1"'),
+              'DataArray "Points": NumberOfComponents=-1 is less than 1'),
+    mesh_case("vtp zero component count", "a.vtp",
+              vtp(b"0 1 2").replace(b'NumberOfComponents="3"', b'Name="Points" NumberOfComponents="0"'),
+              'DataArray "Points": NumberOfComponents=0 is less than 1'),
+    mesh_case("vtp huge component count", "a.vtp",
+              vtp(b"0 1 2").replace(b'NumberOfComponents="3"', b'Name="Points" NumberOfComponents="3000000000"'),
+              'DataArray "Points": NumberOfComponents=3000000000 is more than a file of 527 bytes can hold'),
+    # VTK's compressors name no array ("Zlib error while uncompressing data.").
+    mesh_case("vtp lz4 blocks under a zlib header", "a.vtp",
+              vtp_appended_base64_header(0, struct.pack("<4I2B9f", 1, 32768, 36, 38, 0xF0, 21, 0, 0, 0, 1, 0, 0, 0, 1, 0))
+              .replace(b'base64"', b'raw"'),
+              'DataArray "Points": its block 0 of 1 does not uncompress with vtkZLibDataCompressor, the file\'s '
+              'compressor'),
+    # VTK reads data as far as the file goes and reports a short read, if at
+    # all, for a later array ("Error reading uncompressed binary data header").
+    mesh_case("vtp appended data ending within an array's data", "a.vtp",
+              vtp_appended_base64_header(0, struct.pack("<I4f", 36, 0, 0, 0, 1))
+              .replace(b'base64"', b'raw"').replace(b' compressor="vtkZLibDataCompressor"', b'')
+              .split(b"\n</AppendedData>")[0],
+              'DataArray "Points": its header declares 36 bytes of data, the file holds 16 after it'),
+    mesh_case("vtp appended data ending before an array's header", "a.vtp",
+              vtp_appended_base64_header(0, b"").replace(b'base64"', b'raw"')
+              .replace(b' compressor="vtkZLibDataCompressor"', b'').split(b"\n</AppendedData>")[0],
+              'DataArray "Points": the file ends within its header (0 of 4 bytes)'),
+    mesh_case("vtp appended data ending within compressed data", "a.vtp",
+              vtp_appended_base64_header(0, struct.pack("<4I", 1, 32768, 36, 16) + b"x\x9cc`@\x06")
+              .replace(b'base64"', b'raw"').split(b"\n</AppendedData>")[0],
+              'DataArray "Points": its compression header declares 16 bytes of compressed data, the file holds 6 '
+              'after it'),
     # legacy VTK
     mesh_case("vtk polygon of one point", "a.vtk", legacy_vtk(b"POLYGONS 2 6\n3 0 1 2\n1 0\n"),
               'polygon 1 has fewer than 3 points (1)'),
@@ -395,6 +488,62 @@ CASES = [
     mesh_case("mesh is a directory", "d.obj", None, 'is a directory, not a mesh file'),
     mesh_case("mesh missing", "nothere.obj", "skip", 'cannot open file'),
     mesh_case("mesh unsupported extension", "a.xyz", b"1 2 3\n", 'unsupported mesh format ".xyz" (supported: .obj .ply .stl .vtp .vtk .off .gltf .glb)'),
+    # Non-finite attributes
+    # Normals, texture coordinates and tangents must be finite in every format (the filters carried a
+    # NaN into their output, which ShadeLab's own OBJ reader then rejected); text formats name the line.
+    ("ply ascii infinite normal", ["tangents", "a.ply", "-o", "out.obj"],
+     {"a.ply": ply_ascii_attributes(b"1 0 0 inf 0 0 nan 0\n")}, 1,
+     'shadelab tangents: a.ply: line 16 (element "vertex" row 2 of 4): nx "inf" is not a finite number\n'),
+    mesh_case("ply ascii texture coordinate beyond float", "a.ply", ply_ascii_attributes(b"1 0 0 1 0 0 1e39 0\n"),
+              'line 16 (element "vertex" row 2 of 4): u "1e39" is beyond the range of float'),
+    mesh_case("ply ascii nan face texture coordinate", "a.ply",
+              ply_header(b"ascii", 3, 1, b"property list uchar int vertex_indices\nproperty list uchar float texcoord") +
+              b"0 0 0\n1 0 0\n0 1 0\n3 0 1 2 6 0 0 nan 0 0 1\n",
+              'line 14 (element "face" row 1 of 1): texcoord "nan" is not a finite number'),
+    # ShadeLab's own binary PLY parser takes this one.
+    mesh_case("ply binary nan normal", "a.ply",
+              ply_header(b"binary_little_endian", 3, 1).replace(
+                  b"property float z\n", b"property float z\nproperty float nx\nproperty float ny\nproperty float nz\n") +
+              struct.pack("<18f", 0, 0, 0, 0, 0, 1, 1, 0, 0, 0, 0, 1, 0, 1, 0, float("nan"), 0, 1) +
+              struct.pack("<B3i", 3, 0, 1, 2),
+              'point normals array "Normals", tuple 2: nan is not a finite number'),
+    # The filters take the point array "Tangents" by name, active or not.
+    ("vtp nan tangent", ["cosine", "a.vtp", "-o", "out.vtp"],
+     {"a.vtp": vtp(b"0 1 2").replace(b"<Points>", b'<PointData>\n<DataArray type="Float32" Name="Tangents" '
+                                     b'NumberOfComponents="4" format="ascii">1 0 0 1 1 0 0 1 nan 0 0 1</DataArray>\n'
+                                     b'</PointData>\n<Points>')}, 1,
+     'shadelab cosine: a.vtp: point tangents array "Tangents", tuple 2: nan is not a finite number\n'),
+    # Other arrays keep their NaN ("missing value"): the scalars before the normals are passed over.
+    mesh_case("vtk binary nan normal after nan scalars", "a.vtk",
+              legacy_vtk_binary(b"SCALARS temperature float 1\nLOOKUP_TABLE default\n" +
+                                struct.pack(">3f", 1, float("nan"), 2) + b"\nNORMALS n float\n" +
+                                struct.pack(">9f", 0, 0, 1, 0, 0, 1, 0, float("-inf"), 1) + b"\n"),
+              'point normals array "n", tuple 2: -inf is not a finite number'),
+    mesh_case("vtk binary nan cell normal", "a.vtk",
+              legacy_vtk_binary(b"TEXTURE_COORDINATES uv 2 float\n" + struct.pack(">6f", 0, 0, 1, 0, 0, 1) +
+                                b"\nCELL_DATA 1\nNORMALS cn float\n" + struct.pack(">3f", 0, float("nan"), 1) + b"\n"),
+              'cell normals array "cn", tuple 0: nan is not a finite number'),
+    # VTK reads ASCII values with >>, which reads no "nan" or "inf" (in any section) and fails beyond float range.
+    mesh_case("vtk ascii nan point", "a.vtk",
+              b"# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n0 0 0 1 0 0 nan 1 0\n"
+              b"POLYGONS 1 4\n3 0 1 2\n", 'line 6: POINTS: "nan" is not a finite number'),
+    mesh_case("vtk ascii normal beyond float", "a.vtk",
+              legacy_vtk(b"POLYGONS 1 4\n3 0 1 2\nPOINT_DATA 3\nNORMALS n float\n0 0 1 0 0 1e39 0 0 1\n"),
+              'line 11: NORMALS: "1e39" is beyond the range of float'),
+    mesh_case("vtk ascii nan scalar", "a.vtk",
+              legacy_vtk(b"POLYGONS 1 4\n3 0 1 2\nPOINT_DATA 3\nSCALARS s double 1\nLOOKUP_TABLE default\n0\nnan\n1\n"),
+              'line 13: SCALARS: "nan" is not a finite number'),
+    # The displacement moved points to NaN, and the error blamed the mesh.
+    ("detail displacement nan height", ["detail", "q.obj", "--displace", "h.exr", "-o", "out.vtp"],
+     {"q.obj": QUAD_OBJ, "h.exr": half_exr(0x3800, 0x7E00)}, 1,
+     'shadelab detail: q.obj: h.exr: pixel x 0, y 1 (from the top left), channel 0: nan is not a finite number\n'),
+    # The bump and normal maps gave flat normals, with exit status 0.
+    ("detail bump map nan height", ["detail", "q.obj", "--bump-map", "h.exr", "-o", "out.vtp"],
+     {"q.obj": QUAD_OBJ, "h.exr": half_exr(0x3800, 0x7E00)}, 1,
+     'shadelab detail: q.obj: h.exr: pixel x 0, y 1 (from the top left), channel 0: nan is not a finite number\n'),
+    ("detail normal map nan texel", ["detail", "q.obj", "--normal-map", "h.exr", "-o", "out.vtp"],
+     {"q.obj": QUAD_OBJ, "h.exr": half_exr(0x7C00, 0x3800)}, 1,
+     'shadelab detail: q.obj: h.exr: pixel x 0, y 0 (from the top left), channel 0: inf is not a finite number\n'),
     # scenes
     scene_case("scene number beyond double", b'{"material": {"shininess": 1e400}}', 'material.shininess: the number 1e400 is beyond the range of a double'),
     scene_case("scene number beyond double in array", b'{"background": [0.1, 0.2, -1e999]}', 'background[2]: the number -1e999 is beyond the range of a double'),
@@ -437,7 +586,7 @@ CASES = [
     image_case("hdr without pixels", "t.hdr", b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 0 +X 8\n", 'shadelab light: t.hdr: cannot read image: it has no pixels: its header declares 8x0 pixels of 3 channels\n'),
     image_case("image that is a volume", "t.jpg", dds_volume(), 'shadelab light: t.jpg: cannot read image: it holds a volume of 3 slices; ShadeLab reads 2D images only\n'),
     image_case("image missing", "nothere.png", "skip", 'shadelab light: nothere.png: cannot read image: Could not open file "nothere.png"\n'),
-    image_case("image is a directory", "d.png", None, 'shadelab light: d.png: cannot read image: it is a directory\n'),
+    image_case("image is a directory", "d.png", None, 'shadelab light: d.png: is a directory, not an image file\n'),
     # command lines
     cli_case("size overflow", ["render", "m.off", "--size", "4294967360x48", "-o", "out.png"], 'shadelab render: --size: "4294967360x48" is not WxH with 16 <= W, H <= 8192\n'),
     cli_case("size too small", ["render", "m.off", "--size", "8x8", "-o", "out.png"], 'shadelab render: --size: "8x8" is not WxH with 16 <= W, H <= 8192\n'),
@@ -514,4 +663,35 @@ CASES = [
     cli_case("brdf lobes on a mesh", ["lobe", "m.off", "--brdf", "b.brdf", "-o", "out.png"],
              "shadelab lobe: --brdf: lobes on a mesh take the scene's model; a .brdf file's lobe is drawn alone\n",
              files={"b.brdf": BRDF_SHADER}),
+    # Special files and lobe outputs
+    # Every input must be a regular file: /dev/zero grew a scene's buffer without bound and a FIFO
+    # hung the image reader (tests/apps/test_cli.py, under limits); /dev/null shows the check.
+    ("scene is a device", ["cosine", "m.off", "--scene", "/dev/null", "-o", "out.vtp"], {"m.off": TETRA_OFF}, 1,
+     "shadelab cosine: /dev/null: is not a regular file (a device, pipe or socket)\n"),
+    ("texture is a device", ["light", "q.obj", "--diffuse-texture", "/dev/null", "-o", "out.vtp"], {"q.obj": QUAD_OBJ},
+     1, "shadelab light: /dev/null: is not a regular file (a device, pipe or socket)\n"),
+    ("envmap is a device", ["reference", "m.off", "--envmap", "/dev/null", "--samples", "1", "-o", "out.vtp"],
+     {"m.off": TETRA_OFF}, 1, "shadelab reference: /dev/null: is not a regular file (a device, pipe or socket)\n"),
+    ("brdf is a device", ["lobe", "--brdf", "/dev/null", "-o", "out.png"], {}, 1,
+     "shadelab lobe: /dev/null: is not a regular file (a device, pipe or socket)\n"),
+    ("brdf is a directory", ["lobe", "--brdf", "b.brdf", "-o", "out.png"], {"b.brdf": None}, 1,
+     "shadelab lobe: b.brdf: is a directory, not a BRDF file\n"),
+    # lobe writes its outputs only when both can be made, and never one over the other.
+    cli_case("lobe slice in a missing folder", ["lobe", "--model", "phong", "-o", "out.vtp", "--slice", "nodir/s.vtp"],
+             "shadelab lobe: nodir/s.vtp: cannot create output file: No such file or directory\n", status=1),
+    cli_case("lobe in a missing folder keeps the slice", ["lobe", "--model", "phong", "-o", "nodir/l.vtp", "--slice",
+             "out.vtp"], "shadelab lobe: nodir/l.vtp: cannot create output file: No such file or directory\n", status=1),
+    cli_case("lobe slice is the output", ["lobe", "--model", "phong", "-o", "out.vtp", "--slice", "./out.vtp"],
+             "shadelab lobe: -o/--output and --slice would both write ./out.vtp\n"),
+    # The image is written first: a mesh output that cannot be made stops the command before it.
+    cli_case("cosine mesh in a missing folder keeps the image", ["cosine", "m.off", "-o", "nodir/m.vtp", "--image",
+             "out.png"], "shadelab cosine: nodir/m.vtp: cannot create output file: No such file or directory\n", status=1),
+    cli_case("reference mesh in a missing folder keeps the image", ["reference", "m.off", "-n", "1", "-o", "nodir/m.vtp",
+             "--image", "out.png"], "shadelab reference: nodir/m.vtp: cannot create output file: No such file or directory\n",
+             status=1),
+    # --image and --fields belong to cosine, light and reference; lobe draws its own images.
+    cli_case("lobe image option", ["lobe", "m.off", "-o", "out.vtp", "--image", "out.png"],
+             "shadelab lobe: unknown option --image (see --help)\n"),
+    cli_case("lobe fields option", ["lobe", "m.off", "-o", "out.vtp", "--fields", "BRDF"],
+             "shadelab lobe: unknown option --fields (see --help)\n"),
 ]

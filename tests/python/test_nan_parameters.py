@@ -8,12 +8,13 @@ import sys
 import unittest
 
 import shadelab
-from vtkmodules.vtkFiltersSources import vtkSphereSource
+from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
 from vtk_errors import update_error  # noqa: E402
 
 NAN = float("nan")
+TEXTURES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "data", "textures")
 
 
 def sphere():
@@ -32,6 +33,19 @@ def with_input(filter_class):
     return make
 
 
+def detail(filter_class, image):
+    """A detail filter on a plane with texture coordinates, reading image."""
+    def make():
+        plane = vtkPlaneSource()
+        plane.SetResolution(8, 8)
+        plane.Update()
+        f = filter_class()
+        f.SetInputData(plane.GetOutput())
+        f.SetFileName(os.path.join(TEXTURES, image))
+        return f
+    return make
+
+
 def reference():
     f = shadelab.slRadianceReference()
     f.SetInputData(sphere())
@@ -39,9 +53,12 @@ def reference():
     return f
 
 
-# (filter factory, setter name): every clamped double setter outside the
-# detail filters and the material's numbers (whose NaN the scene check reports).
+# (filter factory, setter name): every clamped double setter but the
+# material's numbers (whose NaN the scene check reports).
 CASES = [
+    (detail(shadelab.slNormalMapFilter, "bevy_parallax_cube_normal.png"), "Strength"),
+    (detail(shadelab.slBumpMapFilter, "bevy_parallax_cube_depth.png"), "Scale"),
+    (detail(shadelab.slDisplacementFilter, "bevy_parallax_cube_depth.png"), "Scale"),
     (with_input(shadelab.slPolyDataNormals), "FeatureAngle"),
     (shadelab.slAlbedoTable, "MaximumIncidence"),
     (with_input(shadelab.slLobesOnMesh), "Scale"),

@@ -2,6 +2,7 @@
 
 #include "slCoreBoundary.h"
 #include "slDetailInputs.h"
+#include "slFiniteParameters.h"
 
 #include "shadelab/LightingGLSLDouble.h"
 
@@ -29,7 +30,12 @@ int slBumpMapFilter::RequestData(vtkInformation*, vtkInformationVector** inputVe
   output->Initialize();
   slSurfaceFrames frames;
   slnormals::Texture height;
-  if (!slRunCore(this, output, [&] { slPrepareDetail(input, this->FileName, true, frames, height); }))
+  const std::string badParameter = slNonFiniteParameter({ { "Scale", this->Scale } });
+  if (!badParameter.empty())
+  {
+    return this->Fail(badParameter, output);
+  }
+  if (!slRunCore(this, output, [&] { slPrepareDetail(input, this->FileName, true, 1, frames, height); }))
   {
     return 0;
   }

@@ -14,6 +14,9 @@
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 
+#include <algorithm>
+#include <cmath>
+
 void slLoadTexture(const char* fileName, slnormals::Texture& texture)
 {
   if (!fileName || !*fileName)
@@ -39,6 +42,25 @@ void slLoadTexture(const char* fileName, slnormals::Texture& texture)
   for (vtkIdType i = 0; i < scalars->GetNumberOfValues(); ++i)
   {
     texture.texels[static_cast<size_t>(i)] = static_cast<float>(scalars->GetVariantValue(i).ToDouble());
+  }
+}
+
+void slCheckFiniteChannel(const slnormals::Texture& texture, int channel, const char* fileName)
+{
+  // Rows are stored bottom-up: the top row first, so that the pixel named is
+  // the first one an image viewer shows.
+  for (int row = 0; row < texture.height; ++row)
+  {
+    for (int x = 0; x < texture.width; ++x)
+    {
+      const float value = texture.texel(x, texture.height - 1 - row, channel);
+      if (!std::isfinite(value))
+      {
+        throw shadelab::Error(std::string(fileName) + ": pixel x " + std::to_string(x) + ", y " + std::to_string(row) +
+          " (from the top left), channel " + std::to_string(channel) + ": " +
+          (std::isnan(value) ? "nan" : value > 0 ? "inf" : "-inf") + " is not a finite number");
+      }
+    }
   }
 }
 
@@ -101,11 +123,15 @@ void slGetSurfaceFrames(vtkPolyData* input, bool needTangents, slSurfaceFrames& 
   }
 }
 
-void slPrepareDetail(vtkPolyData* input, const char* fileName, bool needTangents, slSurfaceFrames& frames,
-  slnormals::Texture& texture)
+void slPrepareDetail(vtkPolyData* input, const char* fileName, bool needTangents, int channelsRead,
+  slSurfaceFrames& frames, slnormals::Texture& texture)
 {
   slGetSurfaceFrames(input, needTangents, frames);
   slLoadTexture(fileName, texture);
+  for (int channel = 0; channel < std::min(channelsRead, texture.channels); ++channel)
+  {
+    slCheckFiniteChannel(texture, channel, fileName);
+  }
 }
 
 void slOutputWithNormals(vtkPolyData* output, vtkPolyData* mesh, const std::vector<glm::dvec3>& normals)

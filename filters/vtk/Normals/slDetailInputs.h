@@ -25,6 +25,12 @@ class vtkPolyData;
 /// shadelab::Error with the one-line problem, which names the file.
 void slLoadTexture(const char* fileName, slnormals::Texture& texture);
 
+/// Throws shadelab::Error naming @p fileName and the first pixel (from the
+/// top left, as image tools count) whose channel @p channel in @p texture is
+/// NaN or infinite, as float images (EXR, TIFF, HDR) can hold: a filter
+/// would carry it into the mesh, where it would look like the mesh's fault.
+void slCheckFiniteChannel(const slnormals::Texture& texture, int channel, const char* fileName);
+
 /// A mesh's per-point surface frames.
 struct slSurfaceFrames
 {
@@ -39,10 +45,11 @@ struct slSurfaceFrames
 /// problem (e.g. no texture coordinates).
 void slGetSurfaceFrames(vtkPolyData* input, bool needTangents, slSurfaceFrames& frames);
 
-/// slGetSurfaceFrames then slLoadTexture. Throws shadelab::Error with the
-/// first problem.
-void slPrepareDetail(vtkPolyData* input, const char* fileName, bool needTangents, slSurfaceFrames& frames,
-  slnormals::Texture& texture);
+/// slGetSurfaceFrames, slLoadTexture, then slCheckFiniteChannel on each of
+/// the first @p channelsRead channels the image has (the ones the filter
+/// samples). Throws shadelab::Error with the first problem.
+void slPrepareDetail(vtkPolyData* input, const char* fileName, bool needTangents, int channelsRead,
+  slSurfaceFrames& frames, slnormals::Texture& texture);
 
 /// @p output = @p mesh with its point array "Normals" replaced by @p normals.
 void slOutputWithNormals(vtkPolyData* output, vtkPolyData* mesh, const std::vector<glm::dvec3>& normals);

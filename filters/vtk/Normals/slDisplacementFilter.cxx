@@ -2,6 +2,7 @@
 
 #include "slCoreBoundary.h"
 #include "slDetailInputs.h"
+#include "slFiniteParameters.h"
 #include "slPolyDataNormals.h"
 #include "slUpdateOrThrow.h"
 
@@ -30,7 +31,12 @@ int slDisplacementFilter::RequestData(vtkInformation*, vtkInformationVector** in
   output->Initialize();
   slSurfaceFrames frames;
   slnormals::Texture height;
-  if (!slRunCore(this, output, [&] { slPrepareDetail(input, this->FileName, false, frames, height); }))
+  const std::string badParameter = slNonFiniteParameter({ { "Scale", this->Scale } });
+  if (!badParameter.empty())
+  {
+    return this->Fail(badParameter, output);
+  }
+  if (!slRunCore(this, output, [&] { slPrepareDetail(input, this->FileName, false, 1, frames, height); }))
   {
     return 0;
   }

@@ -14,7 +14,8 @@
  * Points at UV seams are separate points with different texture
  * coordinates: where the two sides' heights differ the surface tears. Use
  * heights that match along seams. No texture coordinates, NaN coordinates,
- * or an unreadable image give an error and an empty output.
+ * an unreadable image, or a NaN or infinite height in it (channel 0) give an
+ * error and an empty output.
  *
  * @sa slBumpMapFilter slNormalMapFilter vtkWarpVector
  */

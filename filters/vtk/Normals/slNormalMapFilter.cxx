@@ -2,6 +2,7 @@
 
 #include "slCoreBoundary.h"
 #include "slDetailInputs.h"
+#include "slFiniteParameters.h"
 
 #include "shadelab/LightingGLSLDouble.h"
 
@@ -29,7 +30,12 @@ int slNormalMapFilter::RequestData(vtkInformation*, vtkInformationVector** input
   output->Initialize();
   slSurfaceFrames frames;
   slnormals::Texture map;
-  if (!slRunCore(this, output, [&] { slPrepareDetail(input, this->FileName, true, frames, map); }))
+  const std::string badParameter = slNonFiniteParameter({ { "Strength", this->Strength } });
+  if (!badParameter.empty())
+  {
+    return this->Fail(badParameter, output);
+  }
+  if (!slRunCore(this, output, [&] { slPrepareDetail(input, this->FileName, true, 3, frames, map); }))
   {
     return 0;
   }
