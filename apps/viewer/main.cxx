@@ -4,6 +4,7 @@
 #include "ShadingPanel.h"
 #include "ViewerDocument.h"
 
+#include "shadelab/AtomicFile.h"
 #include "slOffscreen.h"
 #include "slScene.h"
 
@@ -38,6 +39,9 @@ int fail(const QString& message)
 
 int main(int argc, char** argv)
 {
+  // A screenshot or scene being saved when the viewer is killed leaves no
+  // temporary file behind (AtomicFile.h).
+  shadelab::removeTemporaryFilesOnSignals();
   const std::string display = slDisplayProblem();
   if (!display.empty() && !std::getenv("QT_QPA_PLATFORM") && !std::getenv("WAYLAND_DISPLAY"))
   {
