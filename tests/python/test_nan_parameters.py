@@ -11,7 +11,7 @@ import shadelab
 from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
-from vtk_errors import update_error  # noqa: E402
+from vtk_errors import call_error, update_error  # noqa: E402
 
 NAN = float("nan")
 TEXTURES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "data", "textures")
@@ -82,6 +82,15 @@ class NaNParameters(unittest.TestCase):
                 self.assertEqual(update_error(f), name + ": nan is not a finite number")
                 getattr(f, "Set" + name)(1.0)
                 self.assertEqual(update_error(f), "", "a finite value again")
+
+
+    def test_nan_feature_angle_stops_the_scene_renderer(self):
+        # slSceneRenderer computes normals before it draws: Prepare() checks.
+        renderer = shadelab.slSceneRenderer()
+        renderer.SetScene(shadelab.slScene())
+        renderer.SetMesh(sphere())
+        renderer.SetFeatureAngle(NAN)
+        self.assertEqual(call_error(renderer, renderer.Prepare), "FeatureAngle: nan is not a finite number")
 
 
 if __name__ == "__main__":
