@@ -4,7 +4,6 @@
 #include "ShadingPanel.h"
 #include "ViewerDocument.h"
 
-#include "shadelab/AtomicFile.h"
 #include "slOffscreen.h"
 #include "slScene.h"
 
@@ -39,9 +38,6 @@ int fail(const QString& message)
 
 int main(int argc, char** argv)
 {
-  // A screenshot or scene being saved when the viewer is killed leaves no
-  // temporary file behind (AtomicFile.h).
-  shadelab::removeTemporaryFilesOnSignals();
   const std::string display = slDisplayProblem();
   if (!display.empty() && !std::getenv("QT_QPA_PLATFORM") && !std::getenv("WAYLAND_DISPLAY"))
   {

@@ -2,10 +2,8 @@
 extensions that do not fit what a subcommand writes. A failed write leaves
 the old output byte-identical and no temporary file, and says why in one line."""
 import os
-import signal
 import subprocess
 import tempfile
-import time
 import unittest
 
 SHADELAB = os.environ["SHADELAB_EXE"]
@@ -126,66 +124,6 @@ class TemporaryFileTest(unittest.TestCase):
                     self.assertEqual(r.returncode, 0, r.stderr)
                     self.assertEqual(os.listdir(self.dir), [name])
                     os.remove(os.path.join(self.dir, name))
-
-
-class SignalTest(unittest.TestCase):
-    """Ctrl-C, SIGTERM or SIGHUP while an output is written: the process dies of
-    the signal, the old output stays byte-identical, no temporary file stays."""
-
-    @classmethod
-    def setUpClass(cls):
-        cls.folder = tempfile.TemporaryDirectory()
-        # A dense grid with a ridge every few rows: about 1.8 M points once split
-        # along its sharp edges, whose zlib VTP takes over a second to write.
-        n = 1200
-        cls.mesh = os.path.join(cls.folder.name, "grid.obj")
-        with open(cls.mesh, "w") as f:
-            f.write("".join("v %d %d %d\n" % (i % n, i // n, i * 7 % 5) for i in range(n * n)))
-            for y in range(n - 1):
-                b = y * n + 1
-                f.write("".join("f %d %d %d\nf %d %d %d\n" % (b + x, b + x + 1, b + x + n, b + x + 1, b + x + n + 1,
-                                                              b + x + n) for x in range(n - 1)))
-
-    @classmethod
-    def tearDownClass(cls):
-        cls.folder.cleanup()
-
-    def check_killed(self, signum):
-        with tempfile.TemporaryDirectory() as folder:
-            out = os.path.join(folder, "out.vtp")
-            with open(out, "wb") as f:
-                f.write(OLD)
-            # The signals' default actions, whatever this test inherited (a
-            # background job ignores SIGINT): shadelab keeps an ignored one ignored.
-            p = subprocess.Popen([SHADELAB, "normals", self.mesh, "-o", out, "--compress", "zlib"],
-                                 stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
-                                 preexec_fn=lambda: [signal.signal(s, signal.SIG_DFL)
-                                                     for s in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)])
-            try:
-                deadline = time.monotonic() + 60
-                while not any(name.startswith(".out.partial-") for name in os.listdir(folder)):
-                    self.assertIsNone(p.poll(), "shadelab ended before its temporary file was seen")
-                    self.assertLess(time.monotonic(), deadline, "no temporary file appeared")
-                    time.sleep(0.002)
-                p.send_signal(signum)
-                _, err = p.communicate(timeout=60)
-            finally:
-                if p.poll() is None:
-                    p.kill()
-                    p.wait()
-            self.assertEqual(p.returncode, -signum, err)
-            self.assertEqual(os.listdir(folder), ["out.vtp"], "no temporary file left")
-            with open(out, "rb") as f:
-                self.assertEqual(f.read(), OLD)
-
-    def test_sigterm(self):
-        self.check_killed(signal.SIGTERM)
-
-    def test_sigint(self):
-        self.check_killed(signal.SIGINT)
-
-    def test_sighup(self):
-        self.check_killed(signal.SIGHUP)
 
 
 class OutputExtensionTest(unittest.TestCase):

@@ -3,16 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <atomic>
-#include <csignal>
 #include <dirent.h>
 #include <fstream>
 #include <sstream>
 #include <sys/stat.h>
-#include <sys/wait.h>
-#include <thread>
 #include <unistd.h>
-#include <vector>
 
 using namespace shadelab;
 
@@ -42,32 +37,6 @@ std::string freshFolder()
 {
   char pattern[] = "/tmp/shadelab-atomic-XXXXXX";
   return mkdtemp(pattern);
-}
-
-/// Runs @p body in a child process (signal handlers installed there stay
-/// there) and returns its wait status.
-template <class Body>
-int inChild(Body body)
-{
-  const pid_t pid = fork();
-  if (pid == 0)
-  {
-    body();
-    _exit(0);
-  }
-  int status = 0;
-  waitpid(pid, &status, 0);
-  return status;
-}
-
-bool killedBy(int status, int signo)
-{
-  return WIFSIGNALED(status) && WTERMSIG(status) == signo;
-}
-
-[[noreturn]] void exitWith42(int)
-{
-  _exit(42);
 }
 } // namespace
 
@@ -196,87 +165,4 @@ TEST(AtomicFile, CommitWrittenRefusesAShortFile)
   std::ofstream(output.temporaryPath()) << "12345";
   output.commitWritten(5);
   EXPECT_EQ(slurp(path), "12345");
-}
-
-TEST(AtomicFile, FatalSignalRemovesTheTemporaryFileAndKills)
-{
-  const std::string folder = freshFolder();
-  const std::string path = folder + "/out.vtp";
-  writeFileAtomically(path, "old");
-  for (const int signo : { SIGINT, SIGTERM, SIGHUP })
-  {
-    const int status = inChild([&] {
-      signal(signo, SIG_DFL); // whatever this test inherited (a background job ignores SIGINT)
-      removeTemporaryFilesOnSignals();
-      AtomicOutput output(path);
-      output.write("new", 3);
-      raise(signo);
-    });
-    EXPECT_TRUE(killedBy(status, signo)) << signo << ": status " << status;
-    EXPECT_EQ(slurp(path), "old");
-    EXPECT_EQ(filesIn(folder), 1) << "no temporary file left";
-  }
-}
-
-TEST(AtomicFile, FatalSignalRemovesTheFilesOfEveryThread)
-{
-  // Threads create, commit and drop outputs while the process is killed: the
-  // signal may land on any of them, in any step.
-  const std::string folder = freshFolder();
-  const int status = inChild([&] {
-    removeTemporaryFilesOnSignals();
-    std::atomic<int> made{ 0 };
-    for (int t = 0; t < 8; ++t)
-    {
-      std::thread([&, t] {
-        for (int i = 0;; ++i)
-        {
-          AtomicOutput output(folder + "/out" + std::to_string(t) + ".txt");
-          ++made;
-          if (i % 8 == 0)
-          {
-            output.commit("x", 1);
-          }
-        }
-      }).detach();
-    }
-    while (made < 2000)
-    {
-      std::this_thread::yield();
-    }
-    kill(getpid(), SIGTERM);
-    pause();
-  });
-  EXPECT_TRUE(killedBy(status, SIGTERM)) << status;
-  DIR* dir = opendir(folder.c_str());
-  while (const dirent* entry = readdir(dir))
-  {
-    EXPECT_EQ(std::string(entry->d_name).find(".partial-"), std::string::npos) << entry->d_name;
-  }
-  closedir(dir);
-}
-
-TEST(AtomicFile, FatalSignalKeepsTheProgramsHandlerAndIgnoredSignals)
-{
-  const std::string folder = freshFolder();
-  const std::string path = folder + "/out.vtp";
-  int status = inChild([&] {
-    signal(SIGTERM, exitWith42); // the program's own
-    removeTemporaryFilesOnSignals();
-    AtomicOutput output(path);
-    raise(SIGTERM);
-  });
-  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 42) << "the program's handler ran: " << status;
-  EXPECT_EQ(filesIn(folder), 0) << "after the temporary file was removed";
-
-  status = inChild([&] {
-    signal(SIGHUP, SIG_IGN); // nohup
-    removeTemporaryFilesOnSignals();
-    AtomicOutput output(path);
-    raise(SIGHUP);
-    output.commit("new", 3);
-  });
-  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << status;
-  EXPECT_EQ(slurp(path), "new");
-  EXPECT_EQ(filesIn(folder), 1);
 }

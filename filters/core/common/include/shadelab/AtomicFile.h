@@ -13,9 +13,6 @@
  * flock() while it exists. A process killed mid-write leaves it behind
  * unlocked: the next AtomicOutput for the same target removes such files,
  * never one another live process still holds.
- *
- * A program that calls removeTemporaryFilesOnSignals() leaves none behind when
- * SIGINT, SIGTERM or SIGHUP kills it: see there.
  */
 
 #include "shadelab/Error.h"
@@ -72,33 +69,7 @@ private:
   std::string Temporary;
   int Descriptor = -1;
   bool Committed = false;
-  int Slot = -1; ///< in the registry of removeTemporaryFilesOnSignals(), -1 if none
 };
-
-/// For programs, called once at their start (again does nothing): from then
-/// on SIGINT, SIGTERM and SIGHUP first unlink the temporary file of every
-/// AtomicOutput alive in the process, whatever its thread or library, then
-/// do what they did before: kill the process as by default (the handler
-/// re-raises the signal with the default action, so the exit status says the
-/// signal killed it), or call the handler the program had installed (which, if
-/// it lets the program go on, makes those outputs fail: their files are gone;
-/// the targets stay as they were). A signal the program ignores when it calls
-/// this (`nohup`, a shell's background job) stays ignored.
-///
-/// Thread-safe: an output's temporary file is registered from its creation
-/// (with the three signals blocked in its thread meanwhile) to its rename or
-/// removal, in a fixed registry of 64 outputs at once (one more is not
-/// registered, and a signal leaves its file for the next write of its target
-/// to remove) shared by every library's copy of this code: the one symbol
-/// they export. While a handler runs, other threads wait before creating a
-/// temporary file or reporting the one it removed. The handler uses only
-/// lock-free atomics, unlink(), signal(), pthread_sigmask() and raise(), so
-/// it may interrupt any thread anywhere (inside malloc, a lock, the
-/// registry's own update).
-///
-/// Libraries never call it: a host (Python, ParaView) owns its signals, and
-/// without the call AtomicOutput registers nothing.
-void removeTemporaryFilesOnSignals();
 
 /// Writes @p bytes to @p path through an AtomicOutput. Throws shadelab::Error.
 void writeFileAtomically(const std::string& path, const std::string& bytes);
