@@ -2,6 +2,7 @@
 #include "CommandLine.h"
 #include "Commands.h"
 #include "Inputs.h"
+#include "MeshJobs.h"
 #include "NormalsOptions.h"
 #include "OutputFormats.h"
 
@@ -80,12 +81,14 @@ int runDetail(const std::vector<std::string>& args)
     filter = f;
   }
   const std::string& path = meshPath;
-  vtkSmartPointer<vtkPolyData> mesh = loadMesh(path);
-  noteNonPolygonCells(mesh, "detail", path);
-  filter->SetInputData(mesh);
-  vtkSmartPointer<vtkPolyData> out = runMeshFilter(filter, path);
-  writeMesh(out, cl.get("output"), cl);
-  std::cout << "wrote " << cl.get("output") << ": " << out->GetNumberOfPoints() << " points\n";
+  runOnMesh(path, [&] {
+    vtkSmartPointer<vtkPolyData> mesh = loadMesh(path);
+    noteNonPolygonCells(mesh, "detail", path);
+    filter->SetInputData(mesh);
+    vtkSmartPointer<vtkPolyData> out = runMeshFilter(filter, path);
+    writeMesh(out, cl.get("output"), cl);
+    std::cout << "wrote " << cl.get("output") << ": " << out->GetNumberOfPoints() << " points\n";
+  });
   return 0;
 }
 

@@ -32,12 +32,14 @@ const char* meshFormatsText()
 
 vtkSmartPointer<vtkPolyData> loadMesh(const std::string& path)
 {
-  vtkNew<slMeshReader> reader;
-  reader->SetFileName(path.c_str());
-  slUpdateOrThrow(reader);
-  vtkSmartPointer<vtkPolyData> mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->ShallowCopy(reader->GetOutput());
-  return mesh;
+  return inStep("reading", [&] {
+    vtkNew<slMeshReader> reader;
+    reader->SetFileName(path.c_str());
+    slUpdateOrThrow(reader);
+    vtkSmartPointer<vtkPolyData> mesh = vtkSmartPointer<vtkPolyData>::New();
+    mesh->ShallowCopy(reader->GetOutput());
+    return mesh;
+  });
 }
 
 vtkSmartPointer<slScene> loadScene(const std::string& path)
@@ -177,19 +179,23 @@ void writeMesh(vtkPolyData* mesh, const std::string& path, const CommandLine& cl
   // The parser has checked the name against meshCompressionOption()'s list.
   const int compression = slMeshWriter::GetCompressionByName(
     cl.get("compress", slMeshWriter::GetCompressionName(slMeshWriter::LZ4)));
-  vtkNew<slMeshWriter> writer;
-  writer->SetCompression(compression);
-  writer->SetInputData(mesh);
-  writer->SetFileName(path.c_str());
-  slCallOrThrow(writer, [&] { return writer->Write(); });
+  inStep("writing " + path, [&] {
+    vtkNew<slMeshWriter> writer;
+    writer->SetCompression(compression);
+    writer->SetInputData(mesh);
+    writer->SetFileName(path.c_str());
+    slCallOrThrow(writer, [&] { return writer->Write(); });
+  });
 }
 
 void writeImage(vtkImageData* image, const std::string& path)
 {
-  vtkNew<slImageWriter> writer;
-  writer->SetInputData(image);
-  writer->SetFileName(path.c_str());
-  slCallOrThrow(writer, [&] { return writer->Write(); });
+  inStep("writing " + path, [&] {
+    vtkNew<slImageWriter> writer;
+    writer->SetInputData(image);
+    writer->SetFileName(path.c_str());
+    slCallOrThrow(writer, [&] { return writer->Write(); });
+  });
 }
 
 void checkOutputsCanBeCreated(const std::vector<std::string>& paths)

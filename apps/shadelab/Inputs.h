@@ -10,7 +10,9 @@
 
 #include <vtkSmartPointer.h>
 
+#include <new>
 #include <string>
+#include <utility>
 #include <vector>
 
 class slScene;
@@ -23,6 +25,43 @@ namespace app
 {
 class CommandLine;
 struct OptionSpec;
+
+/// A std::bad_alloc that names the step of a command that ran out of memory
+/// ("reading", "in slPolyDataNormals", "writing out.vtp"): runOnMesh()
+/// (MeshJobs.h) puts it in its line.
+class OutOfMemory : public std::bad_alloc
+{
+public:
+  explicit OutOfMemory(std::string step)
+    : Step(std::move(step))
+  {
+  }
+  const char* what() const noexcept override { return "out of memory"; }
+  const std::string& step() const { return this->Step; }
+
+private:
+  std::string Step;
+};
+
+/// Runs @p work, the step @p step of a command, and returns what it returns:
+/// a std::bad_alloc it throws becomes an OutOfMemory naming @p step (one
+/// that names an inner step already is passed on as it is).
+template <class Work>
+decltype(auto) inStep(const std::string& step, Work&& work)
+{
+  try
+  {
+    return std::forward<Work>(work)();
+  }
+  catch (const OutOfMemory&)
+  {
+    throw;
+  }
+  catch (const std::bad_alloc&)
+  {
+    throw OutOfMemory(step);
+  }
+}
 
 /// The mesh formats loadMesh() reads, as one phrase for help and messages.
 const char* meshFormatsText();

@@ -52,7 +52,7 @@ vtkSmartPointer<vtkPolyData> loadMeshWithNormals(const std::string& path)
   normals->SplittingOff();
   normals->ConsistencyOn();
   normals->WeldCoincidentPointsOn();
-  slUpdateOrThrow(normals);
+  inStep("in slPolyDataNormals", [&] { slUpdateOrThrow(normals, path + ": "); });
   vtkSmartPointer<vtkPolyData> out = normals->GetOutput();
   return out;
 }
@@ -70,16 +70,21 @@ void runLitFilter(slLitFilter* filter, const std::string& meshPath)
 {
   try
   {
-    slUpdateOrThrow(filter);
+    inStep(std::string("in ") + filter->GetClassName(), [&] { slUpdateOrThrow(filter); });
   }
   catch (const Error& e)
   {
     // The filter knows its input only as "input mesh"; the command knows the file.
     std::string message = e.what();
     const std::string generic = "input mesh";
+    const std::string memory = "out of memory"; // VTK's allocation failures (slErrorCapture)
     if (message.compare(0, generic.size(), generic) == 0)
     {
       message = meshPath + message.substr(generic.size());
+    }
+    else if (message.compare(0, memory.size(), memory) == 0)
+    {
+      message = meshPath + ": " + message;
     }
     const std::string flag = "(ZeroNormalsAreErrors is on)";
     const size_t at = message.find(flag);

@@ -277,28 +277,30 @@ int runLobe(const std::vector<std::string>& args)
     lobes->SetLightIndex(cl.getIndex("light", -1, -1, 1000000));
     lobes->SetScale(cl.getNumber("scale", 0.1, 0.0, 100.0));
     lobes->SetMultiplyByCosine(cl.has("cosine"));
-    vtkSmartPointer<vtkPolyData> mesh = loadMeshWithNormals(meshPath);
-    lobes->SetInputData(mesh);
-    runLitFilter(lobes, meshPath);
-    if (lobes->GetNumberOfLobesDrawn() < lobes->GetNumberOfLobes())
-    {
-      std::cout << "drew " << lobes->GetNumberOfLobesDrawn() << " lobes: only that many points of " << meshPath
-                << " face the light\n";
-    }
-    if (kind == OutputKind::Image)
-    {
-      // The lit mesh with its lobes, in orange, through ShadeLab's lighting pass.
-      vtkNew<slSceneRenderer> renderer;
-      renderer->SetScene(scene);
-      renderer->SetMesh(mesh);
-      renderer->AddOverlay(lobes->GetOutput(), 1.0, 0.55, 0.1);
-      slCallOrThrow(renderer, [&] { return renderer->Render(); }, output + ": ");
-      writeImage(renderer->GetImage(), output);
-    }
-    else
-    {
-      writeMesh(lobes->GetOutput(), output, cl);
-    }
+    runOnMesh(meshPath, [&] {
+      vtkSmartPointer<vtkPolyData> mesh = loadMeshWithNormals(meshPath);
+      lobes->SetInputData(mesh);
+      runLitFilter(lobes, meshPath);
+      if (lobes->GetNumberOfLobesDrawn() < lobes->GetNumberOfLobes())
+      {
+        std::cout << "drew " << lobes->GetNumberOfLobesDrawn() << " lobes: only that many points of " << meshPath
+                  << " face the light\n";
+      }
+      if (kind == OutputKind::Image)
+      {
+        // The lit mesh with its lobes, in orange, through ShadeLab's lighting pass.
+        vtkNew<slSceneRenderer> renderer;
+        renderer->SetScene(scene);
+        renderer->SetMesh(mesh);
+        renderer->AddOverlay(lobes->GetOutput(), 1.0, 0.55, 0.1);
+        inStep("rendering", [&] { slCallOrThrow(renderer, [&] { return renderer->Render(); }, output + ": "); });
+        writeImage(renderer->GetImage(), output);
+      }
+      else
+      {
+        writeMesh(lobes->GetOutput(), output, cl);
+      }
+    });
   }
   std::cout << "wrote " << output << "\n";
   return 0;

@@ -1,6 +1,7 @@
 #include "MeshJobs.h"
 
 #include "Commands.h"
+#include "Inputs.h"
 #include "OutputFormats.h"
 
 #include <filesystem>
@@ -110,12 +111,40 @@ void checkSingleMeshOption(const CommandLine& cl, const std::string& option, con
   }
 }
 
+void runOnMesh(const std::string& input, const std::function<void()>& work)
+{
+  try
+  {
+    work();
+  }
+  catch (const Error&)
+  {
+    throw;
+  }
+  catch (const UsageError&)
+  {
+    throw;
+  }
+  catch (const OutOfMemory& e)
+  {
+    throw Error(input + ": out of memory (" + e.step() + ")");
+  }
+  catch (const std::bad_alloc&)
+  {
+    throw Error(input + ": out of memory");
+  }
+  catch (const std::exception& e)
+  {
+    throw Error(input + ": " + e.what());
+  }
+}
+
 int runMeshJobs(const std::string& command, const std::vector<MeshJob>& jobs,
   const std::function<void(const MeshJob&)>& run)
 {
   if (jobs.size() == 1)
   {
-    run(jobs[0]);
+    runOnMesh(jobs[0].input, [&] { run(jobs[0]); });
     return 0;
   }
   int failed = 0;
@@ -123,7 +152,7 @@ int runMeshJobs(const std::string& command, const std::vector<MeshJob>& jobs,
   {
     try
     {
-      run(job);
+      runOnMesh(job.input, [&] { run(job); });
     }
     catch (const std::exception& e) // anything about this MESH: the others still run
     {

@@ -54,10 +54,18 @@ void checkDistinctOutputs(const std::vector<std::pair<std::string, std::string>>
 /// MESH (such as --image), is given for a batch of several.
 void checkSingleMeshOption(const CommandLine& cl, const std::string& option, const std::vector<MeshJob>& jobs);
 
-/// Runs @p run for each of @p jobs and returns the exit status. One job runs
-/// as it is: its problem ends the command. Of several, one that fails is
-/// reported in its line ("shadelab COMMAND: PROBLEM") and the others still
-/// run; the status is then 1.
+/// Runs @p work, a command's work on the mesh @p input, so that what it
+/// cannot finish for want of memory is a shadelab::Error naming @p input:
+/// "INPUT: out of memory (STEP)" for an OutOfMemory (Inputs.h), "INPUT: out
+/// of memory" for another std::bad_alloc, and "INPUT: WHAT" for any other
+/// std::exception but shadelab::Error and UsageError (a thread that cannot
+/// start: "pthread_create has failed: ..."). Those two pass as they are.
+void runOnMesh(const std::string& input, const std::function<void()>& work);
+
+/// Runs @p run for each of @p jobs, each through runOnMesh(), and returns the
+/// exit status. One job runs as it is: its problem ends the command. Of
+/// several, one that fails is reported in its line ("shadelab COMMAND:
+/// PROBLEM") and the others still run; the status is then 1.
 int runMeshJobs(const std::string& command, const std::vector<MeshJob>& jobs,
   const std::function<void(const MeshJob&)>& run);
 

@@ -54,10 +54,12 @@ void applyNormalsOptions(const CommandLine& cl, slPolyDataNormals* filter)
 
 vtkSmartPointer<vtkPolyData> runMeshFilter(slPolyDataFilter* filter, const std::string& meshPath)
 {
-  slUpdateOrThrow(filter, meshPath + ": ");
-  auto out = vtkSmartPointer<vtkPolyData>::New();
-  out->ShallowCopy(vtkPolyData::SafeDownCast(filter->GetOutputDataObject(0)));
-  return out;
+  return inStep(std::string("in ") + filter->GetClassName(), [&] {
+    slUpdateOrThrow(filter, meshPath + ": ");
+    auto out = vtkSmartPointer<vtkPolyData>::New();
+    out->ShallowCopy(vtkPolyData::SafeDownCast(filter->GetOutputDataObject(0)));
+    return out;
+  });
 }
 
 void noteNonPolygonCells(vtkPolyData* mesh, const std::string& command, const std::string& meshPath)

@@ -4,6 +4,7 @@
 #include "Inputs.h"
 #include "LightingOptions.h"
 #include "MaterialOptions.h"
+#include "MeshJobs.h"
 #include "OutputFormats.h"
 
 #include "slRadianceReference.h"
@@ -88,13 +89,15 @@ int runReference(const std::vector<std::string>& args)
   filter->SetSeed(static_cast<int>(cl.getNumber("seed", 1, 0, 2147483647.0)));
   filter->SetLightRadius(cl.getNumber("light-radius", 0.0, 0.0, 1e30));
   filter->SetDirectionalLightAngle(cl.getNumber("sun-angle", 0.5, 1e-4, 45.0));
-  filter->SetInputData(loadMeshWithNormals(meshPath));
-  runLitFilter(filter, meshPath);
-  writeFieldImageIfAsked(
-    cl, filter->GetOutput(), scene, "Radiance,DiscreteRadiance,RadianceError,RadianceStdError", cl.get("output"));
-  writeMesh(filter->GetOutput(), cl.get("output"), cl);
-  printSummary(filter->GetOutput());
-  std::cout << "wrote " << cl.get("output") << "\n";
+  runOnMesh(meshPath, [&] {
+    filter->SetInputData(loadMeshWithNormals(meshPath));
+    runLitFilter(filter, meshPath);
+    writeFieldImageIfAsked(
+      cl, filter->GetOutput(), scene, "Radiance,DiscreteRadiance,RadianceError,RadianceStdError", cl.get("output"));
+    writeMesh(filter->GetOutput(), cl.get("output"), cl);
+    printSummary(filter->GetOutput());
+    std::cout << "wrote " << cl.get("output") << "\n";
+  });
   return 0;
 }
 

@@ -3,6 +3,7 @@
 #include "Commands.h"
 #include "Inputs.h"
 #include "MaterialOptions.h"
+#include "MeshJobs.h"
 #include "OutputFormats.h"
 
 #include "slImageWriter.h"
@@ -138,30 +139,32 @@ int runRender(const std::vector<std::string>& args)
   {
     parseSize(cl.get("size"), width, height);
   }
-  vtkSmartPointer<vtkPolyData> mesh = loadMesh(meshPath);
-  if (!cl.has("vtk-lighting"))
-  {
-    checkTangentsFor(scene, mesh, meshPath);
-  }
-
-  vtkNew<slSceneRenderer> renderer;
-  renderer->SetUseShadeLabLighting(!cl.has("vtk-lighting"));
-  applyComponentOptions(cl, renderer->GetLightingPass());
-  renderer->SetScene(scene);
-  renderer->SetMesh(mesh);
-  renderer->SetWidth(width);
-  renderer->SetHeight(height);
-  slCallOrThrow(renderer, [&] { return renderer->Render(); });
-  if (cl.has("vtk-lighting") && !cl.has("quiet"))
-  {
-    std::istringstream notes(scene->GetConversionNotes());
-    for (std::string line; std::getline(notes, line);)
+  runOnMesh(meshPath, [&] {
+    vtkSmartPointer<vtkPolyData> mesh = loadMesh(meshPath);
+    if (!cl.has("vtk-lighting"))
     {
-      std::cerr << "shadelab render: note: " << line << "\n";
+      checkTangentsFor(scene, mesh, meshPath);
     }
-  }
-  writeImage(renderer->GetImage(), cl.get("output"));
-  std::cout << "wrote " << cl.get("output") << "\n";
+
+    vtkNew<slSceneRenderer> renderer;
+    renderer->SetUseShadeLabLighting(!cl.has("vtk-lighting"));
+    applyComponentOptions(cl, renderer->GetLightingPass());
+    renderer->SetScene(scene);
+    renderer->SetMesh(mesh);
+    renderer->SetWidth(width);
+    renderer->SetHeight(height);
+    inStep("rendering", [&] { slCallOrThrow(renderer, [&] { return renderer->Render(); }); });
+    if (cl.has("vtk-lighting") && !cl.has("quiet"))
+    {
+      std::istringstream notes(scene->GetConversionNotes());
+      for (std::string line; std::getline(notes, line);)
+      {
+        std::cerr << "shadelab render: note: " << line << "\n";
+      }
+    }
+    writeImage(renderer->GetImage(), cl.get("output"));
+    std::cout << "wrote " << cl.get("output") << "\n";
+  });
   return 0;
 }
 

@@ -2,6 +2,7 @@
 #include "CommandLine.h"
 #include "Commands.h"
 #include "Inputs.h"
+#include "MeshJobs.h"
 #include "NormalsOptions.h"
 #include "OutputFormats.h"
 
@@ -46,19 +47,21 @@ int runTangents(const std::vector<std::string>& args)
   vtkNew<slPolyDataNormals> normals;
   applyNormalsOptions(cl, normals);
   const std::string& path = meshPath;
-  vtkSmartPointer<vtkPolyData> mesh = loadMesh(path);
-  noteNonPolygonCells(mesh, "tangents", path);
-  if (!mesh->GetPointData()->GetNormals())
-  {
-    normals->SetInputData(mesh);
-    mesh = runMeshFilter(normals, path);
-  }
-  vtkNew<slPolyDataTangents> tangents;
-  tangents->SetInputData(mesh);
-  vtkSmartPointer<vtkPolyData> out = runMeshFilter(tangents, path);
-  writeMesh(out, cl.get("output"), cl);
-  std::cout << "wrote " << cl.get("output") << ": " << out->GetNumberOfPoints() << " points ("
-            << tangents->GetNumberOfSplitPoints() << " split along mirror seams)\n";
+  runOnMesh(path, [&] {
+    vtkSmartPointer<vtkPolyData> mesh = loadMesh(path);
+    noteNonPolygonCells(mesh, "tangents", path);
+    if (!mesh->GetPointData()->GetNormals())
+    {
+      normals->SetInputData(mesh);
+      mesh = runMeshFilter(normals, path);
+    }
+    vtkNew<slPolyDataTangents> tangents;
+    tangents->SetInputData(mesh);
+    vtkSmartPointer<vtkPolyData> out = runMeshFilter(tangents, path);
+    writeMesh(out, cl.get("output"), cl);
+    std::cout << "wrote " << cl.get("output") << ": " << out->GetNumberOfPoints() << " points ("
+              << tangents->GetNumberOfSplitPoints() << " split along mirror seams)\n";
+  });
   return 0;
 }
 

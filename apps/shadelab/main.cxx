@@ -6,6 +6,7 @@
 
 #include <exception>
 #include <iostream>
+#include <new>
 
 #include <algorithm>
 
@@ -95,6 +96,11 @@ int main(int argc, char** argv)
       {
         shadelab::app::reportProblem(name, e.what());
         return 2;
+      }
+      catch (const std::bad_alloc&) // outside the work on a mesh (runOnMesh names it)
+      {
+        shadelab::app::reportProblem(name, "out of memory");
+        return 1;
       }
       catch (const std::exception& e)
       {

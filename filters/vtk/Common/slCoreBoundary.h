@@ -21,10 +21,15 @@
 
 #include "shadelab/Error.h"
 
+#include <vtkAbstractArray.h>
 #include <vtkDataObject.h>
+#include <vtkInformationVector.h>
 #include <vtkObject.h>
 #include <vtkSetGet.h>
 
+#include <exception>
+#include <new>
+#include <string>
 #include <utility>
 
 /// Runs @p work, a callable taking no argument, for @p self (whose name goes
@@ -58,6 +63,53 @@ int slRunCore(vtkObject* self, vtkDataObject* output, Work&& work)
   {
     output->Initialize();
   }
+  return 0;
+}
+
+/// @p array->SetNumberOfTuples(@p tuples), or std::bad_alloc where VTK
+/// could not allocate them: VTK 9.1 then only reports "Unable to allocate"
+/// and leaves the array as it was, often without storage, which code that
+/// goes on to fill it would write through. For a filter's RequestData
+/// (slProcessRequestSafely() turns the exception into its failure).
+inline void slSetNumberOfTuplesOrThrow(vtkAbstractArray* array, vtkIdType tuples)
+{
+  array->SetNumberOfTuples(tuples);
+  if (array->GetNumberOfTuples() != tuples)
+  {
+    throw std::bad_alloc();
+  }
+}
+
+/// Runs @p request, a filter's call of Superclass::ProcessRequest(), for
+/// @p self so that no exception leaves through VTK's executive: one that did
+/// would leave the executive inside the request, and refuse the filter's
+/// next update ("UpdateInformation invoked during another request"), as in
+/// a batch that goes on after a mesh that did not fit in memory. A
+/// std::bad_alloc becomes vtkErrorMacro "@p prefix out of memory (in CLASS)",
+/// another std::exception "@p prefix WHAT"; the output on port 0 is emptied
+/// and 0 returned.
+template <class Request>
+vtkTypeBool slProcessRequestSafely(
+  vtkObject* self, vtkInformationVector* outputVector, const char* prefix, Request&& request)
+{
+  std::string problem;
+  try
+  {
+    return std::forward<Request>(request)();
+  }
+  catch (const std::bad_alloc&)
+  {
+    problem = std::string("out of memory (in ") + self->GetClassName() + ")";
+  }
+  catch (const std::exception& e)
+  {
+    problem = e.what();
+  }
+  if (vtkDataObject* output = outputVector ? vtkDataObject::GetData(outputVector) : nullptr)
+  {
+    output->Initialize();
+  }
+  vtkErrorWithObjectMacro(self, << prefix << problem);
   return 0;
 }
 

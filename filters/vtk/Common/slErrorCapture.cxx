@@ -86,6 +86,17 @@ void slErrorCapture::Record(const char* message, bool isError)
   if (first.empty())
   {
     first = StripPreamble(message);
+    // A VTK array that could not allocate its storage (vtkGenericDataArray):
+    // said as ShadeLab says it, for every caller to recognise.
+    const std::string allocation = "Unable to allocate ";
+    if (first.compare(0, allocation.size(), allocation) == 0)
+    {
+      if (first.back() == '.')
+      {
+        first.pop_back();
+      }
+      first = "out of memory (u" + first.substr(1) + ")";
+    }
   }
 }
 

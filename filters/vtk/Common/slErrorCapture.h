@@ -46,7 +46,9 @@ public:
   void Execute(vtkObject* caller, unsigned long eventId, void* callData) override;
 
   bool HasError() const { return !this->Error.empty(); }
-  /// The first error's own text, on one line; "" if none.
+  /// The first error's own text, on one line; "" if none. A VTK array's
+  /// "Unable to allocate N elements of size M bytes." reads "out of memory
+  /// (unable to allocate N elements of size M bytes)", as ShadeLab says it.
   const std::string& GetError() const { return this->Error; }
   /// The first warning's own text, on one line; "" if none.
   const std::string& GetWarning() const { return this->Warning; }

@@ -1,4 +1,5 @@
 #include "slParallelFillArray.h"
+#include "slCoreBoundary.h"
 
 #include "shadelab/HugePages.h"
 
@@ -16,8 +17,9 @@ vtkSmartPointer<vtkFloatArray> newParallelFillArray(const std::string& name, int
   void* memory = bytes < kHugePageBytes ? nullptr : allocateHugePages(bytes);
   if (!memory)
   {
-    // Small, or no memory: VTK allocates (and reports a failure its usual way).
-    array->SetNumberOfTuples(tuples);
+    // Small, or no huge pages: VTK allocates (and reports a failure its
+    // usual way; then std::bad_alloc, as the caller would fill no storage).
+    slSetNumberOfTuplesOrThrow(array, tuples);
     return array;
   }
   array->SetArray(static_cast<float*>(memory), values, 0, vtkAbstractArray::VTK_DATA_ARRAY_FREE);

@@ -1,5 +1,7 @@
 #include "slMeshArraysVTK.h"
 
+#include "slCoreBoundary.h"
+
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkFloatArray.h>
@@ -23,7 +25,7 @@ vtkSmartPointer<Array> adopt(std::vector<T>& values, int components)
 {
   auto array = vtkSmartPointer<Array>::New();
   array->SetNumberOfComponents(components);
-  array->SetNumberOfTuples(static_cast<vtkIdType>(values.size() / static_cast<std::size_t>(components)));
+  slSetNumberOfTuplesOrThrow(array, static_cast<vtkIdType>(values.size() / static_cast<std::size_t>(components)));
   // memcpy wants valid pointers even for no bytes, and an empty vector or
   // array may have none.
   if (!values.empty())

@@ -334,7 +334,7 @@ int slMeshReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInform
     }
     catch (const std::bad_alloc&)
     {
-      return this->Fail("not enough memory for what the file declares");
+      return this->Fail("out of memory (reading)");
     }
     catch (const std::exception& e)
     {

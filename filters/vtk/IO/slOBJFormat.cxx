@@ -11,6 +11,7 @@
 #include <exception>
 #include <limits>
 #include <mutex>
+#include <system_error>
 #include <thread>
 
 namespace
@@ -362,15 +363,49 @@ bool slParseOBJ(const char* text, std::size_t size, bool merge, slMeshArrays& me
     bounds.push_back(newline ? newline + 1 : text + size);
   }
   bounds.push_back(text + size);
+  // What a stretch throws (std::bad_alloc) is rethrown here after every
+  // thread has joined: out of a thread it would end the process. A thread
+  // that cannot start (no memory for its stack) leaves its stretches to
+  // this one.
+  std::vector<std::exception_ptr> failures(chunks.size());
+  const auto parse = [&](std::size_t k) {
+    try
+    {
+      parseLines(bounds[k], bounds[k + 1], chunks[k]);
+    }
+    catch (...)
+    {
+      failures[k] = std::current_exception();
+    }
+  };
   std::vector<std::thread> workers;
-  for (std::size_t k = 1; k < chunks.size(); ++k)
+  workers.reserve(chunks.size());
+  std::size_t started = 1;
+  try
   {
-    workers.emplace_back(parseLines, bounds[k], bounds[k + 1], std::ref(chunks[k]));
+    for (; started < chunks.size(); ++started)
+    {
+      workers.emplace_back(parse, started);
+    }
   }
-  parseLines(bounds[0], bounds[1], chunks[0]);
+  catch (const std::system_error&)
+  {
+  }
+  for (std::size_t k = started; k < chunks.size(); ++k)
+  {
+    parse(k);
+  }
+  parse(0);
   for (std::thread& w : workers)
   {
     w.join();
+  }
+  for (const std::exception_ptr& failure : failures)
+  {
+    if (failure)
+    {
+      std::rethrow_exception(failure);
+    }
   }
   int given = 0, everyFace = VTN;
   std::int64_t lineTexture = 0;
@@ -641,9 +676,18 @@ void slFormatOBJ(const slMeshView& mesh, const std::function<void(const char*, s
     }
   };
   std::vector<std::thread> workers;
-  for (int t = 1; t < threads; ++t)
+  try
   {
-    workers.emplace_back(work);
+    // A thread that cannot start (no memory for its stack) leaves the
+    // pieces to the others: this thread formats too.
+    workers.reserve(static_cast<std::size_t>(std::max(threads - 1, 0)));
+    for (int t = 1; t < threads; ++t)
+    {
+      workers.emplace_back(work);
+    }
+  }
+  catch (const std::exception&)
+  {
   }
   try
   {

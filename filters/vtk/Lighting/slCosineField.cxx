@@ -1,4 +1,5 @@
 #include "slCosineField.h"
+#include "slCoreBoundary.h"
 
 #include "slFloat3View.h"
 #include "slLightingSetup.h"
@@ -28,7 +29,7 @@ vtkSmartPointer<vtkFloatArray> scalarArray(const std::string& name, vtkIdType n)
 {
   auto a = vtkSmartPointer<vtkFloatArray>::New();
   a->SetName(name.c_str());
-  a->SetNumberOfTuples(n);
+  slSetNumberOfTuplesOrThrow(a, n);
   return a;
 }
 

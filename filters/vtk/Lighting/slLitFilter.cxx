@@ -82,6 +82,13 @@ vtkMTimeType slLitFilter::GetMTime()
   return t;
 }
 
+vtkTypeBool slLitFilter::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  return slProcessRequestSafely(this, outputVector, "input mesh: ",
+    [&] { return this->Superclass::ProcessRequest(request, inputVector, outputVector); });
+}
+
 int slLitFilter::Fail(vtkPolyData* output, const std::string& message)
 {
   if (output)

@@ -160,6 +160,12 @@ public:
 
   vtkMTimeType GetMTime() override;
 
+  /// Runs the request; one that throws (std::bad_alloc: "input mesh: out of
+  /// memory (in CLASS)") fails as a VTK error (slProcessRequestSafely()), so
+  /// that the filter can run again on another input.
+  vtkTypeBool ProcessRequest(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
 protected:
   slLitFilter();
   ~slLitFilter() override;

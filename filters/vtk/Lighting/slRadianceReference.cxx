@@ -34,7 +34,7 @@ vtkSmartPointer<vtkFloatArray> rgbArray(const char* name, vtkIdType n)
   auto a = vtkSmartPointer<vtkFloatArray>::New();
   a->SetName(name);
   a->SetNumberOfComponents(3);
-  a->SetNumberOfTuples(n);
+  slSetNumberOfTuplesOrThrow(a, n);
   return a;
 }
 

@@ -1,6 +1,7 @@
 #include "slDetailInputs.h"
 
 #include "slConnectivityCheck.h"
+#include "slCoreBoundary.h"
 #include "slImageReader.h"
 #include "slNormalsVTKBridge.h"
 #include "slPolyDataNormals.h"
@@ -140,7 +141,7 @@ void slOutputWithNormals(vtkPolyData* output, vtkPolyData* mesh, const std::vect
   vtkNew<vtkFloatArray> array;
   array->SetName("Normals");
   array->SetNumberOfComponents(3);
-  array->SetNumberOfTuples(static_cast<vtkIdType>(normals.size()));
+  slSetNumberOfTuplesOrThrow(array, static_cast<vtkIdType>(normals.size()));
   for (size_t i = 0; i < normals.size(); ++i)
   {
     array->SetTuple3(static_cast<vtkIdType>(i), normals[i].x, normals[i].y, normals[i].z);

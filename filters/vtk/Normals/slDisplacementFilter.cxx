@@ -44,6 +44,10 @@ int slDisplacementFilter::RequestData(vtkInformation*, vtkInformationVector** in
   vtkNew<vtkPoints> moved;
   moved->SetDataType(in->GetDataType());
   moved->SetNumberOfPoints(in->GetNumberOfPoints());
+  if (moved->GetNumberOfPoints() != in->GetNumberOfPoints())
+  {
+    throw std::bad_alloc(); // VTK could not allocate them (see slSetNumberOfTuplesOrThrow)
+  }
   vtkSMPTools::For(0, in->GetNumberOfPoints(), 4096, [&](vtkIdType b, vtkIdType e) {
     for (vtkIdType i = b; i < e; ++i)
     {

@@ -8,6 +8,7 @@
  */
 
 #include "slNormalsVTKBridge.h"
+#include "slCoreBoundary.h"
 
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
@@ -62,10 +63,10 @@ slOwnedPolygons<Id> slCopyPolygons(vtkCellArray* polys, vtkCellArray* strips)
   }
   slOwnedPolygons<Id> o;
   o.offsets = vtkSmartPointer<slIdArray<Id>>::New();
-  o.offsets->SetNumberOfValues(static_cast<vtkIdType>(offsets.size()));
+  slSetNumberOfTuplesOrThrow(o.offsets, static_cast<vtkIdType>(offsets.size()));
   std::memcpy(o.offsets->GetPointer(0), offsets.data(), offsets.size() * sizeof(Id));
   o.connectivity = vtkSmartPointer<slIdArray<Id>>::New();
-  o.connectivity->SetNumberOfValues(static_cast<vtkIdType>(conn.size()));
+  slSetNumberOfTuplesOrThrow(o.connectivity, static_cast<vtkIdType>(conn.size()));
   if (!conn.empty())
   {
     std::memcpy(o.connectivity->GetPointer(0), conn.data(), conn.size() * sizeof(Id));

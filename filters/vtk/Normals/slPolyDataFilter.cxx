@@ -1,4 +1,5 @@
 #include "slPolyDataFilter.h"
+#include "slCoreBoundary.h"
 
 #include <vtkCellData.h>
 #include <vtkDataSetAttributes.h>
@@ -45,7 +46,8 @@ int slPolyDataFilter::RequestUpdateExtent(
 vtkTypeBool slPolyDataFilter::ProcessRequest(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  const vtkTypeBool result = this->Superclass::ProcessRequest(request, inputVector, outputVector);
+  const vtkTypeBool result = slProcessRequestSafely(this, outputVector, "",
+    [&] { return this->Superclass::ProcessRequest(request, inputVector, outputVector); });
   if (result && request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
   {
     vtkInformation* outInfo = outputVector->GetInformationObject(0);

@@ -42,6 +42,8 @@ public:
 
   /// Runs the request; after a successful REQUEST_DATA for one piece of
   /// several with no ghost levels asked, removes the output's ghost cells.
+  /// A request that throws (std::bad_alloc: "out of memory (in CLASS)")
+  /// fails as a VTK error (slProcessRequestSafely()).
   vtkTypeBool ProcessRequest(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 

@@ -91,6 +91,10 @@ void setSplitPoints(vtkPolyData* input, vtkPolyData* output, const T* xyz, const
   vtkNew<vtkPoints> points;
   points->SetDataType(std::is_same<T, float>::value ? VTK_FLOAT : VTK_DOUBLE);
   points->SetNumberOfPoints(total);
+  if (points->GetNumberOfPoints() != total)
+  {
+    throw std::bad_alloc(); // VTK could not allocate them (see slSetNumberOfTuplesOrThrow)
+  }
   T* out = static_cast<T*>(points->GetData()->GetVoidPointer(0));
   par.forRange(0, total, 65536, [&](int64_t b, int64_t e) {
     for (int64_t i = b; i < e; ++i)
@@ -127,7 +131,7 @@ void setSplitPoints(vtkPolyData* input, vtkPolyData* output, const T* xyz, const
   else
   {
     vtkNew<vtkTypeInt32Array> offsets;
-    offsets->SetNumberOfValues(r.polygons.numPolygons + 1);
+    slSetNumberOfTuplesOrThrow(offsets, r.polygons.numPolygons + 1);
     int32_t* o = offsets->GetPointer(0);
     par.forRange(0, r.polygons.numPolygons + 1, 65536, [&](int64_t b, int64_t e) {
       for (int64_t f = b; f < e; ++f)
@@ -177,7 +181,7 @@ int64_t computeInto(const slnormals::PolygonNormalsSettings& settings, bool cell
     return normals->GetPointer(0);
   };
   r.allocateSplitConnectivity = [&](int64_t n) {
-    splitConnectivity->SetNumberOfValues(n);
+    slSetNumberOfTuplesOrThrow(splitConnectivity, n);
     return splitConnectivity->GetPointer(0);
   };
   r.copyPolygons = [&] {

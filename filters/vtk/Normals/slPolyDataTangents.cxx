@@ -1,6 +1,7 @@
 #include "slPolyDataTangents.h"
 
 #include "slConnectivityCheck.h"
+#include "slCoreBoundary.h"
 #include "slNormalsVTKBridge.h"
 #include "slPolyDataNormals.h"
 #include "slSMPFor.h"
@@ -122,7 +123,7 @@ int slPolyDataTangents::RequestData(vtkInformation*, vtkInformationVector** inpu
   vtkNew<vtkFloatArray> tangents;
   tangents->SetName("Tangents");
   tangents->SetNumberOfComponents(4);
-  tangents->SetNumberOfTuples(numOut);
+  slSetNumberOfTuplesOrThrow(tangents, numOut);
   std::copy(frames.tangents.begin(), frames.tangents.end(), tangents->GetPointer(0));
   output->GetPointData()->RemoveArray("Tangents");
   output->GetPointData()->AddArray(tangents);
