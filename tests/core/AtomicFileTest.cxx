@@ -3,10 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <csignal>
 #include <dirent.h>
 #include <fstream>
 #include <sstream>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 using namespace shadelab;
@@ -21,16 +23,17 @@ std::string slurp(const std::string& path)
   return s.str();
 }
 
-int filesIn(const std::string& folder)
+/// Every entry of @p folder but "." and "..", hidden ones included.
+int entriesIn(const std::string& folder)
 {
   int count = 0;
   DIR* dir = opendir(folder.c_str());
   while (dirent* entry = readdir(dir))
   {
-    count += entry->d_name[0] != '.' || std::string(entry->d_name).find(".partial-") != std::string::npos;
+    count += std::string(entry->d_name) != "." && std::string(entry->d_name) != "..";
   }
   closedir(dir);
-  return count - 0;
+  return count;
 }
 
 std::string freshFolder()
@@ -38,25 +41,50 @@ std::string freshFolder()
   char pattern[] = "/tmp/shadelab-atomic-XXXXXX";
   return mkdtemp(pattern);
 }
+
+/// The tests below run with either kind of temporary file.
+class AtomicFileOfKind : public ::testing::TestWithParam<TemporaryKind>
+{
+protected:
+  void SetUp() override
+  {
+    if (GetParam() == TemporaryKind::Unnamed && !AtomicOutput(freshFolder() + "/probe").unnamed())
+    {
+      GTEST_SKIP() << "/tmp's file system has no O_TMPFILE (or /proc is not mounted)";
+    }
+  }
+
+  void write(const std::string& path, const std::string& bytes) const
+  {
+    AtomicOutput output(path, GetParam());
+    EXPECT_EQ(output.unnamed(), GetParam() == TemporaryKind::Unnamed);
+    output.commit(bytes.data(), bytes.size());
+  }
+};
 } // namespace
 
-TEST(AtomicFile, WritesAndReplaces)
+INSTANTIATE_TEST_SUITE_P(Kinds, AtomicFileOfKind, ::testing::Values(TemporaryKind::Unnamed, TemporaryKind::Named),
+  [](const ::testing::TestParamInfo<TemporaryKind>& kind) {
+    return kind.param == TemporaryKind::Unnamed ? "Unnamed" : "Named";
+  });
+
+TEST_P(AtomicFileOfKind, WritesAndReplaces)
 {
   const std::string folder = freshFolder();
   const std::string path = folder + "/out.txt";
-  writeFileAtomically(path, "first");
+  this->write(path, "first");
   EXPECT_EQ(slurp(path), "first");
-  writeFileAtomically(path, "second");
+  this->write(path, "second");
   EXPECT_EQ(slurp(path), "second");
-  EXPECT_EQ(filesIn(folder), 1) << "no temporary file left behind";
+  EXPECT_EQ(entriesIn(folder), 1) << "no temporary file left behind";
 }
 
-TEST(AtomicFile, NewFilesGetTheUsualPermissions)
+TEST_P(AtomicFileOfKind, NewFilesGetTheUsualPermissions)
 {
   // Like a file opened for writing: 0666 less the umask (not mkstemp's 0600).
   const std::string folder = freshFolder();
   const mode_t mask = umask(022);
-  writeFileAtomically(folder + "/new.txt", "x");
+  this->write(folder + "/new.txt", "x");
   umask(mask);
   struct stat info;
   ASSERT_EQ(stat((folder + "/new.txt").c_str(), &info), 0);
@@ -64,37 +92,93 @@ TEST(AtomicFile, NewFilesGetTheUsualPermissions)
 
   // A replaced file keeps its own mode.
   chmod((folder + "/new.txt").c_str(), 0640);
-  writeFileAtomically(folder + "/new.txt", "y");
+  this->write(folder + "/new.txt", "y");
   ASSERT_EQ(stat((folder + "/new.txt").c_str(), &info), 0);
   EXPECT_EQ(info.st_mode & 0777, 0640u);
 }
 
-TEST(AtomicFile, UncommittedOutputLeavesTheOldFile)
+TEST_P(AtomicFileOfKind, UncommittedOutputLeavesTheOldFile)
 {
   const std::string folder = freshFolder();
   const std::string path = folder + "/image.png";
   writeFileAtomically(path, "old");
   {
-    AtomicOutput output(path);
+    AtomicOutput output(path, GetParam());
     EXPECT_NE(output.temporaryPath(), path);
-    EXPECT_EQ(output.temporaryPath().substr(output.temporaryPath().size() - 4), ".png") << "keeps the extension";
+    // Another writer opens the file through temporaryPath(), as vtkPLYWriter does.
     std::ofstream(output.temporaryPath()) << "half";
+    EXPECT_EQ(slurp(output.temporaryPath()), "half");
+    if (GetParam() == TemporaryKind::Named)
+    {
+      EXPECT_EQ(output.temporaryPath().substr(output.temporaryPath().size() - 4), ".png") << "keeps the extension";
+    }
+    else
+    {
+      EXPECT_EQ(entriesIn(folder), 1) << "no name while it is written";
+    }
     // destroyed without commit(), as when a writer fails
   }
   EXPECT_EQ(slurp(path), "old");
-  EXPECT_EQ(filesIn(folder), 1);
+  EXPECT_EQ(entriesIn(folder), 1);
 }
 
-TEST(AtomicFile, UnwritableFolderThrowsNamingTheFile)
+TEST_P(AtomicFileOfKind, UnwritableFolderThrowsNamingTheFile)
 {
   try
   {
-    writeFileAtomically("/nonexistent-folder/x.json", "data");
+    this->write("/nonexistent-folder/x.json", "data");
     FAIL();
   }
   catch (const shadelab::Error& e)
   {
-    EXPECT_EQ(std::string(e.what()).rfind("/nonexistent-folder/x.json: cannot create output file", 0), 0u);
+    EXPECT_EQ(std::string(e.what()), "/nonexistent-folder/x.json: cannot create output file: No such file or directory");
+  }
+}
+
+TEST_P(AtomicFileOfKind, InterruptedWriterLeavesNoTemporaryFile)
+{
+  // A writer killed mid-write, by a signal it may catch or by one it cannot.
+  for (const int signal : { SIGINT, SIGKILL })
+  {
+    const std::string folder = freshFolder();
+    const std::string path = folder + "/mesh.vtp";
+    writeFileAtomically(path, "old");
+    int pipeEnds[2];
+    ASSERT_EQ(pipe(pipeEnds), 0);
+    const pid_t child = fork();
+    ASSERT_NE(child, -1);
+    if (child == 0)
+    {
+      AtomicOutput output(path, GetParam());
+      const std::string megabyte(1 << 20, 'x');
+      output.write(megabyte.data(), megabyte.size());
+      const char written = 'w';
+      (void)!::write(pipeEnds[1], &written, 1);
+      pause();
+      _exit(0);
+    }
+    close(pipeEnds[1]);
+    char written = 0;
+    ASSERT_EQ(read(pipeEnds[0], &written, 1), 1);
+    close(pipeEnds[0]);
+    EXPECT_EQ(entriesIn(folder), GetParam() == TemporaryKind::Unnamed ? 1 : 2);
+    kill(child, signal);
+    int status = 0;
+    ASSERT_EQ(waitpid(child, &status, 0), child);
+    ASSERT_TRUE(WIFSIGNALED(status));
+    EXPECT_EQ(slurp(path), "old");
+    if (GetParam() == TemporaryKind::Unnamed)
+    {
+      EXPECT_EQ(entriesIn(folder), 1) << "signal " << signal << ": nothing left";
+    }
+    else
+    {
+      // A named file stays until the next write of the same target.
+      EXPECT_EQ(entriesIn(folder), 2) << "signal " << signal;
+      this->write(path, "new");
+      EXPECT_EQ(slurp(path), "new");
+      EXPECT_EQ(entriesIn(folder), 1) << "signal " << signal << ": the stale file removed";
+    }
   }
 }
 
@@ -116,40 +200,41 @@ TEST(AtomicFile, TemporaryNamesStayWithinNameMax)
   EXPECT_LE(odd.prefix.size() + 6, 255u);
 }
 
-TEST(AtomicFile, WritesTheLongestValidName)
+TEST_P(AtomicFileOfKind, WritesTheLongestValidName)
 {
   const std::string folder = freshFolder();
   const std::string path = folder + "/" + std::string(251, 'n') + ".vtp"; // 255 bytes
-  writeFileAtomically(path, "data");
+  this->write(path, "data");
   EXPECT_EQ(slurp(path), "data");
-  EXPECT_EQ(filesIn(folder), 1);
+  EXPECT_EQ(entriesIn(folder), 1);
 }
 
-TEST(AtomicFile, RemovesStaleTemporariesButNotLiveOnes)
+TEST_P(AtomicFileOfKind, RemovesStaleTemporariesButNotLiveOnes)
 {
   const std::string folder = freshFolder();
   const std::string path = folder + "/out.vtp";
   // A live writer of the same target holds its temporary file's lock.
-  AtomicOutput live(path);
+  AtomicOutput live(path, GetParam());
   std::ofstream(folder + "/.out.partial-Ab12Cd.vtp") << "left by a killed process";
   std::ofstream(folder + "/.out.partial-Ab12Cd.ply") << "another target's";
-  writeFileAtomically(path, "new");
+  this->write(path, "new");
   EXPECT_EQ(slurp(path), "new");
   EXPECT_NE(access((folder + "/.out.partial-Ab12Cd.ply").c_str(), F_OK), -1);
   EXPECT_EQ(access((folder + "/.out.partial-Ab12Cd.vtp").c_str(), F_OK), -1) << "stale file removed";
   EXPECT_NE(access(live.temporaryPath().c_str(), F_OK), -1) << "a live writer's file kept";
   live.commit("live", 4);
   EXPECT_EQ(slurp(path), "live");
+  EXPECT_EQ(entriesIn(folder), 2);
 }
 
-TEST(AtomicFile, CommitWrittenRefusesAShortFile)
+TEST_P(AtomicFileOfKind, CommitWrittenRefusesAShortFile)
 {
   const std::string folder = freshFolder();
   const std::string path = folder + "/mesh.ply";
   writeFileAtomically(path, "old");
   try
   {
-    AtomicOutput output(path);
+    AtomicOutput output(path, GetParam());
     std::ofstream(output.temporaryPath()) << "12345";
     output.commitWritten(10);
     FAIL();
@@ -159,10 +244,11 @@ TEST(AtomicFile, CommitWrittenRefusesAShortFile)
     EXPECT_EQ(std::string(e.what()), path + ": cannot write output file: the writer wrote 5 bytes of 10");
   }
   EXPECT_EQ(slurp(path), "old");
-  EXPECT_EQ(filesIn(folder), 1);
+  EXPECT_EQ(entriesIn(folder), 1);
 
-  AtomicOutput output(path);
+  AtomicOutput output(path, GetParam());
   std::ofstream(output.temporaryPath()) << "12345";
   output.commitWritten(5);
   EXPECT_EQ(slurp(path), "12345");
+  EXPECT_EQ(entriesIn(folder), 1);
 }

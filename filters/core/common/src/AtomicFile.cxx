@@ -9,6 +9,7 @@
 #include <fcntl.h>
 #include <stdexcept>
 #include <sys/file.h>
+#include <sys/random.h>
 #include <sys/stat.h>
 #include <unistd.h>
 #include <vector>
@@ -68,6 +69,48 @@ void removeStaleTemporaries(const TemporaryName& name)
   }
   ::closedir(dir);
 }
+
+/// The path through which the open file @p fd can be opened and linked.
+std::string descriptorPath(int fd)
+{
+  return "/proc/self/fd/" + std::to_string(fd);
+}
+
+/// An unnamed file in @p folder, open for writing (O_TMPFILE), or -1 where
+/// the file system or kernel has none, or /proc cannot name it for linkat()
+/// and for writers that take a path.
+int openUnnamed(const std::string& folder)
+{
+  const int fd = ::open(folder.empty() ? "." : folder.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0600);
+  if (fd >= 0 && ::access(descriptorPath(fd).c_str(), W_OK) != 0)
+  {
+    ::close(fd);
+    return -1;
+  }
+  return fd;
+}
+
+/// Six characters of mkstemps' alphabet, at random.
+std::string randomCharacters()
+{
+  static const char alphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
+  unsigned char bytes[RandomLength];
+  if (::getrandom(bytes, sizeof bytes, 0) != static_cast<ssize_t>(sizeof bytes))
+  {
+    // Only a name is at stake: linkat() never replaces a file, so a repeated
+    // name is retried, not lost.
+    for (std::size_t i = 0; i < RandomLength; ++i)
+    {
+      bytes[i] = static_cast<unsigned char>(std::rand());
+    }
+  }
+  std::string text(RandomLength, 'X');
+  for (std::size_t i = 0; i < RandomLength; ++i)
+  {
+    text[i] = alphabet[bytes[i] % (sizeof alphabet - 1)];
+  }
+  return text;
+}
 } // namespace
 
 TemporaryName temporaryNameFor(const std::string& target, std::size_t nameMax)
@@ -86,12 +129,24 @@ TemporaryName temporaryNameFor(const std::string& target, std::size_t nameMax)
   return { folder + "." + stem + PartialMarker, extension };
 }
 
-AtomicOutput::AtomicOutput(std::string target)
+AtomicOutput::AtomicOutput(std::string target, TemporaryKind kind)
   : Target(std::move(target))
 {
-  const TemporaryName name = temporaryNameFor(this->Target, nameMaxOf(folderOf(this->Target)));
+  this->Name = temporaryNameFor(this->Target, nameMaxOf(folderOf(this->Target)));
+  const TemporaryName& name = this->Name;
   removeStaleTemporaries(name);
 
+  if (kind == TemporaryKind::Unnamed)
+  {
+    this->Descriptor = openUnnamed(folderOf(this->Target));
+    if (this->Descriptor >= 0)
+    {
+      // Its name, given at commit(), must not look stale to another writer.
+      ::flock(this->Descriptor, LOCK_EX);
+      this->Unnamed = true;
+      this->Temporary = descriptorPath(this->Descriptor);
+    }
+  }
   // Another process's cleanup may unlink the file between mkstemps and flock;
   // the unlinked file then has no links left, and a new one is made.
   for (int attempt = 0; this->Descriptor < 0; ++attempt)
@@ -135,7 +190,7 @@ AtomicOutput::AtomicOutput(std::string target)
 
 AtomicOutput::~AtomicOutput()
 {
-  if (!this->Committed && !this->Temporary.empty())
+  if (!this->Committed && !this->Unnamed && !this->Temporary.empty())
   {
     ::unlink(this->Temporary.c_str());
   }
@@ -205,9 +260,15 @@ void AtomicOutput::commit()
   {
     this->fail("cannot write output file", errno);
   }
-  if (::rename(this->Temporary.c_str(), this->Target.c_str()) != 0)
+  const std::string named = this->Unnamed ? this->giveName() : this->Temporary;
+  if (::rename(named.c_str(), this->Target.c_str()) != 0)
   {
-    this->fail("cannot write output file", errno);
+    const int error = errno;
+    if (this->Unnamed)
+    {
+      ::unlink(named.c_str());
+    }
+    this->fail("cannot write output file", error);
   }
   this->Committed = true;
   // The rename itself is durable once the folder is synced.
@@ -217,6 +278,23 @@ void AtomicOutput::commit()
   {
     ::fsync(dir);
     ::close(dir);
+  }
+}
+
+std::string AtomicOutput::giveName() const
+{
+  // linkat() never replaces a file: a name another file took is retried.
+  for (int attempt = 0;; ++attempt)
+  {
+    const std::string named = this->Name.prefix + randomCharacters() + this->Name.suffix;
+    if (::linkat(AT_FDCWD, this->Temporary.c_str(), AT_FDCWD, named.c_str(), AT_SYMLINK_FOLLOW) == 0)
+    {
+      return named;
+    }
+    if (errno != EEXIST || attempt == 100)
+    {
+      this->fail("cannot write output file", errno);
+    }
   }
 }
 

@@ -8,11 +8,17 @@
  * A failed or interrupted write therefore never leaves a half-written file and
  * never destroys an existing one. Used for every file ShadeLab writes.
  *
- * The temporary file is named `.NAME.partial-XXXXXX.EXT` (NAME cut short when
- * the whole would exceed the folder's NAME_MAX) and is held under an exclusive
- * flock() while it exists. A process killed mid-write leaves it behind
- * unlocked: the next AtomicOutput for the same target removes such files,
- * never one another live process still holds.
+ * The temporary file has no name while it is written (O_TMPFILE): a process
+ * killed or interrupted mid-write, by any signal, leaves nothing behind,
+ * since the kernel frees a file without a name once it is closed. commit()
+ * links it as `.NAME.partial-XXXXXX.EXT` (NAME cut short when the whole
+ * would exceed the folder's NAME_MAX) and renames that over the target, a
+ * name that lives for two system calls. Where the file system has no
+ * O_TMPFILE (or /proc is not mounted), the temporary file carries that name
+ * from the start. Either way it is held under an exclusive flock() while it
+ * has a name; a process killed while the name exists leaves it behind
+ * unlocked, and the next AtomicOutput for the same target removes such
+ * files, never one another live process still holds.
  */
 
 #include "shadelab/Error.h"
@@ -23,21 +29,42 @@
 namespace shadelab
 {
 
+/// Whether AtomicOutput's temporary file has a name while it is written.
+enum class TemporaryKind
+{
+  Unnamed, ///< none until commit(), where the file system allows (else Named)
+  Named,   ///< `.NAME.partial-XXXXXX.EXT` from the start
+};
+
+/// The name AtomicOutput gives the temporary files of @p target, as the part
+/// before the six random characters and the part after them (folder included
+/// in the first). Both together stay within @p nameMax bytes.
+struct TemporaryName
+{
+  std::string prefix;
+  std::string suffix;
+};
+TemporaryName temporaryNameFor(const std::string& target, std::size_t nameMax);
+
 /// A temporary file in the target's folder that becomes the target on commit().
 class AtomicOutput
 {
 public:
-  /// Removes stale temporary files of @p target, then creates and locks its
-  /// own. Throws shadelab::Error naming @p target and the system's reason
-  /// if its folder is not writable.
-  explicit AtomicOutput(std::string target);
+  /// Removes stale temporary files of @p target, then creates its own, of
+  /// @p kind. Throws shadelab::Error naming @p target and the system's
+  /// reason if its folder is not writable.
+  explicit AtomicOutput(std::string target, TemporaryKind kind = TemporaryKind::Unnamed);
   /// Removes the temporary file unless commit() succeeded.
   ~AtomicOutput();
   AtomicOutput(const AtomicOutput&) = delete;
   AtomicOutput& operator=(const AtomicOutput&) = delete;
 
+  /// A path through which another writer can open the temporary file: its
+  /// name, or /proc/self/fd/N while it has none.
   const std::string& temporaryPath() const { return this->Temporary; }
   const std::string& targetPath() const { return this->Target; }
+  /// Whether the temporary file has no name (see TemporaryKind).
+  bool unnamed() const { return this->Unnamed; }
 
   /// Writes @p size bytes at @p data to the temporary file, syncs it to the
   /// disk, renames it to the target and syncs the folder. Throws
@@ -64,25 +91,19 @@ public:
 
 private:
   [[noreturn]] void fail(const std::string& what, int error) const;
+  /// Links the unnamed file under a new temporary name and returns it.
+  std::string giveName() const;
 
   std::string Target;
+  TemporaryName Name;
   std::string Temporary;
   int Descriptor = -1;
+  bool Unnamed = false;
   bool Committed = false;
 };
 
 /// Writes @p bytes to @p path through an AtomicOutput. Throws shadelab::Error.
 void writeFileAtomically(const std::string& path, const std::string& bytes);
-
-/// The name AtomicOutput gives the temporary files of @p target, as the part
-/// before the six random characters and the part after them (folder included
-/// in the first). Both together stay within @p nameMax bytes.
-struct TemporaryName
-{
-  std::string prefix;
-  std::string suffix;
-};
-TemporaryName temporaryNameFor(const std::string& target, std::size_t nameMax);
 
 } // namespace shadelab
 
