@@ -101,6 +101,47 @@ void printAlbedos(const std::vector<std::string>& names, const std::vector<doubl
   }
 }
 
+/// What `shadelab lobe` makes: each mode takes options of its own.
+enum class LobeMode
+{
+  AlbedoTable, ///< --albedo-table -o TABLE.csv
+  LobeImage,   ///< -o LOBE.png: lobes, polar plot and albedo of one or more BRDFs
+  LobeMesh,    ///< -o LOBE.vtp: one lobe as a mesh
+  LobesOnMesh, ///< MESH -o LOBES.vtp|LOBES.png
+};
+
+/// Throws UsageError for an option given in a mode that would ignore it.
+void refuseOptionsOfOtherModes(const CommandLine& cl, LobeMode mode)
+{
+  using M = LobeMode;
+  struct ModeOption
+  {
+    const char* name;
+    std::vector<LobeMode> modes;
+    const char* what; ///< the modes, as the message names them
+  };
+  static const ModeOption options[] = {
+    { "incidence", { M::LobeImage, M::LobeMesh }, "a single lobe (-o LOBE.vtp or LOBE.png)" },
+    { "kd", { M::LobeImage, M::LobeMesh }, "a single lobe (-o LOBE.vtp or LOBE.png)" },
+    { "ks", { M::LobeImage, M::LobeMesh }, "a single lobe (-o LOBE.vtp or LOBE.png)" },
+    { "cosine", { M::LobeImage, M::LobeMesh, M::LobesOnMesh }, "lobes, not with --albedo-table" },
+    { "slice", { M::LobeMesh }, "a single lobe as a mesh (-o LOBE.vtp)" },
+    { "models", { M::LobeImage }, "a single lobe as an image (-o LOBE.png)" },
+    { "points", { M::LobesOnMesh }, "lobes on MESH" },
+    { "light", { M::LobesOnMesh }, "lobes on MESH" },
+    { "scale", { M::LobesOnMesh }, "lobes on MESH" },
+    { "scene", { M::LobesOnMesh }, "lobes on MESH (a single lobe takes --model and the material options)" },
+    { "allow-zero-normals", { M::LobesOnMesh }, "lobes on MESH" },
+  };
+  for (const ModeOption& option : options)
+  {
+    if (cl.has(option.name) && std::find(option.modes.begin(), option.modes.end(), mode) == option.modes.end())
+    {
+      throw UsageError(std::string("--") + option.name + ": only for " + option.what);
+    }
+  }
+}
+
 std::vector<OptionSpec> lobeOptions()
 {
   std::vector<OptionSpec> specs =
@@ -174,6 +215,11 @@ int runLobe(const std::vector<std::string>& args)
     throw UsageError("--brdf: lobes on a mesh take the scene's model; a .brdf file's lobe is drawn alone");
   }
   const bool lobeMesh = cl.positional().empty() && !cl.has("albedo-table") && !imageOfLobes;
+  refuseOptionsOfOtherModes(cl,
+    cl.has("albedo-table") ? LobeMode::AlbedoTable
+      : imageOfLobes       ? LobeMode::LobeImage
+      : lobeMesh           ? LobeMode::LobeMesh
+                           : LobeMode::LobesOnMesh);
   if (lobeMesh && brdfs.size() > 1)
   {
     throw UsageError("--brdf: a lobe mesh takes one .brdf file; an image (-o LOBE.png) overlays several");

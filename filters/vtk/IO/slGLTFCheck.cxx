@@ -51,6 +51,22 @@ unsigned long long count(const json& object, const char* key, const std::string&
   return value.get<unsigned long long>();
 }
 
+/// The file an external @p uri (a string, not data:) of @p where names in
+/// @p folder; fails unless it is a regular file, which VTK then reads whole
+/// (a FIFO hung the image reader, a device never ends).
+std::filesystem::path externalFile(const std::filesystem::path& folder, const json& uri, const std::string& where)
+{
+  const std::filesystem::path path = folder / uri.get<std::string>();
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error))
+  {
+    const bool exists = std::filesystem::exists(path, error);
+    fail(where + ".uri: " + (exists ? "not a regular file" : "no file") + " \"" +
+      shadelab::printableText(uri.get<std::string>(), 200) + "\"");
+  }
+  return path;
+}
+
 const json& list(const json& root, const char* key)
 {
   static const json empty = json::array();
@@ -178,13 +194,8 @@ void checkDocument(const json& root, const std::filesystem::path& folder, long l
     }
     else
     {
-      const std::filesystem::path path = folder / uri.get<std::string>();
       std::error_code error;
-      if (!std::filesystem::is_regular_file(path, error))
-      {
-        fail(where + ".uri: no file \"" + shadelab::printableText(uri.get<std::string>(), 200) + "\"");
-      }
-      available = std::filesystem::file_size(path, error);
+      available = std::filesystem::file_size(externalFile(folder, uri, where), error);
     }
     if (available < bytes)
     {
@@ -363,6 +374,15 @@ void checkDocument(const json& root, const std::filesystem::path& folder, long l
   for (size_t i = 0; i < images.size(); ++i)
   {
     reference(images[i], "bufferView", views, "bufferView", at("images", i));
+    const json& uri = member(images[i], "uri");
+    if (!uri.is_null() && !uri.is_string())
+    {
+      fail(at("images", i) + ".uri is not a string");
+    }
+    if (uri.is_string() && uri.get<std::string>().rfind("data:", 0) != 0)
+    {
+      externalFile(folder, uri, at("images", i));
+    }
   }
   for (size_t i = 0; i < textures.size(); ++i)
   {
