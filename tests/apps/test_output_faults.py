@@ -2,9 +2,13 @@
 extensions that do not fit what a subcommand writes. A failed write leaves
 the old output byte-identical and no temporary file, and says why in one line."""
 import os
+import signal
 import subprocess
 import tempfile
+import time
 import unittest
+
+from grid_meshes import write_grid_ply
 
 SHADELAB = os.environ["SHADELAB_EXE"]
 DATA = os.environ["SHADELAB_DATA_DIR"]
@@ -14,6 +18,17 @@ OLD = b"old output, must survive\n"
 
 def run(*args, cwd=None):
     return subprocess.run([SHADELAB, *args], capture_output=True, text=True, timeout=300, cwd=cwd)
+
+
+def writing_into(pid, folder):
+    """Whether process @p pid holds a file of @p folder open (the output it
+    writes, which has no name there yet)."""
+    fds = "/proc/%d/fd" % pid
+    try:
+        targets = [os.readlink(os.path.join(fds, fd)) for fd in os.listdir(fds)]
+    except OSError:  # it ended, or closed a descriptor while listed
+        return False
+    return any(target.startswith(folder + "/") for target in targets)
 
 
 class FullDiskTest(unittest.TestCase):
@@ -114,6 +129,37 @@ class TemporaryFileTest(unittest.TestCase):
         self.assertEqual(r.returncode, 0, r.stderr)
         self.assertEqual(sorted(os.listdir(self.dir)), sorted(others + ["out.vtp"]),
                          "only the target's own stale temporary files go")
+
+    def test_interrupted_write_leaves_nothing(self):
+        """Ctrl-C or kill -9 while the output is being written: the old output
+        as it was and no other file in its folder."""
+        try:
+            import numpy  # noqa: F401
+        except ImportError:
+            self.skipTest("needs numpy to write the large mesh")
+        meshes = tempfile.TemporaryDirectory(prefix="shadelab-interrupt-")
+        self.addCleanup(meshes.cleanup)
+        big = os.path.join(meshes.name, "big.ply")
+        write_grid_ply(big, 701)  # about a million triangles: zlib takes a while to encode them
+        out = os.path.join(self.dir, "out.vtp")
+        for sig in (signal.SIGINT, signal.SIGKILL):
+            with self.subTest(signal=sig.name):
+                with open(out, "wb") as f:
+                    f.write(OLD)
+                p = subprocess.Popen([SHADELAB, "normals", big, "-o", out, "--compress", "zlib"],
+                                     stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+                deadline = time.monotonic() + 300
+                while not writing_into(p.pid, self.dir):
+                    if p.poll() is not None or time.monotonic() > deadline:
+                        p.kill()
+                        self.fail("the output was never seen being written: " + p.communicate()[1].decode())
+                    time.sleep(0.001)
+                p.send_signal(sig)
+                p.communicate()
+                self.assertEqual(p.returncode, -sig)
+                self.assertEqual(os.listdir(self.dir), ["out.vtp"])
+                with open(out, "rb") as f:
+                    self.assertEqual(f.read(), OLD)
 
     def test_longest_names(self):
         for length in (241, 250, 255):
