@@ -243,13 +243,7 @@ void slLightingPass::SetModel(int model)
 
 bool slLightingPass::SetModelName(const char* name)
 {
-  shadelab::ShadingModel model;
-  if (!name || !shadelab::parseModelName(name, model))
-  {
-    return false;
-  }
-  this->SetModel(static_cast<int>(model));
-  return true;
+  return slSetModelByName(this, name);
 }
 
 void slLightingPass::SetFrequency(int frequency)

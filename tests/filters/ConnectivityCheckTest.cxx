@@ -3,8 +3,12 @@
 #include "slConnectivityCheck.h"
 
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkFloatArray.h>
 #include <vtkIdTypeArray.h>
+#include <vtkIntArray.h>
 #include <vtkNew.h>
+#include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkTypeInt32Array.h>
@@ -123,4 +127,27 @@ TEST(ConnectivityCheck, InconsistentOffsets)
   bad->SetData(decreasing, ids);
   mesh->SetPolys(bad);
   EXPECT_EQ(slConnectivityProblem(mesh), "polygon 1: its offset decreases");
+}
+
+TEST(ConnectivityCheck, ShortPointAndCellArrays)
+{
+  // Normals of 2 tuples for 3 points made slCosineField read beyond them
+  // (a segmentation fault on a large mesh); cell normals too.
+  vtkSmartPointer<vtkPolyData> mesh = triangles({ { 0, 1, 2 }, { 2, 1, 0 } });
+  vtkNew<vtkFloatArray> normals;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  normals->SetNumberOfTuples(2);
+  normals->FillValue(1.0f);
+  mesh->GetPointData()->SetNormals(normals);
+  EXPECT_EQ(slConnectivityProblem(mesh), "point array \"Normals\" has 2 tuples for 3 points");
+  EXPECT_EQ(slConnectivityProblem(mesh, false), "point array \"Normals\" has 2 tuples for 3 points");
+  normals->SetNumberOfTuples(4); // longer: read no further than the mesh
+  normals->FillValue(1.0f);
+  EXPECT_EQ(slConnectivityProblem(mesh), "");
+
+  vtkNew<vtkIntArray> unnamed;
+  unnamed->SetNumberOfTuples(1);
+  mesh->GetCellData()->AddArray(unnamed);
+  EXPECT_EQ(slConnectivityProblem(mesh), "cell array number 0 has 1 tuple for 2 cells");
 }

@@ -4,8 +4,12 @@
 #include "slCosineField.h"
 #include "VTKErrors.h"
 
+#include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkFloatArray.h>
 #include <vtkIdList.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
 
 #include <gtest/gtest.h>
 
@@ -113,4 +117,49 @@ TEST(CosineField, LightIndexOutOfRangeIsAnError)
   filter->SetInputData(sphere(6));
   EXPECT_EQ(updateError(filter), "LightIndex 3 is out of range: the scene has 1 lights");
   EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+}
+
+TEST(CosineField, TriangleStripCellsTakeTheirTrianglesNormal)
+{
+  // A flat strip in z = 0 of 4 triangles, turned as strips turn them, under
+  // a light straight above: every cell faces it (cos = 1). Newell's method
+  // over the strip's points in order gave 0.
+  vtkNew<vtkPoints> points;
+  for (double x : { 0.0, 1.0, 2.0 })
+  {
+    points->InsertNextPoint(x, 0, 0);
+    points->InsertNextPoint(x, 1, 0);
+  }
+  vtkNew<vtkCellArray> strips;
+  const vtkIdType strip[] = { 0, 1, 2, 3, 4, 5 };
+  strips->InsertNextCell(6, strip);
+  vtkNew<vtkPolyData> mesh;
+  mesh->SetPoints(points);
+  mesh->SetStrips(strips);
+  vtkNew<vtkFloatArray> normals;
+  normals->SetNumberOfComponents(3);
+  for (vtkIdType i = 0; i < 6; ++i)
+  {
+    normals->InsertNextTuple3(0, 0, -1); // the strip's triangles (0, 1, 2), (2, 1, 3), ... face -z
+  }
+  mesh->GetPointData()->SetNormals(normals);
+  SceneLight light = whiteLight(LightType::Directional);
+  light.direction = glm::vec3(0.0f, 0.0f, 1.0f); // travelling +z: the light is below, at -z
+  vtkNew<slCosineField> filter;
+  filter->SetScene(makeScene({ light }, ShadingModel::Lambert));
+  filter->SetLightIndex(0);
+  filter->SetInputData(mesh);
+  ASSERT_EQ(updateError(filter), "");
+  EXPECT_NEAR(value(filter->GetOutput()->GetCellData(), "CosThetaRaw", 0), 1.0, 1e-6);
+  EXPECT_NEAR(value(filter->GetOutput()->GetPointData(), "CosThetaRaw", 3), 1.0, 1e-6);
+
+  // Folded along x = 1 by 90 degrees (the second half stands up, z = x - 1):
+  // the area-weighted mean of (0, 0, -1) over area 1 and (1, 0, 0)... of the
+  // upright half's normal over area 1: (n1 + n2) / |n1 + n2|, 45 degrees
+  // from each, so cos = 1 / sqrt(2) under the same light.
+  points->SetPoint(4, 1, 0, 1);
+  points->SetPoint(5, 1, 1, 1);
+  points->Modified();
+  ASSERT_EQ(updateError(filter), "");
+  EXPECT_NEAR(value(filter->GetOutput()->GetCellData(), "CosThetaRaw", 0), 1.0 / std::sqrt(2.0), 1e-6);
 }

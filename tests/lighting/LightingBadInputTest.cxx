@@ -8,6 +8,7 @@
 #include "shadelab/SceneLimits.h"
 #include "VTKErrors.h"
 
+#include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
@@ -66,7 +67,40 @@ TEST(LightingBadInput, NoNormals)
   vtkSmartPointer<vtkPolyData> mesh = sphere(6);
   mesh->GetPointData()->SetNormals(nullptr);
   expectError<slRadianceFilter>(mesh, makeScene({ someLight() }, ShadingModel::Phong),
-    "input mesh: it has no point normals (3-component Normals array); compute them first");
+    "input mesh: it has no point normals; compute them first (slPolyDataNormals)");
+
+  // An array named "Normals" that is not the attribute is not used: the
+  // message says why, rather than that there is none.
+  vtkNew<vtkFloatArray> named;
+  named->SetName("Normals");
+  named->SetNumberOfComponents(3);
+  named->SetNumberOfTuples(mesh->GetNumberOfPoints());
+  named->FillValue(1.0f);
+  mesh->GetPointData()->AddArray(named);
+  expectError<slCosineField>(mesh, makeScene({ someLight() }, ShadingModel::Phong),
+    "input mesh: its point array \"Normals\" is not set as its point normals (vtkPointData::SetNormals)");
+}
+
+TEST(LightingBadInput, ShortNormals)
+{
+  // Fewer normals than points: read beyond the array before (slCosineField
+  // crashed on a large mesh); point and cell normals alike.
+  vtkSmartPointer<vtkPolyData> mesh = sphere(6);
+  mesh->GetPointData()->GetNormals()->SetNumberOfTuples(3);
+  const std::string message =
+    "input mesh: point array \"Normals\" has 3 tuples for " + std::to_string(mesh->GetNumberOfPoints()) + " points";
+  expectError<slRadianceFilter>(mesh, makeScene({ someLight() }, ShadingModel::Phong), message);
+  expectError<slCosineField>(mesh, makeScene({ someLight() }, ShadingModel::Phong), message);
+
+  mesh = sphere(6);
+  vtkNew<vtkFloatArray> cellNormals;
+  cellNormals->SetName("CellNormals");
+  cellNormals->SetNumberOfComponents(3);
+  cellNormals->SetNumberOfTuples(1);
+  cellNormals->FillValue(1.0f);
+  mesh->GetCellData()->SetNormals(cellNormals);
+  expectError<slCosineField>(mesh, makeScene({ someLight() }, ShadingModel::Phong),
+    "input mesh: cell array \"CellNormals\" has 1 tuple for " + std::to_string(mesh->GetNumberOfCells()) + " cells");
 }
 
 TEST(LightingBadInput, ZeroLengthNormal)

@@ -244,6 +244,15 @@ TEST(RadianceFilter, TakesVTKLightsPropertyAndCamera)
   EXPECT_NEAR(tuple3(out, "Diffuse", 0)[0], 0.5 * 0.5 * 1.0, 1e-6);
   EXPECT_NEAR(tuple3(out, "Diffuse", 0)[2], 0.5 * 0.5 * 0.25, 1e-6);
   EXPECT_NEAR(tuple3(out, "Ambient", 0)[1], 0.2, 1e-6);
+
+  // A light of the collection dimmed, then moved to 60 degrees off the
+  // normal: the filter runs again (the collection's own time stays).
+  light->SetIntensity(0.25);
+  ASSERT_EQ(updateError(filter), "");
+  EXPECT_NEAR(tuple3(filter->GetOutput(), "Diffuse", 0)[0], 0.5 * 0.25 * 1.0, 1e-6);
+  light->SetPosition(std::sqrt(3.0), 0, 1);
+  ASSERT_EQ(updateError(filter), "");
+  EXPECT_NEAR(tuple3(filter->GetOutput(), "Diffuse", 0)[0], 0.5 * 0.25 * 0.5, 1e-6);
 }
 
 TEST(RadianceFilter, DiffuseFromColourArrayAndTexture)

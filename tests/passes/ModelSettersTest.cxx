@@ -74,3 +74,35 @@ TEST(ModelSetters, AcceptEveryRowAndRejectEverythingElse)
   expectRejected(lobe.Get(), -1, last);
   expectAccepted(radiance.Get(), -1); // the lighting filters' "the scene's own"
 }
+
+TEST(ModelSetters, ByNameAsInSceneFiles)
+{
+  // Each row's scene-file name sets its number and reads back; other names
+  // change nothing.
+  vtkNew<slLightingPass> pass;
+  vtkNew<slBRDFLobeSource> lobe;
+  vtkNew<slRadianceFilter> radiance;
+  EXPECT_EQ(radiance->GetModelName(), "") << "the scene's own model has no name of its own";
+  for (const shadelab::LightingModelInfo& m : shadelab::kLightingModels)
+  {
+    EXPECT_TRUE(pass->SetModelName(m.name)) << m.name;
+    EXPECT_TRUE(lobe->SetModelName(m.name)) << m.name;
+    EXPECT_TRUE(radiance->SetModelName(m.name)) << m.name;
+    EXPECT_EQ(pass->GetModel(), static_cast<int>(m.model)) << m.name;
+    EXPECT_EQ(lobe->GetModel(), static_cast<int>(m.model)) << m.name;
+    EXPECT_EQ(radiance->GetModel(), static_cast<int>(m.model)) << m.name;
+    EXPECT_EQ(lobe->GetModelName(), m.name);
+    EXPECT_EQ(radiance->GetModelName(), m.name);
+  }
+  const int last = static_cast<int>(shadelab::kLightingModels[shadelab::kLightingModelCount - 1].model);
+  for (const char* bad : { "Phong", "blinn phong", "", "6" })
+  {
+    EXPECT_FALSE(lobe->SetModelName(bad)) << bad;
+    EXPECT_FALSE(radiance->SetModelName(bad)) << bad;
+    EXPECT_FALSE(pass->SetModelName(bad)) << bad;
+  }
+  EXPECT_FALSE(radiance->SetModelName(nullptr));
+  EXPECT_EQ(lobe->GetModel(), last);
+  EXPECT_EQ(radiance->GetModel(), last);
+  EXPECT_EQ(pass->GetModel(), last);
+}

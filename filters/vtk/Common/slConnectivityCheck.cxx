@@ -5,7 +5,10 @@
 #include "shadelab/slVectorClones.h"
 #include "slSMPFor.h"
 
+#include <vtkAbstractArray.h>
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkTypeInt32Array.h>
 #include <vtkTypeInt64Array.h>
@@ -122,6 +125,24 @@ std::string arrayProblem(vtkCellArray* cells, vtkIdType numPoints, const char* k
   return cellsProblem(offsets->GetPointer(0), offsets->GetNumberOfValues(), ids->GetPointer(0),
     ids->GetNumberOfValues(), numPoints, kind, checkIds);
 }
+/// "" or the first array of @p data (the point or cell data, @p kind "point"
+/// or "cell") with fewer tuples than the mesh has @p items: the filters and
+/// VTK's own copying index such arrays by point or cell id.
+std::string shortArrayProblem(vtkDataSetAttributes* data, vtkIdType items, const char* kind)
+{
+  for (int i = 0; data && i < data->GetNumberOfArrays(); ++i)
+  {
+    vtkAbstractArray* array = data->GetAbstractArray(i);
+    if (array && array->GetNumberOfTuples() < items)
+    {
+      const char* name = array->GetName();
+      return std::string(kind) + " array " + (name ? "\"" + std::string(name) + "\"" : "number " + std::to_string(i)) +
+        " has " + std::to_string(array->GetNumberOfTuples()) +
+        (array->GetNumberOfTuples() == 1 ? " tuple for " : " tuples for ") + std::to_string(items) + " " + kind + "s";
+    }
+  }
+  return std::string();
+}
 } // namespace
 
 std::string slConnectivityProblem(vtkPolyData* mesh)
@@ -148,6 +169,14 @@ std::string slConnectivityProblem(vtkPolyData* mesh, bool polygonIds)
   if (problem.empty())
   {
     problem = arrayProblem(mesh->GetVerts(), numPoints, "vertex cell");
+  }
+  if (problem.empty())
+  {
+    problem = shortArrayProblem(mesh->GetPointData(), numPoints, "point");
+  }
+  if (problem.empty())
+  {
+    problem = shortArrayProblem(mesh->GetCellData(), mesh->GetNumberOfCells(), "cell");
   }
   return problem;
 }

@@ -4,12 +4,15 @@
  * @file slConnectivityCheck.h
  * @brief The check every ShadeLab filter makes before it follows a cell's
  * point ids: each id of each vertex, line, polygon and strip cell names a
- * point of the mesh, and each cell array's offsets are consistent.
+ * point of the mesh, each cell array's offsets are consistent, and every
+ * point and cell data array holds a tuple for each point and cell.
  *
  * A vtkPolyData built in memory (or read by a reader that copies indices
- * unchecked) can name points that do not exist; the algorithms index
- * per-point arrays by these ids, so one bad id would read or write outside
- * them. C++ only, not wrapped.
+ * unchecked) can name points that do not exist, or carry normals shorter
+ * than its points; the algorithms index per-point arrays by these ids, so
+ * one bad id or one short array would read or write outside them. Longer
+ * arrays are left alone: they are read no further than the mesh. C++ only,
+ * not wrapped.
  */
 
 #include "ShadeLabCommonModule.h"
@@ -18,10 +21,12 @@
 
 class vtkPolyData;
 
-/// "" when every cell of @p mesh names only points in [0, number of points)
-/// and its offsets are consistent (null and empty meshes pass); otherwise one
-/// line naming the first bad cell, e.g. "polygon 4 names point 9, but the
-/// mesh has 3 points (0 to 2)".
+/// "" when every cell of @p mesh names only points in [0, number of points),
+/// its offsets are consistent and no point or cell data array is shorter
+/// than the points or cells (null and empty meshes pass); otherwise one line
+/// naming the first bad cell or array, e.g. "polygon 4 names point 9, but
+/// the mesh has 3 points (0 to 2)", or "point array "Normals" has 3 tuples
+/// for 50 points".
 SHADELABCOMMON_EXPORT std::string slConnectivityProblem(vtkPolyData* mesh);
 
 /// slConnectivityProblem(), with @p polygonIds false leaving the polygons'

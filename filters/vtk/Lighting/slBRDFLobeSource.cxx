@@ -175,12 +175,22 @@ void slBRDFLobeSource::SetModel(int model)
   }
 }
 
+bool slBRDFLobeSource::SetModelName(const char* name)
+{
+  return slSetModelByName(this, name);
+}
+
+std::string slBRDFLobeSource::GetModelName() const
+{
+  return slModelNameOf(this->Model);
+}
+
 SL_MATERIAL_NUMBER_METHODS(slBRDFLobeSource)
 
 void slBRDFLobeSource::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Model: " << this->Model << "\n";
+  os << indent << "Model: " << this->Model << " (" << this->GetModelName() << ")\n";
   slPrintMaterialNumbers(os, indent, *this->Material);
   os << indent << "DiffuseWeight: " << this->DiffuseWeight << "\n";
   os << indent << "SpecularWeight: " << this->SpecularWeight << "\n";

@@ -37,6 +37,7 @@
 class vtkFloatArray;
 
 #include <memory>
+#include <string>
 
 #ifndef __VTK_WRAP__
 namespace shadelab
@@ -58,6 +59,10 @@ public:
   /// Any other value is an error (vtkErrorMacro) and leaves the model as it was.
   void SetModel(int model);
   vtkGetMacro(Model, int);
+  /// By scene-file name (those of slScene::SetModelName()); false, and the
+  /// model as it was, for an unknown name.
+  bool SetModelName(const char* name);
+  std::string GetModelName() const;
   ///@}
 
   ///@{

@@ -33,8 +33,31 @@ vtkSmartPointer<vtkFloatArray> scalarArray(const std::string& name, vtkIdType n)
   return a;
 }
 
+/// The unit normal of the triangle strip through @p ids: its triangles'
+/// normals weighted by their areas (twice the area is the cross product's
+/// length), every second triangle turned as the strip's order requires;
+/// (0, 0, 0) for a strip of no area. Newell's method over the strip's points
+/// in order would follow a self-crossing outline: 0 on a flat strip.
+glm::dvec3 stripNormal(vtkPoints* points, const vtkIdType* ids, vtkIdType count)
+{
+  glm::dvec3 sum(0.0);
+  for (vtkIdType i = 0; i + 2 < count; ++i)
+  {
+    glm::dvec3 p[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      points->GetPoint(ids[i + k], &p[k].x);
+    }
+    const glm::dvec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
+    sum += i % 2 == 0 ? n : -n;
+  }
+  const double length = glm::length(sum);
+  return length > 0.0 ? sum / length : glm::dvec3(0.0);
+}
+
 /// Where and with which normal each cell is evaluated: its vertex centroid
-/// and its normal (the input's cell normals, else Newell's polygon normal).
+/// and its normal (the input's cell normals, else Newell's polygon normal or
+/// the strip's normal).
 void cellFrames(vtkPolyData* mesh, std::vector<glm::vec3>& centres, std::vector<glm::vec3>& normals)
 {
   const vtkIdType n = mesh->GetNumberOfCells();
@@ -60,6 +83,13 @@ void cellFrames(vtkPolyData* mesh, std::vector<glm::vec3>& centres, std::vector<
     if (given && given->GetNumberOfComponents() == 3)
     {
       given->GetTuple(c, normal);
+    }
+    else if (mesh->GetCellType(c) == VTK_TRIANGLE_STRIP)
+    {
+      const glm::dvec3 n = stripNormal(mesh->GetPoints(), ids->GetPointer(0), ids->GetNumberOfIds());
+      normal[0] = n.x;
+      normal[1] = n.y;
+      normal[2] = n.z;
     }
     else if (ids->GetNumberOfIds() >= 3 && mesh->GetCellType(c) != VTK_POLY_LINE && mesh->GetCellType(c) != VTK_POLY_VERTEX)
     {

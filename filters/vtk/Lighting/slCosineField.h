@@ -9,7 +9,8 @@
  *
  * Point values use the point normals; cell values use the cell normals
  * ("Normals" cell array) when present, otherwise each polygon's own normal
- * (Newell's method), at the cell's vertex centroid. For point and spot
+ * (Newell's method) and each triangle strip's area-weighted mean of its
+ * triangles' normals, at the cell's vertex centroid. For point and spot
  * lights L̂ changes from point to point; for directional lights it is
  * constant. The spot cone and attenuation do not enter: this is the
  * geometric cosine only (see slRadianceFilter for what reaches the point).

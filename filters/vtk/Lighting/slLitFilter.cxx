@@ -16,6 +16,7 @@
 
 #include <vtkCamera.h>
 #include <vtkDataArray.h>
+#include <vtkLight.h>
 #include <vtkLightCollection.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
@@ -68,6 +69,26 @@ slLitFilter::~slLitFilter()
   this->SetCamera(nullptr);
 }
 
+namespace
+{
+/// "" or why the lighting cannot use @p data's point normals.
+std::string pointNormalsProblem(vtkPointData* data)
+{
+  // vtkPointData::SetNormals() takes 3-component arrays only.
+  vtkDataArray* normals = data->GetNormals();
+  if (!normals && data->GetArray("Normals"))
+  {
+    // A "Normals" array that is not the normals attribute (vtkPointData::SetNormals).
+    return "its point array \"Normals\" is not set as its point normals (vtkPointData::SetNormals)";
+  }
+  if (!normals)
+  {
+    return "it has no point normals; compute them first (slPolyDataNormals)";
+  }
+  return std::string();
+}
+} // namespace
+
 vtkMTimeType slLitFilter::GetMTime()
 {
   vtkMTimeType t = this->Superclass::GetMTime();
@@ -77,6 +98,17 @@ vtkMTimeType slLitFilter::GetMTime()
     if (o && o->GetMTime() > t)
     {
       t = o->GetMTime();
+    }
+  }
+  // A collection's time changes when lights are added or removed, not when
+  // one of them is moved or dimmed: each light counts too.
+  if (this->Lights)
+  {
+    vtkCollectionSimpleIterator it;
+    this->Lights->InitTraversal(it);
+    while (vtkLight* light = this->Lights->GetNextLight(it))
+    {
+      t = std::max(t, light->GetMTime());
     }
   }
   return t;
@@ -154,9 +186,10 @@ bool slLitFilter::PrepareLighting(
     return false;
   }
   vtkDataArray* normals = input->GetPointData()->GetNormals();
-  if (!normals || normals->GetNumberOfComponents() != 3)
+  const std::string normalsProblem = pointNormalsProblem(input->GetPointData());
+  if (!normalsProblem.empty())
   {
-    this->Fail(output, "input mesh: it has no point normals (3-component Normals array); compute them first");
+    this->Fail(output, "input mesh: " + normalsProblem);
     return false;
   }
   if (this->ZeroNormalsAreErrors && checkNormals)
@@ -254,6 +287,16 @@ void slLitFilter::SetModel(int model)
   }
 }
 
+bool slLitFilter::SetModelName(const char* name)
+{
+  return slSetModelByName(this, name);
+}
+
+std::string slLitFilter::GetModelName() const
+{
+  return slModelNameOf(this->Model);
+}
+
 void slLitFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
@@ -263,7 +306,8 @@ void slLitFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Camera: " << this->Camera << "\n";
   os << indent << "ZeroNormalsAreErrors: " << this->ZeroNormalsAreErrors << "\n";
   os << indent << "SceneFileName: " << (this->SceneFileName ? this->SceneFileName : "(none)") << "\n";
-  os << indent << "Model: " << this->Model << "\n";
+  os << indent << "Model: " << this->Model << (this->Model < 0 ? " (the scene's)" : " (" + this->GetModelName() + ")")
+     << "\n";
   os << indent << "OverrideMaterial: " << this->OverrideMaterial << "\n";
   const std::pair<const char*, const double*> colours[] = { { "AmbientColor", this->AmbientColor },
     { "DiffuseColor", this->DiffuseColor }, { "SpecularColor", this->SpecularColor },

@@ -110,6 +110,11 @@ public:
   /// the model as it was.
   void SetModel(int model);
   vtkGetMacro(Model, int);
+  /// By scene-file name ("phong", "cook-torrance-ggx", ...: those of
+  /// slScene::SetModelName()); false, and the model as it was, for an
+  /// unknown name. GetModelName() is "" while the model is the scene's own.
+  bool SetModelName(const char* name);
+  std::string GetModelName() const;
   ///@}
 
   ///@{

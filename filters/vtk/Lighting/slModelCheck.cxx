@@ -14,3 +14,15 @@ bool slCheckModel(vtkObject* self, int model, bool sceneOwnAllowed)
   vtkErrorWithObjectMacro(self, "SetModel: " << problem << (sceneOwnAllowed ? ", or -1 for the scene's own" : ""));
   return false;
 }
+
+int slModelNumber(const char* name)
+{
+  shadelab::ShadingModel model;
+  return name && shadelab::parseModelName(name, model) ? static_cast<int>(model) : -2;
+}
+
+std::string slModelNameOf(int model)
+{
+  return shadelab::modelValueProblem(model).empty() ? shadelab::modelName(static_cast<shadelab::ShadingModel>(model))
+                                                     : std::string();
+}

@@ -9,6 +9,8 @@
 
 #include "ShadeLabLightingModule.h"
 
+#include <string>
+
 class vtkObject;
 
 /// True if @p model is a lighting model (or -1 when @p sceneOwnAllowed: the
@@ -16,5 +18,28 @@ class vtkObject;
 /// lambert, 1 phong, ...)" as an error of @p self (vtkErrorWithObjectMacro,
 /// so observers of @p self's ErrorEvent receive it) and returns false.
 SHADELABLIGHTING_EXPORT bool slCheckModel(vtkObject* self, int model, bool sceneOwnAllowed = false);
+
+/// The SL_MODEL_* value of the model named @p name in scene files
+/// ("phong", "cook-torrance-ggx", ...; shadelab::modelNames()), or -2 for a
+/// null or unknown name: what every SetModelName() passes to its SetModel().
+SHADELABLIGHTING_EXPORT int slModelNumber(const char* name);
+
+/// @p self->SetModel() with the model named @p name; false, and nothing
+/// set, for a null or unknown name. The body of every SetModelName().
+template <typename Self>
+bool slSetModelByName(Self* self, const char* name)
+{
+  const int model = slModelNumber(name);
+  if (model < 0)
+  {
+    return false;
+  }
+  self->SetModel(model);
+  return true;
+}
+
+/// The scene-file name of model @p model, or "" for -1 (the scene's own)
+/// and any other number that is not a model: what every GetModelName() says.
+SHADELABLIGHTING_EXPORT std::string slModelNameOf(int model);
 
 #endif
