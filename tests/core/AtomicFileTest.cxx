@@ -252,3 +252,44 @@ TEST_P(AtomicFileOfKind, CommitWrittenRefusesAShortFile)
   EXPECT_EQ(slurp(path), "12345");
   EXPECT_EQ(entriesIn(folder), 1);
 }
+
+TEST_P(AtomicFileOfKind, WritesThroughSymbolicLinks)
+{
+  // A link to a figure in another folder (relative, then absolute, then a
+  // link to a link): the figure is replaced, the link stays a link.
+  const std::string folder = freshFolder();
+  ASSERT_EQ(mkdir((folder + "/slides").c_str(), 0755), 0);
+  const std::string figure = folder + "/slides/fig.png";
+  writeFileAtomically(figure, "old");
+  ASSERT_EQ(symlink("slides/fig.png", (folder + "/relative.png").c_str()), 0);
+  ASSERT_EQ(symlink(figure.c_str(), (folder + "/absolute.png").c_str()), 0);
+  ASSERT_EQ(symlink("relative.png", (folder + "/chain.png").c_str()), 0);
+  for (const char* link : { "relative.png", "absolute.png", "chain.png" })
+  {
+    this->write(folder + "/" + link, link);
+    EXPECT_EQ(slurp(figure), link);
+    struct stat info;
+    ASSERT_EQ(lstat((folder + "/" + link).c_str(), &info), 0);
+    EXPECT_TRUE(S_ISLNK(info.st_mode)) << link;
+    EXPECT_EQ(entriesIn(folder + "/slides"), 1) << "no temporary file beside the figure";
+  }
+  EXPECT_EQ(entriesIn(folder), 4);
+
+  // A dangling link makes the file it names.
+  ASSERT_EQ(symlink("slides/new.png", (folder + "/dangling.png").c_str()), 0);
+  this->write(folder + "/dangling.png", "made");
+  EXPECT_EQ(slurp(folder + "/slides/new.png"), "made");
+
+  // A loop of links is refused as open() refuses it.
+  ASSERT_EQ(symlink("loop-b.png", (folder + "/loop-a.png").c_str()), 0);
+  ASSERT_EQ(symlink("loop-a.png", (folder + "/loop-b.png").c_str()), 0);
+  try
+  {
+    this->write(folder + "/loop-a.png", "x");
+    FAIL();
+  }
+  catch (const shadelab::Error& e)
+  {
+    EXPECT_EQ(std::string(e.what()), folder + "/loop-a.png: cannot create output file: Too many levels of symbolic links");
+  }
+}

@@ -70,6 +70,28 @@ void removeStaleTemporaries(const TemporaryName& name)
   ::closedir(dir);
 }
 
+/// The file a write of @p path replaces: @p path, or where its symbolic
+/// links lead, as open() and `cp` write through them; renaming over the link
+/// itself would turn it into a plain file and leave its target as it was.
+/// A dangling link leads to the file to create. Throws shadelab::Error for
+/// a loop of links.
+std::string followLinks(const std::string& path)
+{
+  std::string current = path;
+  for (int hops = 0; hops <= 40; ++hops) // Linux's own limit (ELOOP)
+  {
+    std::vector<char> buffer(PATH_MAX + 1);
+    const ssize_t length = ::readlink(current.c_str(), buffer.data(), buffer.size());
+    if (length < 0 || static_cast<std::size_t>(length) >= buffer.size())
+    {
+      return current; // not a link (or nothing there yet): the file itself
+    }
+    const std::string link(buffer.data(), static_cast<std::size_t>(length));
+    current = link[0] == '/' ? link : folderOf(current) + link;
+  }
+  throw Error(path + ": cannot create output file: " + std::strerror(ELOOP));
+}
+
 /// The path through which the open file @p fd can be opened and linked.
 std::string descriptorPath(int fd)
 {
@@ -132,13 +154,14 @@ TemporaryName temporaryNameFor(const std::string& target, std::size_t nameMax)
 AtomicOutput::AtomicOutput(std::string target, TemporaryKind kind)
   : Target(std::move(target))
 {
-  this->Name = temporaryNameFor(this->Target, nameMaxOf(folderOf(this->Target)));
+  this->Destination = followLinks(this->Target);
+  this->Name = temporaryNameFor(this->Destination, nameMaxOf(folderOf(this->Destination)));
   const TemporaryName& name = this->Name;
   removeStaleTemporaries(name);
 
   if (kind == TemporaryKind::Unnamed)
   {
-    this->Descriptor = openUnnamed(folderOf(this->Target));
+    this->Descriptor = openUnnamed(folderOf(this->Destination));
     if (this->Descriptor >= 0)
     {
       // Its name, given at commit(), must not look stale to another writer.
@@ -175,7 +198,7 @@ AtomicOutput::AtomicOutput(std::string target, TemporaryKind kind)
   // (0666 less the umask), or the mode of the file it will replace.
   struct stat existing;
   mode_t mode;
-  if (::stat(this->Target.c_str(), &existing) == 0)
+  if (::stat(this->Destination.c_str(), &existing) == 0)
   {
     mode = existing.st_mode & 07777;
   }
@@ -261,7 +284,7 @@ void AtomicOutput::commit()
     this->fail("cannot write output file", errno);
   }
   const std::string named = this->Unnamed ? this->giveName() : this->Temporary;
-  if (::rename(named.c_str(), this->Target.c_str()) != 0)
+  if (::rename(named.c_str(), this->Destination.c_str()) != 0)
   {
     const int error = errno;
     if (this->Unnamed)
@@ -272,7 +295,7 @@ void AtomicOutput::commit()
   }
   this->Committed = true;
   // The rename itself is durable once the folder is synced.
-  const std::string folder = folderOf(this->Target);
+  const std::string folder = folderOf(this->Destination);
   const int dir = ::open(folder.empty() ? "." : folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (dir >= 0)
   {

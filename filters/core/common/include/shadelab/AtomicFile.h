@@ -19,6 +19,10 @@
  * has a name; a process killed while the name exists leaves it behind
  * unlocked, and the next AtomicOutput for the same target removes such
  * files, never one another live process still holds.
+ *
+ * A target that is a symbolic link is written through: the file it leads
+ * to is replaced (the temporary file lies beside that one), and the link
+ * stays a link.
  */
 
 #include "shadelab/Error.h"
@@ -94,7 +98,8 @@ private:
   /// Links the unnamed file under a new temporary name and returns it.
   std::string giveName() const;
 
-  std::string Target;
+  std::string Target;      ///< as given, for messages
+  std::string Destination; ///< the file replaced: Target, its links followed
   TemporaryName Name;
   std::string Temporary;
   int Descriptor = -1;
