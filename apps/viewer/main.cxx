@@ -4,7 +4,10 @@
 #include "ShadingPanel.h"
 #include "ViewerDocument.h"
 
+#include "slFileExtension.h"
+#include "slImageWriter.h"
 #include "slOffscreen.h"
+#include "slOutputWindow.h"
 #include "slScene.h"
 
 #include <QApplication>
@@ -65,8 +68,13 @@ int main(int argc, char** argv)
   const QCommandLineOption panelOption(
     "panel", "raise a panel: Shading, Material, Lights, Normals, Fields or BRDF", "NAME");
   const QCommandLineOption splitOption("split", "start in the split view flat | Gouraud | Phong");
-  parser.addOptions({ sceneOption, shotOption, windowShotOption, panelOption, splitOption });
+  const QCommandLineOption verboseOption("verbose", "also print VTK's own multi-line error reports");
+  parser.addOptions({ sceneOption, shotOption, windowShotOption, panelOption, splitOption, verboseOption });
   parser.process(app);
+  // As in `shadelab`: the viewer reports each problem itself, in one line or
+  // a dialog that gives VTK's reason (slErrorCapture); VTK's own reports
+  // would only repeat it on the terminal.
+  slOutputWindow::Install(parser.isSet(verboseOption));
 
   shadelab::viewer::MainWindow window;
   const bool scripted = parser.isSet(shotOption) || parser.isSet(windowShotOption);
@@ -75,6 +83,16 @@ int main(int argc, char** argv)
   if (positional.size() > 1)
   {
     return fail("give at most one mesh (got " + QString::number(positional.size()) + ")");
+  }
+  if (parser.isSet(shotOption))
+  {
+    // Before anything is loaded or rendered.
+    const QByteArray shot = parser.value(shotOption).toLocal8Bit();
+    const std::string problem = slFormatProblem(shot.constData(), "image", slImageWriter::GetSupportedExtensions());
+    if (!problem.empty())
+    {
+      return fail(parser.value(shotOption) + ": " + QString::fromStdString(problem));
+    }
   }
   const bool defaults = positional.isEmpty() && !parser.isSet(sceneOption);
   const QString scene = parser.isSet(sceneOption) ? parser.value(sceneOption) : (defaults ? bundledDataDir() + "/scenes/default.json" : "");

@@ -52,6 +52,8 @@
 #include <QLabel>
 #include <QListWidget>
 #include <QMimeData>
+#include <QDir>
+#include <QPair>
 #include <QProcess>
 #include <QProcessEnvironment>
 #include <QProgressBar>
@@ -575,6 +577,35 @@ private slots:
     const QString message = QString::fromUtf8(viewer.readAllStandardError()).trimmed();
     QVERIFY2(message.startsWith("shadelab-viewer: ") && !message.contains('\n'), qPrintable(message));
     QVERIFY2(message.contains("DISPLAY"), qPrintable(message));
+  }
+
+  void scriptedFailuresGiveOneLine()
+  {
+    // A mesh that cannot be read, a screenshot that cannot be written: one
+    // line each, exit 1, and not VTK's multi-line report before it.
+    const QString mesh = QString(SHADELAB_DATA_DIR) + "/meshes/spot.obj";
+    const QString folder = QString(SHADELAB_TEST_OUTPUT_DIR);
+    QDir().mkpath(folder);
+    const QList<QPair<QStringList, QString>> cases = {
+      { { folder + "/no-such-mesh.obj", "--screenshot", folder + "/x.png" }, "no-such-mesh.obj" },
+      { { mesh, "--screenshot", folder + "/no-such-folder/x.png" }, "no-such-folder/x.png" },
+      { { mesh, "--screenshot", folder + "/x.gif" }, "x.gif" },
+    };
+    // Qt's own note about a missing XDG_RUNTIME_DIR is not the viewer's.
+    QTemporaryDir runtime;
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.insert("XDG_RUNTIME_DIR", runtime.path());
+    for (const auto& c : cases)
+    {
+      QProcess viewer;
+      viewer.setProcessEnvironment(environment);
+      viewer.start(QString(SHADELAB_VIEWER_PROGRAM), c.first);
+      QVERIFY(viewer.waitForFinished(60000));
+      const QString message = QString::fromUtf8(viewer.readAllStandardError()).trimmed();
+      QCOMPARE(viewer.exitCode(), 1);
+      QVERIFY2(message.startsWith("shadelab-viewer: ") && !message.contains('\n'), qPrintable(message));
+      QVERIFY2(message.contains(c.second), qPrintable(message));
+    }
   }
 
   void materialControlsFollowTheModel()
