@@ -5,8 +5,9 @@
  * @brief The image regression metric, through OpenImageIO.
  *
  * A pixel fails when any channel differs from the baseline by more than
- * PixelThreshold (in [0, 1] units); an image passes when at most
- * AllowedFailingFraction of its pixels fail and its size matches.
+ * PixelThresholdLevels of 255, counted in whole 8-bit levels; an image
+ * passes when at most AllowedFailingFraction of its pixels fail and its
+ * size matches.
  */
 
 #include <string>
@@ -16,7 +17,7 @@ class vtkImageData;
 namespace regression
 {
 
-constexpr float PixelThreshold = 2.0f / 255.0f;
+constexpr int PixelThresholdLevels = 2;
 constexpr double AllowedFailingFraction = 0.002;
 
 struct Verdict

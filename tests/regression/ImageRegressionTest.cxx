@@ -19,6 +19,7 @@
 #include "slSceneRenderer.h"
 #include "VTKErrors.h"
 
+#include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
 
@@ -233,3 +234,50 @@ INSTANTIATE_TEST_SUITE_P(Scenes, ImageRegression, ::testing::ValuesIn(allCases()
     }
     return name;
   });
+
+namespace
+{
+/// A @p width x @p height RGB image whose channel c of pixel i is the level
+/// level(i, c).
+template <typename Level>
+vtkSmartPointer<vtkImageData> levelImage(int width, int height, Level level)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(width, height, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* pixels = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (int i = 0; i < width * height; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      pixels[3 * i + c] = static_cast<unsigned char>(level(i, c));
+    }
+  }
+  return image;
+}
+} // namespace
+
+TEST(ImageRegressionMetric, CountsWholeLevels)
+{
+  // Every level 0..255 against a baseline 2 levels off passes: "more than
+  // 2/255" is 3 levels. Compared as floats (a multiply on one side, a
+  // division on the other), about half of such pixels failed.
+  const std::string folder = SHADELAB_TEST_OUTPUT_DIR;
+  mkdir(folder.c_str(), 0755);
+  const std::string baseline = folder + "/metric-baseline.png";
+  const auto base = [](int i, int c) { return (i + 85 * c) % 254; };
+  ASSERT_EQ(regression::writeBaseline(levelImage(254, 4, base), baseline), "");
+  const auto plusTwo = [&](int i, int c) { return base(i, c) + 2; };
+  const regression::Verdict two = regression::compareWithBaseline(levelImage(254, 4, plusTwo), baseline, folder, "metric");
+  EXPECT_TRUE(two.passed) << two.message;
+  EXPECT_EQ(two.failingPixels, 0) << two.message;
+  EXPECT_DOUBLE_EQ(two.maxError * 255.0, 2.0);
+
+  // Three levels off in one channel of 3 pixels: those 3 fail, which 0.2 %
+  // of 1016 pixels (2) does not allow.
+  const auto threeOff = [&](int i, int c) { return base(i, c) + (i < 3 && c == 1 ? 3 : 0); };
+  const regression::Verdict three = regression::compareWithBaseline(levelImage(254, 4, threeOff), baseline, folder, "metric");
+  EXPECT_FALSE(three.passed) << three.message;
+  EXPECT_EQ(three.failingPixels, 3) << three.message;
+  EXPECT_DOUBLE_EQ(three.maxError * 255.0, 3.0);
+}
