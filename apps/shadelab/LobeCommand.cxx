@@ -11,6 +11,7 @@
 
 #include "shadelab/AtomicFile.h"
 #include "shadelab/BrdfFile.h"
+#include "shadelab/LightingTables.h"
 #include "shadelab/Scene.h"
 #include "slAlbedoTable.h"
 #include "slBRDFFileEvaluator.h"
@@ -52,8 +53,9 @@ void applyLobeOptions(const CommandLine& cl, slBRDFLobeSource* lobe)
 {
   applyMaterialOptionsByKey(cl, lobe);
   lobe->SetIncidenceAngle(cl.getNumber("incidence", 45.0, 0.0, 90.0));
-  lobe->SetDiffuseWeight(cl.getNumber("kd", 0.0, 0.0, 1e3));
-  lobe->SetSpecularWeight(cl.getNumber("ks", 1.0, 0.0, 1e3));
+  // Not given: the model's unit weight (slBRDFLobeSource's -1).
+  lobe->SetDiffuseWeight(cl.getNumber("kd", -1.0, 0.0, 1e3));
+  lobe->SetSpecularWeight(cl.getNumber("ks", -1.0, 0.0, 1e3));
   lobe->SetMultiplyByCosine(cl.has("cosine"));
 }
 
@@ -145,15 +147,30 @@ void refuseOptionsOfOtherModes(const CommandLine& cl, LobeMode mode)
 std::vector<OptionSpec> lobeOptions()
 {
   std::vector<OptionSpec> specs =
-    withMaterialOptions(litOptions(), "default: the scene's with MESH, else shininess 20 and the default scene's others");
+    withMaterialOptions(litOptions(), [](const shadelab::MaterialParameterInfo& row) {
+      // A lone lobe's numbers are slBRDFLobeSource's own.
+      vtkNew<slBRDFLobeSource> lone;
+      std::ostringstream text;
+      text << "default: the scene's with MESH, else " << lone->GetMaterialParameter(row.key);
+      return text.str();
+    });
   // --image and --fields draw the arrays of a lit mesh beside it; lobe draws
   // its own images (-o LOBE.png, -o LOBES.png), so they are not offered.
   specs.erase(std::remove_if(specs.begin(), specs.end(),
                 [](const OptionSpec& spec) { return spec.name == "image" || spec.name == "fields"; }),
     specs.end());
   specs.push_back({ "incidence", "", "DEG", "angle of incidence from the normal (single lobe; default 45)" });
-  specs.push_back({ "kd", "", "X", "k_d (single lobe; default 0)" });
-  specs.push_back({ "ks", "", "X", "k_s (single lobe; default 1)" });
+  // The models whose unit weight is k_d (shadelab::unitWeights()).
+  std::string diffuseOnly;
+  for (const shadelab::LightingModelInfo& m : shadelab::kLightingModels)
+  {
+    if (shadelab::unitWeights(m.model).diffuse > 0.0f)
+    {
+      diffuseOnly += (diffuseOnly.empty() ? "" : ", ") + std::string(m.name);
+    }
+  }
+  specs.push_back({ "kd", "", "X", "k_d (single lobe; default 1 for " + diffuseOnly + ", else 0)" });
+  specs.push_back({ "ks", "", "X", "k_s (single lobe; default 0 for " + diffuseOnly + ", else 1)" });
   specs.push_back({ "cosine", "", "", "multiply the lobe by cos(theta_o)" });
   specs.push_back({ "slice", "", "FILE", "also write the polar slice in the plane of incidence (single lobe)" });
   specs.push_back({ "points", "", "N", "lobes on MESH: number of sampled points (default 16)" });

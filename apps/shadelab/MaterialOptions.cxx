@@ -28,13 +28,19 @@ std::string materialOptionName(const char* key)
 
 std::vector<OptionSpec> withMaterialOptions(std::vector<OptionSpec> specs, const std::string& defaults)
 {
+  return withMaterialOptions(std::move(specs), [&](const MaterialParameterInfo&) { return defaults; });
+}
+
+std::vector<OptionSpec> withMaterialOptions(
+  std::vector<OptionSpec> specs, const std::function<std::string(const MaterialParameterInfo&)>& defaultOf)
+{
   std::vector<OptionSpec> numbers;
   for (const MaterialParameterInfo& row : kMaterialParameters)
   {
     if (!row.colour)
     {
       std::ostringstream help;
-      help << row.meaning << "; in [" << row.lo << ", " << row.hi << "] (" << defaults << ")";
+      help << row.meaning << "; in [" << row.lo << ", " << row.hi << "] (" << defaultOf(row) << ")";
       numbers.push_back({ materialOptionName(row.key), "", "X", help.str() });
     }
   }

@@ -13,6 +13,7 @@
 
 #include "shadelab/MaterialParameters.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,11 @@ std::string materialOptionName(const char* key);
 /// @p specs with one option per number row of the material table, before
 /// --help; @p defaults ends each help line ("default: the scene's").
 std::vector<OptionSpec> withMaterialOptions(std::vector<OptionSpec> specs, const std::string& defaults);
+
+/// As above, with @p defaultOf(row) ending the help line of each row, for
+/// a command whose defaults differ from row to row.
+std::vector<OptionSpec> withMaterialOptions(
+  std::vector<OptionSpec> specs, const std::function<std::string(const MaterialParameterInfo&)>& defaultOf);
 
 /// The value of @p row's option, or @p fallback if it was not given. Throws
 /// UsageError naming the option for a value that is not a number in the

@@ -47,7 +47,7 @@ std::vector<Shape> shapesOf(int model, const std::vector<double>& shininess)
   std::vector<Shape> shapes;
   if (reads & kReadsRoughness)
   {
-    for (double r : { 0.0, 0.05, 0.1, 0.3, 0.6, 1.0 })
+    for (double r : { 0.0, 0.05, 0.1, 0.2, 0.3, 0.6, 1.0 })
     {
       shapes.push_back(Shape{ 0.0, r, 0.0, 0.0 });
     }
@@ -55,7 +55,7 @@ std::vector<Shape> shapesOf(int model, const std::vector<double>& shininess)
   else if (reads & kReadsRoughnessPair)
   {
     for (glm::dvec2 p : { glm::dvec2(0.01, 0.05), glm::dvec2(0.05, 0.3), glm::dvec2(0.2, 0.2), glm::dvec2(0.5, 0.1),
-           glm::dvec2(1.0, 0.7) })
+           glm::dvec2(1.0, 0.1), glm::dvec2(1.0, 0.7) })
     {
       shapes.push_back(Shape{ 0.0, 0.0, p.x, p.y });
     }
@@ -179,14 +179,16 @@ TEST_P(AlbedoAccuracyOf, WithinOneTenThousandthOfAnIndependentQuadrature)
     }
   }
   std::printf("largest difference, %s: %.3g; largest albedo %.4f\n", kLightingModels[model].name, worst, highest);
-  // Measured: Oren-Nayar 1.0078 (roughness 0.1 at 89.9 degrees), Ward 1.785.
+  // Measured: Oren-Nayar 1.0151 (roughness 0.2 at 89.9 degrees, the most
+  // over roughness in steps of 0.02), Ward 2.33 (pair 1, 0.1 at 89.9).
   if (model == glsl::SL_MODEL_OREN_NAYAR)
   {
-    EXPECT_LT(highest, 1.01);
+    EXPECT_GT(highest, 1.01);
+    EXPECT_LT(highest, 1.02);
   }
   if (model == glsl::SL_MODEL_WARD)
   {
-    EXPECT_GT(highest, 1.5);
+    EXPECT_GT(highest, 2.3);
   }
 }
 

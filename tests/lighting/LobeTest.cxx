@@ -152,6 +152,48 @@ TEST(BRDFLobeSource, NormalisedLambertIsAHemisphereOfRadiusRhoOverPi)
   }
 }
 
+TEST(BRDFLobeSource, WeightsNotGivenShowTheModelsOwnTerm)
+{
+  // Without weights a lobe is never empty: Lambert's is its diffuse
+  // hemisphere (k_d = 1: radius 1, normalised 1/pi, Oren-Nayar above 0),
+  // Phong's its specular lobe alone (k_d = 0, k_s = 1: 1 / cos 30 at the
+  // mirror direction, where max(0, R.V)^n = 1).
+  const auto radii = [](int model) {
+    vtkNew<slBRDFLobeSource> lobe;
+    lobe->SetModel(model);
+    lobe->SetIncidenceAngle(30.0);
+    lobe->Update();
+    vtkPolyData* surface = lobe->GetOutput(0);
+    double lo = INFINITY, hi = 0.0;
+    for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      surface->GetPoint(i, p);
+      const double r = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+      lo = std::min(lo, r);
+      hi = std::max(hi, r);
+    }
+    return std::make_pair(lo, hi);
+  };
+  EXPECT_NEAR(radii(0).first, 1.0, 1e-6);
+  EXPECT_NEAR(radii(0).second, 1.0, 1e-6);
+  EXPECT_NEAR(radii(3).first, 1.0 / kPi, 1e-6);
+  EXPECT_NEAR(radii(3).second, 1.0 / kPi, 1e-6);
+  EXPECT_GT(radii(8).first, 0.1 / kPi); // oren-nayar: rough Lambert
+  const std::pair<double, double> phong = radii(1);
+  EXPECT_NEAR(phong.second, 1.0 / std::cos(30.0 * kPi / 180.0), 0.02); // sampled near the peak
+  EXPECT_NEAR(phong.first, 0.0, 1e-6);
+
+  // A weight given is used as given, the other still the model's.
+  vtkNew<slBRDFLobeSource> lobe;
+  lobe->SetModel(0);
+  lobe->SetSpecularWeight(5.0);
+  lobe->Update();
+  double p[3];
+  lobe->GetOutput(0)->GetPoint(0, p);
+  EXPECT_NEAR(std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]), 1.0, 1e-6);
+}
+
 TEST(BRDFLobeSource, PhongSlicePeaksAtTheMirrorDirection)
 {
   // Lecture Phong, k_s = 1: f_r = max(0, R.V)^n / cos(theta_i), largest at V = R.

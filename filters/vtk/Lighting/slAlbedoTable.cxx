@@ -54,9 +54,9 @@ int slAlbedoTable::RequestData(vtkInformation*, vtkInformationVector**, vtkInfor
       glsl::slMaterial m = material;
       m.ambient = m.emission = glm::vec3(0.0f);
       // The diffuse albedo of a model without a specular term, else its specular one.
-      const bool lambert = (modelInfo(static_cast<ShadingModel>(model)).reads & kReadsSpecular) == 0;
-      m.diffuse = glm::vec3(lambert ? 1.0f : 0.0f);
-      m.specular = glm::vec3(lambert ? 0.0f : 1.0f);
+      const UnitWeights unit = unitWeights(static_cast<ShadingModel>(model));
+      m.diffuse = glm::vec3(unit.diffuse);
+      m.specular = glm::vec3(unit.specular);
       values[static_cast<size_t>(k)] =
         directionalAlbedo(model, m, degrees->GetValue(a) * 3.14159265358979323846 / 180.0);
     }

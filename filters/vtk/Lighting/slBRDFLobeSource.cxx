@@ -42,8 +42,11 @@ shadelab::LobeSpec lobeSpec(slBRDFLobeSource* source, const shadelab::SceneMater
   spec.model = source->GetModel();
   spec.material = toEvaluationMaterial(material);
   spec.material.ambient = spec.material.emission = glm::vec3(0.0f);
-  spec.material.diffuse = glm::vec3(static_cast<float>(source->GetDiffuseWeight()));
-  spec.material.specular = glm::vec3(static_cast<float>(source->GetSpecularWeight()));
+  // A negative weight is the model's unit weight (unitWeights()).
+  const UnitWeights unit = unitWeights(static_cast<ShadingModel>(spec.model));
+  const double kd = source->GetDiffuseWeight(), ks = source->GetSpecularWeight();
+  spec.material.diffuse = glm::vec3(kd < 0.0 ? unit.diffuse : static_cast<float>(kd));
+  spec.material.specular = glm::vec3(ks < 0.0 ? unit.specular : static_cast<float>(ks));
   double toLight[3];
   source->GetDirectionToLight(toLight);
   spec.toLight = glm::vec3(glm::dvec3(toLight[0], toLight[1], toLight[2]));

@@ -86,10 +86,13 @@ public:
   ///@}
 
   ///@{
-  /// k_d and k_s (grey; defaults 0 and 1: the specular lobe alone).
-  vtkSetClampMacro(DiffuseWeight, double, 0.0, 1.0e3);
+  /// k_d and k_s (grey). A negative weight (the default, -1) is the
+  /// model's unit weight, as in slAlbedoTable: k_d = 1 for lambert,
+  /// lambert-normalized and oren-nayar, which have no specular term; k_s = 1
+  /// and k_d = 0 for the others (the specular lobe alone).
+  vtkSetClampMacro(DiffuseWeight, double, -1.0, 1.0e3);
   vtkGetMacro(DiffuseWeight, double);
-  vtkSetClampMacro(SpecularWeight, double, 0.0, 1.0e3);
+  vtkSetClampMacro(SpecularWeight, double, -1.0, 1.0e3);
   vtkGetMacro(SpecularWeight, double);
   ///@}
 
@@ -149,8 +152,8 @@ private:
 
   int Model = 1;
   std::unique_ptr<shadelab::SceneMaterial> Material;
-  double DiffuseWeight = 0.0;
-  double SpecularWeight = 1.0;
+  double DiffuseWeight = -1.0;
+  double SpecularWeight = -1.0;
   double IncidenceAngle = 45.0;
   bool MultiplyByCosine = false;
   int ThetaResolution = 32;

@@ -68,8 +68,8 @@ enum class SpecularLobe
   X(vec3, emission, kReadsEmission, "emission", glm::vec3(0.0f), anyValue(), "k_e, added once per point")             \
   X(float, shininess, kReadsShininess, "shininess", 32.0f, closed(0.0, kMaxShininess), "n, the specular exponent")   \
   X(float, roughness, kReadsRoughness, "roughness", 0.3f, closed(0.0, 1.0),                                           \
-    "alpha, the facets' RMS slope: the width of GGX and Beckmann (at least 0.01 in the formulas); Oren-Nayar's "    \
-    "sigma in radians (0: Lambert)")                                                                                 \
+    "alpha, the width of GGX and Beckmann (Beckmann's RMS facet slope; at least 0.01 in the formulas); "          \
+    "Oren-Nayar's sigma in radians (0: Lambert)")                                                                                 \
   X(float, roughnessX, kReadsRoughnessPair, "roughnessX", 0.15f, closed(0.0, 1.0),                                    \
     "alpha along the tangent X (Ward, Ashikhmin-Shirley; at least 0.01 in the formulas)")                            \
   X(float, roughnessY, kReadsRoughnessPair, "roughnessY", 0.45f, closed(0.0, 1.0),                                    \
@@ -264,6 +264,19 @@ constexpr const LightTypeInfo& lightTypeInfo(LightType type)
 constexpr bool modelNeedsTangents(ShadingModel model)
 {
   return (modelInfo(model).reads & kReadsRoughnessPair) != 0;
+}
+
+/// The grey k_d and k_s that show @p model's own reflection at unit
+/// strength: k_d = 1 for a model without a specular term (lambert,
+/// lambert-normalized, oren-nayar), else k_s = 1 and k_d = 0. The albedo
+/// table's material, and a lobe's weights unless they are given.
+struct UnitWeights
+{
+  float diffuse, specular;
+};
+constexpr UnitWeights unitWeights(ShadingModel model)
+{
+  return (modelInfo(model).reads & kReadsSpecular) != 0 ? UnitWeights{ 0.0f, 1.0f } : UnitWeights{ 1.0f, 0.0f };
 }
 
 /// Whether a light of type @p type takes parameter @p bit.
