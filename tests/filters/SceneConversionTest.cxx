@@ -1,20 +1,27 @@
 // slScene <-> vtkLight / vtkProperty / vtkCamera, both ways.
+#include "slImageWriter.h"
 #include "slScene.h"
+#include "TestFolder.h"
 
 #include "shadelab/Scene.h"
 #include "VTKErrors.h"
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
+#include <vtkDataArray.h>
+#include <vtkImageData.h>
 #include <vtkLight.h>
 #include <vtkLightCollection.h>
 #include <vtkNew.h>
+#include <vtkPointData.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
+#include <vtkTexture.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace
@@ -297,4 +304,59 @@ TEST(SceneConversion, UnreadableTextureNamesTheImageAndTheScene)
   const std::string suffix = " (material.diffuseTexture of textured.json)";
   ASSERT_GE(error.size(), suffix.size()) << error;
   EXPECT_EQ(error.substr(error.size() - suffix.size()), suffix) << error;
+}
+
+TEST(SceneConversion, DeepTexturesReachVTKAsStoredValues)
+{
+  // 8-bit textures stay unsigned char (v / 255); deeper ones (read as
+  // float) reach the vtkTexture as float in direct-scalars mode, not through
+  // its lookup table: values above 1 kept, the CPU's rule for the rest (not
+  // finite: 0; clamped to +-1e6). The rendering tests: SceneTextureTest.
+  const TestFolder folder;
+  const float inf = std::numeric_limits<float>::infinity();
+  const float values[6] = { 0.25f, 2.5f, std::numeric_limits<float>::quiet_NaN(), inf, -1e7f, 1e7f };
+  const double expected[6] = { 0.25, 2.5, 0.0, 0.0, -1e6, 1e6 };
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(2, 1, 1);
+  image->AllocateScalars(VTK_FLOAT, 3);
+  std::copy(values, values + 6, static_cast<float*>(image->GetScalarPointer()));
+  vtkNew<vtkImageData> bytes;
+  bytes->SetDimensions(2, 1, 1);
+  bytes->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  for (int i = 0; i < 6; ++i)
+  {
+    static_cast<unsigned char*>(bytes->GetScalarPointer())[i] = static_cast<unsigned char>(40 * i);
+  }
+  for (vtkImageData* picture : { image.Get(), bytes.Get() })
+  {
+    const bool deep = picture == image.Get();
+    const std::string file = folder.path(deep ? "deep.exr" : "bytes.png");
+    vtkNew<slImageWriter> writer;
+    writer->SetInputData(picture);
+    writer->SetFileName(file.c_str());
+    ASSERT_EQ(callError(writer, [&] { return writer->Write(); }), "") << file;
+
+    vtkNew<slScene> scene;
+    ASSERT_EQ(callError(scene, [&] {
+      const std::string json = "{\"material\": {\"diffuseTexture\": \"" + file + "\"}}";
+      return scene->ReadString(json.c_str(), "textured.json");
+    }),
+      "");
+    vtkNew<vtkActor> actor;
+    ASSERT_EQ(callError(scene, [&] { return scene->ApplyToActor(actor); }), "") << file;
+    vtkTexture* texture = actor->GetTexture();
+    ASSERT_NE(texture, nullptr) << file;
+    EXPECT_EQ(texture->GetColorMode(), VTK_COLOR_MODE_DIRECT_SCALARS) << file;
+    texture->Update();
+    vtkImageData* input = texture->GetInput();
+    ASSERT_NE(input, nullptr) << file;
+    vtkDataArray* scalars = input->GetPointData()->GetScalars();
+    ASSERT_NE(scalars, nullptr) << file;
+    EXPECT_EQ(scalars->GetDataType(), deep ? VTK_FLOAT : VTK_UNSIGNED_CHAR) << file;
+    ASSERT_EQ(scalars->GetNumberOfValues(), 6) << file;
+    for (vtkIdType i = 0; i < 6; ++i)
+    {
+      EXPECT_EQ(scalars->GetComponent(i / 3, static_cast<int>(i % 3)), deep ? expected[i] : 40.0 * i) << file << " " << i;
+    }
+  }
 }

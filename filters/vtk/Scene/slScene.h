@@ -109,7 +109,10 @@ public:
   /// and places the camera (fitting the visible props if the scene gives no
   /// camera position, so call it after adding the actors). ApplyToActor() sets
   /// the property, interpolation and diffuse texture; false, after
-  /// vtkErrorMacro naming the texture file, if that cannot be read.
+  /// vtkErrorMacro naming the texture file, if that cannot be read. The
+  /// texture shows 8-bit images as v / 255 and deeper ones (16-bit, EXR,
+  /// HDR) as their float values, as stored, like slRadianceFilter's lookup
+  /// (docs/scene-format.md, "Diffuse textures").
   void ApplyToRenderer(vtkRenderer* renderer);
   /// ApplyToRenderer() with the camera fitted to @p bounds for an image of
   /// @p width x @p height (see ApplyCamera()) instead of the visible props.

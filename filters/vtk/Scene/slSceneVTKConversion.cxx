@@ -3,18 +3,27 @@
 
 #include "shadelab/CameraPlacement.h"
 #include "shadelab/Scene.h"
+#include "shadelab/ValueLimits.h"
 #include "slCoreBoundary.h"
 #include "slImageReader.h"
 #include "slUpdateOrThrow.h"
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
 #include <vtkLight.h>
 #include <vtkLightCollection.h>
 #include <vtkNew.h>
+#include <vtkPointData.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
 #include <vtkTexture.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <algorithm>
+#include <cmath>
 
 namespace
 {
@@ -39,6 +48,44 @@ void note(std::string& notes, const std::string& item)
 std::string lightPath(size_t index)
 {
   return "lights[" + std::to_string(index) + "]";
+}
+
+/// Readies the diffuse texture read into @p image (slImageReader's output,
+/// used by nothing else) for a vtkTexture in direct-scalars mode.
+///
+/// 8-bit images are left as they are (v means v / 255). Deeper ones (16-bit
+/// PNG and TIFF, EXR, HDR) come from slImageReader as float, 16-bit values
+/// normalised to [0, 1]; vtkTexture's default colour mode would map them
+/// through a lookup table over their range (a blue cow). In direct-scalars
+/// mode they go up as a float texture (RGB32F: no precision lost, values
+/// above 1 kept), so the shaders see the values as stored, as
+/// slDiffuseColors takes them on the CPU: HDR values above 1 brighten k_a
+/// and k_d, and the pixel is clamped when written. The CPU's rule for the
+/// rest keeps the two paths in agreement (and the GPU away from NaN): values
+/// that are not finite become 0, the others are clamped to
+/// +-kMaxColourValue, in place.
+void prepareTextureImage(vtkImageData* image)
+{
+  vtkDataArray* scalars = image->GetPointData()->GetScalars();
+  if (!scalars || vtkUnsignedCharArray::SafeDownCast(scalars))
+  {
+    return;
+  }
+  vtkSmartPointer<vtkFloatArray> values = vtkFloatArray::SafeDownCast(scalars);
+  if (!values) // slImageReader gives unsigned char or float; any other type becomes float
+  {
+    values = vtkSmartPointer<vtkFloatArray>::New();
+    values->DeepCopy(scalars);
+    values->SetName(scalars->GetName());
+    image->GetPointData()->SetScalars(values);
+  }
+  float* v = values->GetPointer(0);
+  const float limit = static_cast<float>(shadelab::kMaxColourValue);
+  for (vtkIdType i = 0, n = values->GetNumberOfValues(); i < n; ++i)
+  {
+    v[i] = std::isfinite(v[i]) ? std::max(-limit, std::min(v[i], limit)) : 0.0f;
+  }
+  values->Modified();
 }
 } // namespace
 
@@ -239,8 +286,13 @@ bool slScene::ApplyToActor(vtkActor* actor)
   {
     return false;
   }
+  prepareTextureImage(reader->GetOutput());
   vtkNew<vtkTexture> texture;
-  texture->SetInputConnection(reader->GetOutputPort());
+  // The image, not the reader: it is read once and not again at a render.
+  texture->SetInputData(reader->GetOutput());
+  // Unsigned char as v / 255, float as it is (see prepareTextureImage);
+  // never through a lookup table.
+  texture->SetColorModeToDirectScalars();
   texture->InterpolateOn();
   texture->MipmapOn();
   // VTK multiplies the texture into the ambient and diffuse colours: the
