@@ -6,6 +6,8 @@
 
 #include "shadelab/Scene.h"
 #include "slComparisonRenderer.h"
+#include "slLightingPass.h"
+#include "slOffscreen.h"
 #include "slScene.h"
 #include "slUpdateOrThrow.h"
 
@@ -13,6 +15,7 @@
 #include <vtkPolyData.h>
 
 #include <iostream>
+#include <string>
 
 namespace shadelab
 {
@@ -29,7 +32,7 @@ int runCompare(const std::vector<std::string>& args)
     { "grid", "", "A,B,...", "draw these lighting models (or all) at the scene's frequency instead of frequencies" },
     { "columns", "", "N", "panels per row (default: one row; 4 with --grid)" },
     { "diff", "", "", "add a panel with the difference of the last two panels, amplified" },
-    { "amplify", "", "X", "amplification of the difference panel (default 8)" },
+    { "amplify", "", "X", "with --diff: amplification of the difference panel (default 8)" },
     { "size", "", "WxH", "size of each panel (default 400x300)" },
     { "help", "h", "", "show this help" },
   };
@@ -52,6 +55,10 @@ int runCompare(const std::vector<std::string>& args)
     parseSize(cl.get("size"), width, height);
   }
   const double amplify = cl.getNumber("amplify", 8.0, 1.0, 1000.0);
+  if (cl.has("amplify") && !cl.has("diff"))
+  {
+    throw UsageError("--amplify: only with --diff");
+  }
   if (cl.has("grid") && cl.has("models"))
   {
     throw UsageError("--grid: give either --grid or --models");
@@ -59,7 +66,35 @@ int runCompare(const std::vector<std::string>& args)
   const std::vector<ShadingModel> grid =
     cl.has("grid") ? parseModelList("grid", cl.get("grid"), true) : std::vector<ShadingModel>();
   const int columns = cl.getIndex("columns", grid.empty() ? 0 : 4, 1, 64);
+  const int panels = grid.empty() ? 3 : static_cast<int>(grid.size()); // --models and the frequencies: 3
+  if (cl.has("diff") && panels < 2)
+  {
+    throw UsageError("--diff: needs two panels to compare (--grid names " + std::to_string(panels) + ")");
+  }
+
+  vtkNew<slComparisonRenderer> comparison;
+  comparison->SetPanelWidth(width);
+  comparison->SetPanelHeight(height);
+  comparison->SetColumns(columns);
+  // Refused before any work: beyond the largest image, nothing is drawn.
+  const int cells = panels + (cl.has("diff") ? 1 : 0);
+  int imageWidth = 0, imageHeight = 0;
+  comparison->GetCompositeSize(cells, imageWidth, imageHeight);
+  if (!slWindowSizeProblem(imageWidth, imageHeight).empty())
+  {
+    throw UsageError("--size: " + std::to_string(cells) + " panels of " + std::to_string(width) + "x" +
+      std::to_string(height) + ", " + std::to_string(imageWidth / width) +
+      " a row, make a " + std::to_string(imageWidth) + "x" + std::to_string(imageHeight) +
+      " image; at most " + std::to_string(slMaximumWindowSize) + "x" + std::to_string(slMaximumWindowSize) +
+      " can be rendered");
+  }
+
   vtkSmartPointer<slScene> scene = loadScene(cl.get("scene"));
+  const std::string lightProblem = slLightingPass::GetLightCountProblem(scene->GetNumberOfLights());
+  if (!lightProblem.empty())
+  {
+    throw Error(cl.get("scene") + ": " + lightProblem);
+  }
   vtkSmartPointer<vtkPolyData> mesh = loadMesh(meshPath);
   if (!grid.empty())
   {
@@ -73,12 +108,8 @@ int runCompare(const std::vector<std::string>& args)
     checkTangentsFor(scene, mesh, meshPath);
   }
 
-  vtkNew<slComparisonRenderer> comparison;
   comparison->SetScene(scene);
   comparison->SetMesh(mesh);
-  comparison->SetPanelWidth(width);
-  comparison->SetPanelHeight(height);
-  comparison->SetColumns(columns);
   const std::string model = scene->GetModelName();
   const std::string frequency = scene->GetFrequencyName();
   if (!grid.empty())
@@ -102,7 +133,7 @@ int runCompare(const std::vector<std::string>& args)
   }
   if (cl.has("diff"))
   {
-    comparison->SetDifference(1, 2, amplify);
+    comparison->SetDifference(panels - 2, panels - 1, amplify); // the last two, as --help says
   }
   slCallOrThrow(comparison, [&] { return comparison->Render(); });
   writeImage(comparison->GetImage(), cl.get("output"));

@@ -6,6 +6,7 @@
 #include "shadelab/AtomicFile.h"
 #include "shadelab/DefaultScene.h"
 #include "shadelab/Scene.h"
+#include "shadelab/SceneLimits.h"
 #include "slImageWriter.h"
 #include "slMeshReader.h"
 #include "slMeshWriter.h"
@@ -154,12 +155,13 @@ void parseSize(const std::string& text, int& width, int& height)
       return false;
     }
     value = std::stoi(digits);
-    return value >= 16 && value <= 8192;
+    return value >= kMinImageSize && value <= kMaxImageSize;
   };
   const size_t x = text.find_first_of("xX");
   if (x == std::string::npos || !side(text.substr(0, x), width) || !side(text.substr(x + 1), height))
   {
-    throw UsageError("--size: \"" + text + "\" is not WxH with 16 <= W, H <= 8192");
+    throw UsageError("--size: \"" + text + "\" is not WxH with " + std::to_string(kMinImageSize) +
+      " <= W, H <= " + std::to_string(kMaxImageSize));
   }
 }
 

@@ -101,7 +101,8 @@ void checkTangentsFor(slScene* scene, vtkPolyData* mesh, const std::string& path
 /// The same check for drawing @p mesh with @p model.
 void checkTangentsFor(ShadingModel model, vtkPolyData* mesh, const std::string& path);
 
-/// Parses "WxH" (16..8192 each). Throws UsageError.
+/// Parses "WxH", each in [kMinImageSize, kMaxImageSize] (SceneLimits.h, the
+/// range of a scene's imageSize and of a panel). Throws UsageError.
 void parseSize(const std::string& text, int& width, int& height);
 
 /// The --compress option of every subcommand that writes meshes.

@@ -69,28 +69,91 @@ void applyBrdfOptions(const CommandLine& cl, slScene* scene)
   scene->SetScene(s);
 }
 
-void applyComponentOptions(const CommandLine& cl, slLightingPass* pass)
+/// The component view asked for on the command line, checked before
+/// anything is read.
+struct ComponentOptions
+{
+  int component = slLightingPass::TOTAL;
+  int light = -1; ///< -1: every light
+  bool falseColor = false;
+};
+
+/// Reads --component, --light and --false-color. Each is refused (UsageError)
+/// where the image would not show it: with --vtk-lighting (only ShadeLab's
+/// pass draws components), --light and --false-color without a component
+/// view, --light with total or emission (no single light's part).
+ComponentOptions parseComponentOptions(const CommandLine& cl)
 {
   static const char* const names[] = { "total", "ambient", "diffuse", "specular", "emission", "cos" };
+  constexpr int count = static_cast<int>(sizeof(names) / sizeof(names[0]));
+  // The names of the components for which @p show holds: "a, b or c".
+  auto listOf = [](auto show, const char* last = " or ") {
+    std::vector<std::string> shown;
+    for (int i = 0; i < count; ++i)
+    {
+      if (show(i))
+      {
+        shown.emplace_back(names[i]);
+      }
+    }
+    std::string text;
+    for (size_t i = 0; i < shown.size(); ++i)
+    {
+      text += (i == 0 ? "" : i + 1 == shown.size() ? last : ", ") + shown[i];
+    }
+    return text;
+  };
+  auto perLight = [](int c) { return c != slLightingPass::TOTAL && c != slLightingPass::EMISSION; };
+  auto view = [](int c) { return c != slLightingPass::TOTAL; };
+
+  ComponentOptions options;
+  for (const char* name : { "component", "light", "false-color" })
+  {
+    if (cl.has(name) && cl.has("vtk-lighting"))
+    {
+      throw UsageError(std::string("--") + name + ": only for ShadeLab's pass, not with --vtk-lighting");
+    }
+  }
   if (cl.has("component"))
   {
     const std::string name = cl.get("component");
-    int component = -1;
-    for (int i = 0; i < 6; ++i)
+    options.component = -1;
+    for (int i = 0; i < count; ++i)
     {
-      component = name == names[i] ? i : component;
+      options.component = name == names[i] ? i : options.component;
     }
-    if (component < 0)
+    if (options.component < 0)
     {
-      throw UsageError("--component: \"" + name + "\" is not one of total, ambient, diffuse, specular, emission, cos");
+      throw UsageError("--component: \"" + name + "\" is not one of " + listOf([](int) { return true; }, ", "));
     }
-    pass->SetComponent(component);
   }
   if (cl.has("light"))
   {
-    pass->SetComponentLight(cl.getIndex("light", 0, 0, slLightingPass::GetMaximumNumberOfLights() - 1));
+    if (!perLight(options.component))
+    {
+      throw UsageError("--light: only with --component " + listOf(perLight));
+    }
+    // An index no scene can have in the pass (negative, or beyond
+    // GetMaximumNumberOfLights()) is a usage error (2); one the scene lacks
+    // is known only after reading it (runRender: 1, as cosine and lobe).
+    options.light = cl.getIndex("light", 0, 0, slLightingPass::GetMaximumNumberOfLights() - 1);
   }
-  pass->SetFalseColor(cl.has("false-color"));
+  if (cl.has("false-color"))
+  {
+    if (!view(options.component))
+    {
+      throw UsageError("--false-color: only with --component " + listOf(view));
+    }
+    options.falseColor = true;
+  }
+  return options;
+}
+
+void applyComponentOptions(const ComponentOptions& options, slLightingPass* pass)
+{
+  pass->SetComponent(options.component);
+  pass->SetComponentLight(options.light);
+  pass->SetFalseColor(options.falseColor);
 }
 
 int runRender(const std::vector<std::string>& args)
@@ -102,8 +165,8 @@ int runRender(const std::vector<std::string>& args)
     { "model", "", "NAME", modelOptionHelp() },
     { "frequency", "", "NAME", "override the scene's shading frequency: flat, gouraud, phong" },
     { "component", "", "NAME", "show only: ambient, diffuse, specular, emission or cos (N.L)" },
-    { "light", "", "K", "with --component: only light K (0-based; cos uses light 0 by default)" },
-    { "false-color", "", "", "with --component: false colour instead of grey/RGB" },
+    { "light", "", "K", "with --component ambient, diffuse, specular or cos: only light K (0-based; cos uses light 0 by default)" },
+    { "false-color", "", "", "with --component (not total): false colour instead of grey/RGB" },
     { "brdf", "", "FILE", "shade with a BRDF Explorer .brdf file's BRDF instead of the model's (replaces the scene's brdf)" },
     { "param", "", "NAME=VALUE", "a .brdf parameter's value (float, bool true/false/0/1, colour r,g,b); repeat for more" },
     { "vtk-lighting", "", "", "use VTK's built-in lighting instead of ShadeLab's pass (prints what it lacks)" },
@@ -122,14 +185,21 @@ int runRender(const std::vector<std::string>& args)
   }
   const std::string meshPath = cl.meshWithOutput();
   checkOutputOption(cl, "output", { OutputKind::Image });
+  const ComponentOptions components = parseComponentOptions(cl);
 
   vtkSmartPointer<slScene> scene = loadScene(cl.get("scene"));
   applySceneOverrides(cl, scene);
   applyBrdfOptions(cl, scene);
+  // The pass would draw only its first lights, unlike the CPU filters. VTK's
+  // own lighting (--vtk-lighting) takes the scene's lights as vtkLights.
+  const std::string lightProblem = slLightingPass::GetLightCountProblem(scene->GetNumberOfLights());
+  if (!cl.has("vtk-lighting") && !lightProblem.empty())
+  {
+    throw Error(cl.get("scene") + ": " + lightProblem);
+  }
   // As cosine and lobe do: a light the scene does not have is an error, not
-  // a background-only image.
-  if (cl.has("light") && cl.getIndex("light", 0, 0, slLightingPass::GetMaximumNumberOfLights() - 1) >=
-      scene->GetNumberOfLights())
+  // a background-only image; exit 1, as it depends on the scene file.
+  if (components.light >= scene->GetNumberOfLights())
   {
     throw Error("option --light: light " + cl.get("light") + " is out of range: the scene has " +
       std::to_string(scene->GetNumberOfLights()) + " lights");
@@ -148,7 +218,7 @@ int runRender(const std::vector<std::string>& args)
 
     vtkNew<slSceneRenderer> renderer;
     renderer->SetUseShadeLabLighting(!cl.has("vtk-lighting"));
-    applyComponentOptions(cl, renderer->GetLightingPass());
+    applyComponentOptions(components, renderer->GetLightingPass());
     renderer->SetScene(scene);
     renderer->SetMesh(mesh);
     renderer->SetWidth(width);

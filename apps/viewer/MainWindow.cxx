@@ -179,13 +179,13 @@ bool MainWindow::saveScene(const QString& path, QString* error)
 
 bool MainWindow::saveScreenshot(const QString& path, QString* error)
 {
-  vtkSmartPointer<vtkImageData> image = this->View->grabImage();
   vtkNew<slImageWriter> writer;
   const QByteArray file = path.toLocal8Bit();
   writer->SetFileName(file.constData());
-  writer->SetInputData(image);
   try
   {
+    // The capture throws rather than hand over a picture it could not draw.
+    writer->SetInputData(this->View->grabImage());
     slCallOrThrow(writer, [&] { return writer->Write(); });
   }
   catch (const shadelab::Error& e)

@@ -29,6 +29,7 @@
 #include <vtkShader.h>
 #include <vtkShaderProgram.h>
 
+#include <algorithm>
 #include <map>
 #include <set>
 #include <vector>
@@ -128,7 +129,7 @@ struct slLightingPass::Internals
   std::vector<shadelab::glsl::slLight> LightsVC; // view coordinates
   std::vector<LightUniformNames> Names;
   bool Parallel = false;
-  bool WarnedTooManyLights = false;
+  bool ReportedTooManyLights = false; // until the lights fit again
   bool WarnedNoNormals = false;
   bool WarnedNoTangents = false;
   std::set<vtkMapper*> TangentMappers; // mappers given the slTangentMC attribute
@@ -173,6 +174,26 @@ slLightingPass::~slLightingPass() = default;
 int slLightingPass::GetMaximumNumberOfLights()
 {
   return shaders::MaximumLights;
+}
+
+std::string slLightingPass::GetLightCountProblem(int numberOfLights)
+{
+  if (numberOfLights <= shaders::MaximumLights)
+  {
+    return "";
+  }
+  return std::to_string(numberOfLights) + " lights; ShadeLab's lighting pass draws at most " +
+    std::to_string(shaders::MaximumLights);
+}
+
+void slLightingPass::SetComponentLight(int light)
+{
+  light = std::max(-1, std::min(light, shaders::MaximumLights - 1));
+  if (light != this->ComponentLight)
+  {
+    this->ComponentLight = light;
+    this->Modified();
+  }
 }
 
 int slLightingPass::GetNumberOfLightsUsed() const
@@ -515,14 +536,21 @@ void slLightingPass::PrepareLights(vtkRenderer* renderer)
     fromVTK->SetLightsFromVTK(renderer->GetLights());
     lights = fromVTK->GetScene().lights;
   }
-  if (lights.size() > static_cast<size_t>(shaders::MaximumLights))
+  // Too many lights: an error (the picture lacks some), reported once until
+  // the lights fit again; the first ones are still drawn.
+  const std::string tooMany = GetLightCountProblem(static_cast<int>(std::min<size_t>(lights.size(), VTK_INT_MAX)));
+  if (!tooMany.empty())
   {
-    if (!this->Internal->WarnedTooManyLights)
+    if (!this->Internal->ReportedTooManyLights)
     {
-      vtkWarningMacro(<< lights.size() << " lights given; the pass uses the first " << shaders::MaximumLights);
-      this->Internal->WarnedTooManyLights = true;
+      vtkErrorMacro(<< tooMany << ": the others are left out of the picture");
+      this->Internal->ReportedTooManyLights = true;
     }
     lights.resize(shaders::MaximumLights);
+  }
+  else
+  {
+    this->Internal->ReportedTooManyLights = false;
   }
 
   const glm::vec3 eye = toVec3(camera->GetPosition());

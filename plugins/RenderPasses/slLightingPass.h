@@ -14,7 +14,7 @@
  *
  * - Models: lambert, phong, blinn-phong and their energy-normalised variants.
  * - Lights: directional, point, spot (cutoff, exponent, smooth edge) and
- *   ambient, up to 16 at once, each with its own ambient, diffuse and
+ *   ambient, up to GetMaximumNumberOfLights() at once, each with its own ambient, diffuse and
  *   specular colour and min(1, .) attenuation; material emission.
  * - Frequency: Flat lights each face once, at its provoking vertex with the
  *   face normal (cell normals when the mesh has them); Gouraud lights each
@@ -69,6 +69,13 @@
  * a compile error is one line, GetBrdfError(), and the meshes are drawn
  * with the built-in model instead; a clash with a name of VTK's own shader
  * code (a parameter called "opacity", say) is reported by VTK.
+ *
+ * @warning More lights than GetMaximumNumberOfLights() do not fit the
+ * shaders: the pass draws the first ones and reports the others as dropped
+ * with vtkErrorMacro (an ErrorEvent observers see; the picture then differs
+ * from the CPU filters, which use every light), once per pass until the
+ * lights fit again. `shadelab render` and `compare` refuse such a scene
+ * before drawing (GetLightCountProblem()).
  *
  * @sa vtkOpenGLRenderPass vtkRenderStepsPass slScene slSceneRenderer
  */
@@ -171,8 +178,9 @@ public:
   ///@}
 
   ///@{
-  /// The light the component view shows: -1 for all lights (N.L shows light 0).
-  vtkSetClampMacro(ComponentLight, int, -1, 15);
+  /// The light the component view shows: -1 for all lights (N.L shows light 0);
+  /// clamped to [-1, GetMaximumNumberOfLights() - 1].
+  void SetComponentLight(int light);
   vtkGetMacro(ComponentLight, int);
   ///@}
 
@@ -245,8 +253,15 @@ public:
   void SetBrdf(const shadelab::BrdfFile& file, const std::vector<glm::vec3>& values);
 #endif
 
-  /// The most lights the shaders hold.
+  /// The most lights the shaders hold (the one place this number lives:
+  /// slLightingPassShaders.h). A scene or renderer with more is drawn with
+  /// the first GetMaximumNumberOfLights() only, after a vtkErrorMacro (see
+  /// the caveat above); check with GetLightCountProblem() first.
   static int GetMaximumNumberOfLights();
+
+  /// "" if the pass draws all of @p numberOfLights lights; else the one-line
+  /// problem ("17 lights; ShadeLab's lighting pass draws at most 16").
+  static std::string GetLightCountProblem(int numberOfLights);
 
   /// Lights used in the last frame (after camera-light transforms).
   int GetNumberOfLightsUsed() const;

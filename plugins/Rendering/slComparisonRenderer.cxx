@@ -105,6 +105,15 @@ bool slComparisonRenderer::Render()
     vtkErrorMacro(<< "difference panels " << this->DifferenceA << " and " << this->DifferenceB << " do not exist");
     return false;
   }
+  const int cells = n + (difference ? 1 : 0);
+  int width = 0, height = 0;
+  this->GetCompositeSize(cells, width, height);
+  const std::string sizeProblem = slWindowSizeProblem(width, height);
+  if (!sizeProblem.empty())
+  {
+    vtkErrorMacro(<< cells << " panels of " << this->PanelWidth << "x" << this->PanelHeight << ": " << sizeProblem);
+    return false;
+  }
   const std::string displayProblem = slDisplayProblem();
   if (!displayProblem.empty())
   {
@@ -118,11 +127,6 @@ bool slComparisonRenderer::Render()
     return false;
   }
 
-  const int cells = n + (difference ? 1 : 0);
-  const int columns = this->columns(cells);
-  const int rows = (cells + columns - 1) / columns;
-  const int width = columns * this->PanelWidth;
-  const int height = rows * this->PanelHeight;
   vtkSmartPointer<vtkRenderWindow> window = slOffscreenWindow(width, height);
   // A window-wide renderer, drawn first, gives the cells no panel covers
   // the scene's background.
@@ -187,13 +191,31 @@ bool slComparisonRenderer::Render()
     }
     return slCaptureWindow(window);
   };
-  vtkSmartPointer<vtkImageData> plain = difference ? capture(false, labels) : nullptr;
-  this->Image = capture(true, labels);
+  // A capture that finds nothing drawn throws: one line, as every failure here.
+  vtkSmartPointer<vtkImageData> plain;
+  vtkSmartPointer<vtkImageData> image;
+  if (!slRunCore(this, [&] {
+        plain = difference ? capture(false, labels) : nullptr;
+        image = capture(true, labels);
+      }))
+  {
+    return false;
+  }
+  this->Image = image;
   if (difference)
   {
     this->FillDifference(plain, this->Image);
   }
   return true;
+}
+
+void slComparisonRenderer::GetCompositeSize(int cells, int& width, int& height) const
+{
+  cells = std::max(cells, 1);
+  const int columns = this->columns(cells);
+  const int rows = (cells + columns - 1) / columns;
+  width = columns * this->PanelWidth;
+  height = rows * this->PanelHeight;
 }
 
 int slComparisonRenderer::columns(int cells) const

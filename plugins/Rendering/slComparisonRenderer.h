@@ -12,7 +12,9 @@
  * panel's model and frequency; SetDifference() appends a panel showing
  * |panel A - panel B| times an amplification factor. The panels fill rows of
  * Columns panels each, top row first (one row when Columns is 0); cells of a
- * short last row show the scene's background.
+ * short last row show the scene's background. The whole composite must fit
+ * slMaximumWindowSize (slOffscreen.h): Render() fails with one line, before
+ * any work, for a larger one.
  *
  * @warning Needs an X display, like every ShadeLab rendering (xvfb-run).
  *
@@ -60,6 +62,12 @@ public:
   vtkSetClampMacro(Columns, int, 0, 64);
   vtkGetMacro(Columns, int);
   ///@}
+
+  /// The size of the composite image of @p cells panels (the difference
+  /// panel counts as one) with the panel size and Columns set now. Render()
+  /// refuses, before any work, a composite beyond slMaximumWindowSize
+  /// (slOffscreen.h), the largest image that can be rendered.
+  void GetCompositeSize(int cells, int& width, int& height) const;
 
   bool Render() override;
 

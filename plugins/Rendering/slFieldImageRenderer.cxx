@@ -312,8 +312,8 @@ bool slFieldImageRenderer::Render()
   {
     filler->SetBackground(renderers.front()->GetBackground());
   }
-  this->Image = slCaptureWindow(window);
-  return true;
+  // A window that cannot be drawn is an error, not a black image.
+  return slRunCore(this, [&] { this->Image = slCaptureWindow(window); });
 }
 
 void slFieldImageRenderer::PrintSelf(ostream& os, vtkIndent indent)

@@ -327,8 +327,8 @@ bool slLobeImageRenderer::Render()
   window->AddRenderer(lobes);
   addChartPanel(window, polar, 1.0 / 3.0, 2.0 / 3.0);
   addChartPanel(window, albedo, 2.0 / 3.0, 1.0);
-  this->Image = slCaptureWindow(window);
-  return true;
+  // A window that cannot be drawn is an error, not a black image.
+  return slRunCore(this, [&] { this->Image = slCaptureWindow(window); });
 }
 
 void slLobeImageRenderer::PrintSelf(ostream& os, vtkIndent indent)

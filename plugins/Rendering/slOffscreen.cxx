@@ -7,11 +7,71 @@
 #include <vtkCallbackCommand.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
+#include <vtkOpenGLFramebufferObject.h>
+#include <vtkOpenGLRenderWindow.h>
 #include <vtkRenderWindow.h>
 #include <vtkWindowToImageFilter.h>
+#include <vtk_glew.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <stdexcept>
+#include <string>
+
+namespace
+{
+std::string sizeText(int width, int height)
+{
+  return std::to_string(width) + "x" + std::to_string(height);
+}
+
+/// "" if @p window (rendered, its context current) was drawn; else why not.
+std::string drawProblem(vtkRenderWindow* window)
+{
+  auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
+  if (!gl)
+  {
+    return "";
+  }
+  const int* size = window->GetSize();
+  GLint viewport[2] = { 0, 0 };
+  GLint renderbuffer = 0;
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &renderbuffer);
+  const int largestWidth = std::min<int>(viewport[0], renderbuffer);
+  const int largestHeight = std::min<int>(viewport[1], renderbuffer);
+  if (largestWidth > 0 && largestHeight > 0 && (size[0] > largestWidth || size[1] > largestHeight))
+  {
+    return sizeText(size[0], size[1]) + " pixels is beyond the largest image this OpenGL can render, " +
+      sizeText(largestWidth, largestHeight) + ": nothing was drawn";
+  }
+  vtkOpenGLFramebufferObject* fbo = gl->GetRenderFramebuffer();
+  if (fbo && fbo->GetFBOIndex() != 0)
+  {
+    fbo->SaveCurrentBindingsAndBuffers(GL_READ_FRAMEBUFFER);
+    fbo->Bind(GL_READ_FRAMEBUFFER);
+    const char* reason = nullptr;
+    const bool complete = vtkOpenGLFramebufferObject::GetFrameBufferStatus(GL_READ_FRAMEBUFFER, reason);
+    fbo->RestorePreviousBindingsAndBuffers(GL_READ_FRAMEBUFFER);
+    if (!complete)
+    {
+      return std::string("the ") + sizeText(size[0], size[1]) + " offscreen framebuffer is incomplete (" +
+        (reason ? reason : "unknown reason") + "): nothing was drawn";
+    }
+  }
+  return "";
+}
+} // namespace
+
+std::string slWindowSizeProblem(int width, int height)
+{
+  if (width <= slMaximumWindowSize && height <= slMaximumWindowSize)
+  {
+    return "";
+  }
+  return sizeText(width, height) + " pixels is beyond the largest image that can be rendered, " +
+    sizeText(slMaximumWindowSize, slMaximumWindowSize);
+}
 
 std::string slDisplayProblem()
 {
@@ -51,6 +111,12 @@ vtkSmartPointer<vtkRenderWindow> slOffscreenWindow(int width, int height)
 vtkSmartPointer<vtkImageData> slCaptureWindow(vtkRenderWindow* window)
 {
   window->Render();
+  window->MakeCurrent();
+  const std::string problem = drawProblem(window);
+  if (!problem.empty())
+  {
+    throw shadelab::Error(problem);
+  }
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(window);
   grab->SetInputBufferTypeToRGB();

@@ -28,10 +28,13 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /// Size of one panel in pixels.
-  vtkSetClampMacro(PanelWidth, int, 16, 4096);
+  /// Size of one panel in pixels, clamped to the image sizes of a scene
+  /// (shadelab::kMinImageSize to kMaxImageSize, SceneLimits.h; `shadelab
+  /// --size` takes the same). A composite of several panels must still fit
+  /// slMaximumWindowSize (slOffscreen.h): Render() refuses a larger one.
+  void SetPanelWidth(int width);
   vtkGetMacro(PanelWidth, int);
-  vtkSetClampMacro(PanelHeight, int, 16, 4096);
+  void SetPanelHeight(int height);
   vtkGetMacro(PanelHeight, int);
   ///@}
 

@@ -8,6 +8,8 @@
 #include "slScene.h"
 #include "slUpdateOrThrow.h"
 
+#include "shadelab/SceneLimits.h"
+
 #include <vtkActor.h>
 #include <vtkImageData.h>
 #include <vtkObjectFactory.h>
@@ -97,6 +99,35 @@ vtkPolyData* slSceneRenderer::GetRenderedMesh()
   return this->RenderedMesh;
 }
 
+namespace
+{
+/// 0 (the scene's size) or @p size clamped to the scene format's range.
+int imageSizeOrScenes(int size)
+{
+  return size <= 0 ? 0 : std::max(shadelab::kMinImageSize, std::min(size, shadelab::kMaxImageSize));
+}
+} // namespace
+
+void slSceneRenderer::SetWidth(int width)
+{
+  width = imageSizeOrScenes(width);
+  if (width != this->Width)
+  {
+    this->Width = width;
+    this->Modified();
+  }
+}
+
+void slSceneRenderer::SetHeight(int height)
+{
+  height = imageSizeOrScenes(height);
+  if (height != this->Height)
+  {
+    this->Height = height;
+    this->Modified();
+  }
+}
+
 bool slSceneRenderer::Render()
 {
   this->Image = nullptr;
@@ -113,6 +144,8 @@ bool slSceneRenderer::Render()
   const shadelab::Scene& scene = this->Scene->GetScene();
   this->Window = slOffscreenWindow(this->Width > 0 ? this->Width : scene.width, this->Height > 0 ? this->Height : scene.height);
   this->Window->AddRenderer(this->Renderer);
+  // Its size is within the scene format's, which every OpenGL here draws;
+  // a context that cannot be made throws (the caller names it).
   this->Image = slCaptureWindow(this->Window);
   // A .brdf file whose GLSL does not compile is known once its shaders are built.
   if (this->UseShadeLabLighting && *this->LightingPass->GetBrdfError())

@@ -68,10 +68,12 @@ public:
   ///@}
 
   ///@{
-  /// Image size in pixels; 0 means "the scene's imageSize".
-  vtkSetClampMacro(Width, int, 0, 8192);
+  /// Image size in pixels; 0 means "the scene's imageSize". Other values
+  /// are clamped to the scene format's range (shadelab::kMinImageSize to
+  /// kMaxImageSize, SceneLimits.h).
+  void SetWidth(int width);
   vtkGetMacro(Width, int);
-  vtkSetClampMacro(Height, int, 0, 8192);
+  void SetHeight(int height);
   vtkGetMacro(Height, int);
   ///@}
 

@@ -3,6 +3,7 @@ import json
 import math
 import os
 import subprocess
+import sys
 import tempfile
 import unittest
 
@@ -26,6 +27,35 @@ def png_size(path):
         header = f.read(24)
     assert header[:8] == b"\x89PNG\r\n\x1a\n", path
     return int.from_bytes(header[16:20], "big"), int.from_bytes(header[20:24], "big")
+
+
+def read_ppm(path):
+    """(width, height, rows): a binary PPM (P6, maxval 255) as rows, top first, of (r, g, b)."""
+    with open(path, "rb") as f:
+        data = f.read()
+    fields, at = [], 0
+    while len(fields) < 4:  # magic, width, height, maxval, with blanks between
+        while data[at:at + 1].isspace():
+            at += 1
+        end = at
+        while not data[end:end + 1].isspace():
+            end += 1
+        fields.append(data[at:end])
+        at = end
+    assert fields[0] == b"P6" and fields[3] == b"255", path
+    width, height = int(fields[1]), int(fields[2])
+    pixels = data[at + 1:]
+    rows = [[tuple(pixels[3 * (y * width + x):3 * (y * width + x) + 3]) for x in range(width)] for y in range(height)]
+    return width, height, rows
+
+
+def many_lights_scene(folder, count):
+    """A scene file with @count dim directional lights."""
+    path = os.path.join(folder, "lights%d.json" % count)
+    with open(path, "w") as f:
+        json.dump({"lights": [{"type": "directional", "direction": [0, -0.3 * (i % 3), -1], "intensity": 0.05}
+                              for i in range(count)]}, f)
+    return path
 
 
 class HelpTest(unittest.TestCase):
@@ -155,6 +185,106 @@ class RenderTest(unittest.TestCase):
             self.assertEqual(r.stderr, message)
         self.assertFalse(os.path.exists(self.out))
 
+    def test_options_the_image_would_ignore(self):
+        # Each was accepted and gave the same image as without it.
+        with open(self.out, "wb") as f:
+            f.write(b"previous image")
+        cases = [
+            (["--vtk-lighting", "--component", "specular", "--false-color"],
+             "--component: only for ShadeLab's pass, not with --vtk-lighting"),
+            (["--vtk-lighting", "--false-color"], "--false-color: only for ShadeLab's pass, not with --vtk-lighting"),
+            (["--light", "1"], "--light: only with --component ambient, diffuse, specular or cos"),
+            (["--component", "emission", "--light", "0"], "--light: only with --component ambient, diffuse, specular or cos"),
+            (["--component", "total", "--light", "0"], "--light: only with --component ambient, diffuse, specular or cos"),
+            (["--false-color"], "--false-color: only with --component ambient, diffuse, specular, emission or cos"),
+            (["--component", "total", "--false-color"],
+             "--false-color: only with --component ambient, diffuse, specular, emission or cos"),
+        ]
+        for args, message in cases:
+            r = run("render", SPOT, *args, "-o", self.out)
+            self.assertEqual((r.returncode, r.stderr), (2, "shadelab render: " + message + "\n"), args)
+        with open(self.out, "rb") as f:
+            self.assertEqual(f.read(), b"previous image")
+
+    def test_light_index_exit_status(self):
+        # No scene has light -1 or 16 in the pass: a usage error (2). Whether
+        # light 9 exists only the scene can tell: exit 1, as cosine and lobe.
+        for k, status in (("-1", 2), ("16", 2), ("9", 1)):
+            r = run("render", SPOT, "--component", "cos", "--light", k, "-o", self.out)
+            self.assertEqual(r.returncode, status, r.stderr)
+            self.assertEqual(r.stderr.count("\n"), 1, r.stderr)
+            self.assertTrue(r.stderr.startswith("shadelab render: option --light: "), r.stderr)
+        self.assertFalse(os.path.exists(self.out))
+
+    def test_more_lights_than_the_pass_holds(self):
+        # The pass drew the first 16 of 17 and said nothing; the CPU filters use all 17.
+        scene = many_lights_scene(self.folder.name, 17)
+        r = run("render", SPOT, "--scene", scene, "--size", "32x32", "-o", self.out)
+        self.assertEqual((r.returncode, r.stderr),
+                         (1, "shadelab render: " + scene + ": 17 lights; ShadeLab's lighting pass draws at most 16\n"))
+        self.assertFalse(os.path.exists(self.out))
+        # VTK's own lighting takes them all; 16 is the pass's limit.
+        r = run("render", SPOT, "--scene", scene, "--size", "32x32", "--vtk-lighting", "-q", "-o", self.out)
+        self.assertEqual((r.returncode, r.stderr), (0, ""))
+        r = run("render", SPOT, "--scene", many_lights_scene(self.folder.name, 16), "--size", "32x32", "-o", self.out)
+        self.assertEqual((r.returncode, r.stderr), (0, ""))
+
+    def test_pass_reports_dropped_lights_as_an_error(self):
+        # A library user's slLightingPass draws the first 16 of 17 lights and
+        # says so with an ErrorEvent (it was a warning the app swallowed).
+        scene = many_lights_scene(self.folder.name, 17)
+        script = """
+import sys, shadelab
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.util.vtkConstants import VTK_STRING
+from vtkmodules.vtkFiltersSources import vtkSphereSource
+scene = shadelab.slScene()
+assert scene.ReadFile(sys.argv[1])
+sphere = vtkSphereSource()
+sphere.Update()
+renderer = shadelab.slSceneRenderer()
+renderer.SetScene(scene)
+renderer.SetMesh(sphere.GetOutput())
+renderer.SetWidth(32)
+renderer.SetHeight(32)
+errors = []
+@calldata_type(VTK_STRING)
+def keep(caller, event, text):
+    errors.append(text.strip().splitlines()[-1].partition("): ")[2])
+renderer.GetLightingPass().AddObserver("ErrorEvent", keep)
+renderer.Render()
+print(renderer.GetLightingPass().GetNumberOfLightsUsed())
+print("|".join(errors))
+"""
+        r = subprocess.run([sys.executable, "-c", script, scene], capture_output=True, text=True, timeout=120)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(r.stdout.splitlines(), [
+            "16", "17 lights; ShadeLab's lighting pass draws at most 16: the others are left out of the picture"])
+
+    def test_capture_beyond_the_largest_image_fails_loudly(self):
+        # Three lobe-image panels of 8192 (the largest panel) make a window
+        # OpenGL cannot draw: the capture names the problem instead of
+        # returning black, as an ErrorEvent, and Render() fails; the process
+        # goes on (a field image and a scene render alike).
+        script = """
+import shadelab
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.util.vtkConstants import VTK_STRING
+r = shadelab.slLobeImageRenderer()
+r.AddModel("phong")
+r.SetPanelWidth(8192)
+r.SetPanelHeight(16)
+@calldata_type(VTK_STRING)
+def keep(caller, event, text):
+    print(text)
+r.AddObserver("ErrorEvent", keep)
+print(r.GetPanelWidth(), r.Render(), r.GetImage() is None)
+"""
+        r = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("24576x16 pixels is beyond the largest image this OpenGL can render, 16384x16384", r.stdout)
+        self.assertIn("8192 False", r.stdout)
+
     def test_unwritable_output(self):
         r = run("render", SPOT, "-o", "/nonexistent-folder/x.png", "-q")
         self.assert_one_line_failure(r, "shadelab render: /nonexistent-folder/x.png: cannot create output file")
@@ -169,6 +299,67 @@ class RenderTest(unittest.TestCase):
 
 
 class CompareTest(unittest.TestCase):
+    def test_difference_of_the_last_two_panels(self):
+        # As --help and docs/render-pass.md say: |panel n-1 - panel n|, here
+        # two identical Lambert panels, so the difference panel is black
+        # below its label (it showed |blinn-phong - lambert|, panels 2 and 3).
+        with tempfile.TemporaryDirectory() as folder:
+            out = os.path.join(folder, "grid.ppm")
+            r = run("compare", SPOT, "--grid", "phong,blinn-phong,lambert,lambert", "--diff", "--amplify", "1",
+                    "--columns", "5", "--size", "64x48", "-o", out)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            width, height, rows = read_ppm(out)
+            self.assertEqual((width, height), (5 * 64, 48))
+            below_label = [max(p) for row in rows[height // 3:] for p in row[4 * 64:]]
+            self.assertLessEqual(max(below_label), 2)
+            lambert = [max(p) for row in rows[height // 3:] for p in row[3 * 64:4 * 64]]
+            self.assertGreater(max(lambert), 50, "the panels are drawn")
+            # Two panels are enough (it failed: "difference panels 1 and 2 do not exist").
+            r = run("compare", SPOT, "--grid", "phong,blinn-phong", "--diff", "--size", "64x48", "-o", out)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertEqual(read_ppm(out)[:2], (3 * 64, 48))
+            r = run("compare", SPOT, "--grid", "phong", "--diff", "-o", os.path.join(folder, "one.png"))
+            self.assertEqual((r.returncode, r.stderr),
+                             (2, "shadelab compare: --diff: needs two panels to compare (--grid names 1)\n"))
+            self.assertFalse(os.path.exists(os.path.join(folder, "one.png")))
+
+    def test_composite_beyond_the_largest_image_is_refused(self):
+        # It wrote a black 20000x64 image, and clamped 6000-wide panels to
+        # 4096 (a 12288x200 image): refused before any work now.
+        five = "lambert,phong,blinn-phong,lambert-normalized,phong-normalized"
+        with tempfile.TemporaryDirectory() as folder:
+            out = os.path.join(folder, "big.png")
+            for args, message in (
+                    (["--grid", five, "--columns", "5", "--size", "4000x64"],
+                     "5 panels of 4000x64, 5 a row, make a 20000x64 image"),
+                    (["--grid", five, "--columns", "1", "--size", "200x4000"],
+                     "5 panels of 200x4000, 1 a row, make a 200x20000 image"),
+                    (["--size", "6000x200"], "3 panels of 6000x200, 3 a row, make a 18000x200 image")):
+                r = run("compare", "/nonexistent/m.obj", *args, "-o", out)  # refused before the mesh is read
+                self.assertEqual((r.returncode, r.stderr), (2, "shadelab compare: --size: " + message +
+                                                            "; at most 16384x16384 can be rendered\n"), args)
+                self.assertFalse(os.path.exists(out))
+            # Panels wider than 4096 are honoured when the composite fits.
+            r = run("compare", SPOT, "--size", "5000x16", "-o", out)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertEqual(png_size(out), (15000, 16))
+
+    def test_options_the_image_would_ignore(self):
+        with tempfile.TemporaryDirectory() as folder:
+            out = os.path.join(folder, "a.png")
+            r = run("compare", SPOT, "--amplify", "2", "-o", out)
+            self.assertEqual((r.returncode, r.stderr), (2, "shadelab compare: --amplify: only with --diff\n"))
+            self.assertFalse(os.path.exists(out))
+
+    def test_more_lights_than_the_pass_holds(self):
+        with tempfile.TemporaryDirectory() as folder:
+            scene = many_lights_scene(folder, 17)
+            out = os.path.join(folder, "c.png")
+            r = run("compare", SPOT, "--scene", scene, "--size", "32x32", "-o", out)
+            self.assertEqual((r.returncode, r.stderr), (1, "shadelab compare: " + scene +
+                                                        ": 17 lights; ShadeLab's lighting pass draws at most 16\n"))
+            self.assertFalse(os.path.exists(out))
+
     def test_frequencies_with_difference_panel(self):
         with tempfile.TemporaryDirectory() as folder:
             out = os.path.join(folder, "compare.png")

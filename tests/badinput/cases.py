@@ -3,6 +3,7 @@
 Arguments and messages use paths relative to the case's folder, where the
 input files are written and every out.* argument already exists with other
 content. Each case expects exactly one line on stderr."""
+import json
 import struct
 
 from inputs import (QUAD_OBJ, TETRA_OFF, THREE_LIGHTS, dds_volume, exr, exr_attribute, exr_scanlines, glb, gltf, legacy_vtk, light_types,
@@ -719,4 +720,29 @@ CASES = [
              "shadelab lobe: --points: only for lobes on MESH\n"),
     cli_case("lobe scene of a single lobe", ["lobe", "-o", "out.png", "--scene", "three.json"],
              "shadelab lobe: --scene: only for lobes on MESH (a single lobe takes --model and the material options)\n"),
+    # render and compare refuse options their image would ignore, composites beyond the largest
+    # image that can be rendered, and scenes with more lights than the lighting pass holds.
+    cli_case("render component with vtk lighting", ["render", "m.off", "--vtk-lighting", "--component", "specular",
+             "--false-color", "-o", "out.png"], "shadelab render: --component: only for ShadeLab's pass, not with --vtk-lighting\n"),
+    cli_case("render light without component", ["render", "m.off", "--light", "1", "-o", "out.png"],
+             "shadelab render: --light: only with --component ambient, diffuse, specular or cos\n"),
+    cli_case("render light of emission", ["render", "m.off", "--component", "emission", "--light", "0", "-o", "out.png"],
+             "shadelab render: --light: only with --component ambient, diffuse, specular or cos\n"),
+    cli_case("render false colour without component", ["render", "m.off", "--false-color", "-o", "out.png"],
+             "shadelab render: --false-color: only with --component ambient, diffuse, specular, emission or cos\n"),
+    cli_case("render light beyond the pass", ["render", "m.off", "--component", "cos", "--light", "16", "-o", "out.png"],
+             "shadelab render: option --light: 16 is out of range [0, 15]\n"),
+    cli_case("render more lights than the pass holds", ["render", "m.off", "--scene", "many.json", "-o", "out.png"],
+             "shadelab render: many.json: 17 lights; ShadeLab's lighting pass draws at most 16\n", status=1,
+             files={"many.json": json.dumps({"lights": [{"type": "directional"}] * 17}).encode()}),
+    cli_case("compare more lights than the pass holds", ["compare", "m.off", "--scene", "many.json", "-o", "out.png"],
+             "shadelab compare: many.json: 17 lights; ShadeLab's lighting pass draws at most 16\n", status=1,
+             files={"many.json": json.dumps({"lights": [{"type": "directional"}] * 17}).encode()}),
+    cli_case("compare amplify without diff", ["compare", "m.off", "--amplify", "2", "-o", "out.png"],
+             "shadelab compare: --amplify: only with --diff\n"),
+    cli_case("compare diff of one panel", ["compare", "m.off", "--grid", "phong", "--diff", "-o", "out.png"],
+             "shadelab compare: --diff: needs two panels to compare (--grid names 1)\n"),
+    cli_case("compare beyond the largest image", ["compare", "m.off", "--size", "6000x200", "-o", "out.png"],
+             "shadelab compare: --size: 3 panels of 6000x200, 3 a row, make a 18000x200 image; "
+             "at most 16384x16384 can be rendered\n"),
 ]
