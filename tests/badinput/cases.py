@@ -134,6 +134,9 @@ CASES = [
               b"property float z\nend_header\n3 0 1 2 6 0 0 1 0 0 1\n0 0 0\n1 0 0\n0 1 0\n",
               'element "face" has texture coordinates and comes before "vertex": VTK\'s PLY reader needs the '
               'vertices first'),
+    # vtkPLYReader keeps a face's corner count in a byte: 300 corners came back as 44.
+    mesh_case("ply face beyond 255 corners", "a.ply", ply_ascii(b"300 " + b"0 1 2 " * 100 + b"\n"),
+              'line 13 (element "face" row 1 of 1): 300 corners; VTK\'s PLY reader takes at most 255'),
     mesh_case("ply face index beyond", "a.ply", ply_ascii(b"3 0 1 7\n"), 'line 13 (element "face" row 1 of 1): vertex index 7 is out of range [0, 3)'),
     mesh_case("ply negative face index", "a.ply", ply_ascii(b"3 0 -1 2\n"), 'line 13 (element "face" row 1 of 1): vertex index -1 is out of range [0, 3)'),
     mesh_case("ply missing face row", "a.ply", ply_ascii(b"3 0 1 2\n", faces=2), 'line 14: the file ends before element "face" row 2 of 2'),

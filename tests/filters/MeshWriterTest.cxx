@@ -5,19 +5,26 @@
 #include "slMeshWriter.h"
 #include "VTKErrors.h"
 
+#include <vtkCellArray.h>
+#include <vtkFloatArray.h>
 #include <vtkNew.h>
+#include <vtkPLYReader.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkPoints.h>
 #include <vtkSphereSource.h>
+#include <vtkUnsignedCharArray.h>
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <map>
 #include <sstream>
+#include <vector>
 
 TEST(MeshWriter, EveryFormatReadsBack)
 {
@@ -116,4 +123,102 @@ TEST(MeshWriter, FailuresAreCleanAndNamed)
   writer->SetFileName(folder.path("m.gltf").c_str());
   EXPECT_EQ(callError(writer, [&] { return writer->Write(); }),
     folder.path("m.gltf") + ": unsupported mesh format \".gltf\" (supported: .vtp .vtk .ply .obj .stl)");
+}
+
+namespace
+{
+/// A fan of @p corners triangles around a centre as one polygon (corners
+/// points on a circle), with RGB or RGBA point colours and normals, and
+/// optionally a line (which only vtkPLYWriter takes).
+vtkSmartPointer<vtkPolyData> colouredPolygon(int corners, int components, bool withLine)
+{
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkUnsignedCharArray> colours;
+  colours->SetName("RGBA");
+  colours->SetNumberOfComponents(components);
+  vtkNew<vtkFloatArray> normals;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  std::vector<vtkIdType> ids;
+  for (int i = 0; i < corners; ++i)
+  {
+    const double t = 2.0 * 3.14159265358979 * i / corners;
+    points->InsertNextPoint(std::cos(t), std::sin(t), 0.0);
+    const unsigned char c[4] = { static_cast<unsigned char>(i % 256), static_cast<unsigned char>(255 - i % 256),
+      static_cast<unsigned char>(7 * i % 256), static_cast<unsigned char>(100 + i % 100) };
+    colours->InsertNextTypedTuple(c);
+    normals->InsertNextTuple3(0, 0, 1);
+    ids.push_back(i);
+  }
+  vtkNew<vtkCellArray> polys;
+  polys->InsertNextCell(corners, ids.data());
+  mesh->SetPoints(points);
+  mesh->SetPolys(polys);
+  mesh->GetPointData()->SetScalars(colours);
+  mesh->GetPointData()->SetNormals(normals);
+  if (withLine)
+  {
+    vtkNew<vtkCellArray> lines;
+    const vtkIdType line[2] = { 0, 1 };
+    lines->InsertNextCell(2, line);
+    mesh->SetLines(lines);
+  }
+  return mesh;
+}
+} // namespace
+
+TEST(MeshWriter, PLYKeepsColoursAndRefusesFacesVTKCannotRead)
+{
+  // Read back by VTK's own reader: RGB and RGBA colours and the normals
+  // (which vtkPLYWriter drops). With a line, vtkPLYWriter writes the file:
+  // its colours too, and no temporary file is left (it needs a named one:
+  // it appends ".ply" to any other path). A polygon of more than 255
+  // corners, which VTK's PLY reader cannot read back, is refused.
+  const TestFolder folder;
+  for (const int components : { 3, 4 })
+  {
+    for (const int corners : { 5, 255, 256 })
+    {
+      for (const bool withLine : { false, true })
+      {
+        const std::string name = folder.path("c.ply");
+        vtkSmartPointer<vtkPolyData> mesh = colouredPolygon(corners, components, withLine);
+        vtkNew<slMeshWriter> writer;
+        writer->SetInputData(mesh);
+        writer->SetFileName(name.c_str());
+        const std::string error = callError(writer, [&] { return writer->Write(); });
+        if (corners > 255)
+        {
+          EXPECT_EQ(error, name + ": cannot write mesh: a polygon has 256 corners; PLY as VTK reads it takes at most "
+                           "255 (write .vtp or .obj)");
+          std::filesystem::remove(name);
+          EXPECT_EQ(std::distance(std::filesystem::directory_iterator(folder.path("")), {}), 0) << "nothing left";
+          continue;
+        }
+        ASSERT_EQ(error, "") << corners << " " << withLine;
+        EXPECT_EQ(std::distance(std::filesystem::directory_iterator(folder.path("")), {}), 1) << "only the file";
+        vtkNew<vtkPLYReader> reader;
+        reader->SetFileName(name.c_str());
+        reader->Update();
+        vtkPolyData* back = reader->GetOutput();
+        ASSERT_EQ(back->GetNumberOfPolys(), 1);
+        EXPECT_EQ(back->GetPolys()->GetCellSize(0), corners);
+        auto* colours = vtkUnsignedCharArray::SafeDownCast(back->GetPointData()->GetScalars());
+        ASSERT_NE(colours, nullptr) << corners << " " << withLine;
+        ASSERT_EQ(colours->GetNumberOfComponents(), components);
+        auto* given = vtkUnsignedCharArray::SafeDownCast(mesh->GetPointData()->GetScalars());
+        for (vtkIdType v = 0; v < 2 * components; ++v)
+        {
+          EXPECT_EQ(colours->GetValue(v), given->GetValue(v));
+        }
+        EXPECT_EQ(colours->GetValue(corners * components - 1), given->GetValue(corners * components - 1));
+        if (!withLine)
+        {
+          ASSERT_NE(back->GetPointData()->GetNormals(), nullptr);
+          EXPECT_EQ(back->GetPointData()->GetNormals()->GetComponent(corners - 1, 2), 1.0);
+        }
+      }
+    }
+  }
 }

@@ -49,14 +49,16 @@ struct slIndicesView
   }
 };
 
-/// A polygon mesh to write, viewed in place: points, optional point normals
-/// and texture coordinates, and the polygons' offsets (polygons + 1 of them)
-/// and connectivity.
+/// A polygon mesh to write, viewed in place: points, optional point normals,
+/// texture coordinates and colours, and the polygons' offsets (polygons + 1
+/// of them) and connectivity.
 struct slMeshView
 {
   std::int64_t numberOfPoints = 0;
   std::int64_t numberOfPolygons = 0;
   slValuesView points, normals, tcoords;
+  const unsigned char* colours = nullptr; ///< RGB or RGBA per point (0-255), or null
+  int colourComponents = 0;               ///< 3 or 4 with colours
   slIndicesView offsets, connectivity;
 };
 

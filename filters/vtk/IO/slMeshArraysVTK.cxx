@@ -8,6 +8,7 @@
 #include <vtkIdTypeArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkTypeInt32Array.h>
@@ -147,12 +148,21 @@ void slToPolyData(slMeshArrays& mesh, bool tcoordsFirst, vtkPolyData* output)
 bool slViewOf(vtkPolyData* mesh, slMeshView& view)
 {
   vtkCellArray* polys = mesh->GetPolys();
+  // Point colours as PLY and VTK's readers give them: 8-bit RGB or RGBA.
+  auto* colours = vtkUnsignedCharArray::SafeDownCast(mesh->GetPointData()->GetScalars());
+  const bool colourScalars = colours && (colours->GetNumberOfComponents() == 3 || colours->GetNumberOfComponents() == 4);
   if (!mesh->GetPoints() || mesh->GetNumberOfVerts() > 0 || mesh->GetNumberOfLines() > 0 ||
-    mesh->GetNumberOfStrips() > 0 || mesh->GetPointData()->GetScalars() || mesh->GetCellData()->GetScalars())
+    mesh->GetNumberOfStrips() > 0 || (mesh->GetPointData()->GetScalars() && !colourScalars) ||
+    mesh->GetCellData()->GetScalars())
   {
     return false;
   }
   view = slMeshView();
+  if (colourScalars)
+  {
+    view.colours = colours->GetPointer(0);
+    view.colourComponents = colours->GetNumberOfComponents();
+  }
   view.numberOfPoints = mesh->GetNumberOfPoints();
   view.numberOfPolygons = polys ? polys->GetNumberOfCells() : 0;
   vtkNew<vtkCellArray> empty;

@@ -19,9 +19,10 @@ class vtkPolyData;
 void slToPolyData(slMeshArrays& mesh, bool tcoordsFirst, vtkPolyData* output);
 
 /// Views @p mesh for a formatter: its points, active point normals (3
-/// components) and texture coordinates (2), and polygons. False if the mesh
-/// has anything else a VTK writer would write (vertices, lines, strips,
-/// active scalars) or values neither float nor double.
+/// components), texture coordinates (2) and colours (active point scalars
+/// of 3 or 4 unsigned chars), and polygons. False if the mesh has anything
+/// else a VTK writer would write (vertices, lines, strips, other active
+/// scalars) or values neither float nor double.
 bool slViewOf(vtkPolyData* mesh, slMeshView& view);
 
 #endif

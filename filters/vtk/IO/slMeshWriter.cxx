@@ -11,6 +11,7 @@
 #include "slPLYFormat.h"
 
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkErrorCode.h>
 #include <vtkExecutive.h>
 #include <vtkInformation.h>
@@ -19,14 +20,17 @@
 #include <vtkOBJWriter.h>
 #include <vtkObjectFactory.h>
 #include <vtkPLYWriter.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataWriter.h>
 #include <vtkSMPTools.h>
 #include <vtkSTLWriter.h>
 #include <vtkSmartPointer.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkXMLPolyDataWriter.h>
 
 #include <fstream>
+#include <optional>
 
 vtkStandardNewMacro(slMeshWriter);
 
@@ -75,6 +79,18 @@ vtkSmartPointer<vtkAlgorithm> makeWriter(
     w->SetInputData(mesh);
     w->SetFileName(path.c_str());
     w->SetFileTypeToBinary();
+    // Without an array name it writes no colours at all.
+    for (vtkDataSetAttributes* data : { static_cast<vtkDataSetAttributes*>(mesh->GetPointData()),
+           static_cast<vtkDataSetAttributes*>(mesh->GetCellData()) })
+    {
+      auto* colours = vtkUnsignedCharArray::SafeDownCast(data->GetScalars());
+      if (colours && colours->GetName() && colours->GetNumberOfComponents() >= 3)
+      {
+        w->SetArrayName(colours->GetName());
+        w->SetEnableAlpha(colours->GetNumberOfComponents() == 4);
+        break;
+      }
+    }
     return w;
   }
   if (ext == ".obj")
@@ -119,9 +135,9 @@ long long expectedPLYSize(const std::string& path, vtkPolyData* mesh)
 bool writeOwn(const std::string& ext, vtkPolyData* mesh, shadelab::AtomicOutput& output)
 {
   slMeshView view;
-  if ((ext != ".obj" && ext != ".ply") || !slViewOf(mesh, view))
+  if ((ext != ".obj" && ext != ".ply") || !slViewOf(mesh, view) || (ext == ".obj" && view.colours))
   {
-    return false;
+    return false; // (OBJ has no colours: vtkOBJWriter writes the rest)
   }
   if (ext == ".obj")
   {
@@ -198,6 +214,12 @@ void slMeshWriter::WriteMesh(vtkPolyData* mesh)
     throw fail("nothing to write (empty mesh)");
   }
   const std::string ext = slLowerExtension(name.c_str());
+  if (ext == ".ply" && mesh->GetPolys() && mesh->GetPolys()->GetMaxCellSize() > 255)
+  {
+    // VTK's PLY reader keeps a face's corner count in a byte.
+    throw fail("cannot write mesh: a polygon has " + std::to_string(mesh->GetPolys()->GetMaxCellSize()) +
+      " corners; PLY as VTK reads it takes at most 255 (write .vtp or .obj)");
+  }
   {
     // VTK's writers do not all notice a failed write (a full disk can leave a
     // truncated .vtp behind a success): they write to memory, where writing
@@ -205,12 +227,20 @@ void slMeshWriter::WriteMesh(vtkPolyData* mesh)
     // step. vtkPLYWriter cannot: it appends ".ply" to any other file name and
     // its string output is empty in VTK 9.1. It writes the temporary file
     // itself, whose size is then checked against its header.
-    shadelab::AtomicOutput output(name);
-    if (writeOwn(ext, mesh, output))
+    shadelab::AtomicOutput own(name);
+    if (writeOwn(ext, mesh, own))
     {
       return;
     }
     const bool ply = ext == ".ply";
+    // vtkPLYWriter appends ".ply" to a path without it: its temporary file
+    // needs a name of its own from the start.
+    std::optional<shadelab::AtomicOutput> named;
+    if (ply)
+    {
+      named.emplace(name, shadelab::TemporaryKind::Named);
+    }
+    shadelab::AtomicOutput& output = ply ? *named : own;
     shadelab::MemoryFile memory;
     vtkSmartPointer<vtkAlgorithm> writer = makeWriter(ext, mesh, ply ? output.temporaryPath() : memory.path(), this->Compression);
     vtkNew<slErrorCapture> errors;

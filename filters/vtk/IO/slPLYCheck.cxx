@@ -80,6 +80,7 @@ bool isFaceIndexList(const Element& e, const Property& p)
   return e.name == "face" && p.countSize > 0 && (p.name == "vertex_indices" || p.name == "vertex_index");
 }
 
+
 /// Whether vtkPLYReader reads @p p of @p e into the normals or texture
 /// coordinates, as floats: a NaN or infinity there would reach the filters.
 /// (It reads no other float property but x, y, z, which slMeshReader checks
@@ -104,6 +105,20 @@ std::string rowName(const Element& e, unsigned long long row)
 {
   return "element \"" + shadelab::printableText(e.name) + "\" row " + std::to_string(row + 1) + " of " +
     std::to_string(e.count);
+}
+
+/// The most corners vtkPLYReader reads in a face: it keeps the count in a
+/// byte, and a face of 300 corners came back with 44.
+constexpr long long kMaxFaceCorners = 255;
+
+/// "" or what is wrong with a face of @p count corners (list @p p of @p e).
+std::string faceSizeProblem(const Element& e, const Property& p, long long count)
+{
+  if (!isFaceIndexList(e, p) || count <= kMaxFaceCorners)
+  {
+    return std::string();
+  }
+  return std::to_string(count) + " corners; VTK's PLY reader takes at most " + std::to_string(kMaxFaceCorners);
 }
 
 /// Buffered reading of the binary body, so that values are checked as they
@@ -238,6 +253,11 @@ std::string binaryBody(std::istream& in, bool swap, const std::vector<Element>& 
         {
           return rowName(e, row) + ": list \"" + shadelab::printableText(p.name) + "\" has a negative count";
         }
+        const std::string tooLarge = faceSizeProblem(e, p, count);
+        if (!tooLarge.empty())
+        {
+          return rowName(e, row) + ": " + tooLarge;
+        }
         if (!isFaceIndexList(e, p) || p.isFloat)
         {
           if (!bytes.skip(static_cast<unsigned long long>(count) * static_cast<unsigned long long>(p.size)))
@@ -356,6 +376,11 @@ std::string asciiBody(std::istream& in, long lineNumber, const std::vector<Eleme
           if (!parseToken(token, true, count) || count < 0)
           {
             return where + "list count \"" + shadelab::printableText(token) + "\" is not a count";
+          }
+          const std::string tooLarge = faceSizeProblem(e, p, count);
+          if (!tooLarge.empty())
+          {
+            return where + tooLarge;
           }
         }
         for (long long k = 0; k < count; ++k)

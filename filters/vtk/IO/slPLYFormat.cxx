@@ -211,6 +211,7 @@ bool slFormatPLY(const slMeshView& mesh, std::string& out)
   {
     return false;
   }
+  // Counts are bytes: VTK's PLY reader reads no more (nor does its writer).
   for (std::int64_t p = 0; p < mesh.numberOfPolygons; ++p)
   {
     if (mesh.offsets[static_cast<std::size_t>(p + 1)] - mesh.offsets[static_cast<std::size_t>(p)] > 255)
@@ -228,10 +229,16 @@ bool slFormatPLY(const slMeshView& mesh, std::string& out)
   {
     head += "property float u\nproperty float v\n";
   }
+  const std::size_t colourBytes = mesh.colours ? static_cast<std::size_t>(mesh.colourComponents) : 0;
+  static const char* const colourNames[] = { "red", "green", "blue", "alpha" };
+  for (std::size_t k = 0; k < colourBytes; ++k)
+  {
+    head += std::string("property uchar ") + colourNames[k] + "\n";
+  }
   head += "element face " + std::to_string(mesh.numberOfPolygons) + "\nproperty list uchar int vertex_indices\nend_header\n";
   const std::size_t columns = 3 + (mesh.normals.data ? 3 : 0) + (mesh.tcoords.data ? 2 : 0);
   const std::size_t corners = static_cast<std::size_t>(mesh.offsets[static_cast<std::size_t>(mesh.numberOfPolygons)]);
-  out.reserve(out.size() + head.size() + static_cast<std::size_t>(mesh.numberOfPoints) * columns * 4 +
+  out.reserve(out.size() + head.size() + static_cast<std::size_t>(mesh.numberOfPoints) * (columns * 4 + colourBytes) +
     static_cast<std::size_t>(mesh.numberOfPolygons) + corners * 4);
   out += head;
   for (std::int64_t i = 0; i < mesh.numberOfPoints; ++i)
@@ -252,6 +259,10 @@ bool slFormatPLY(const slMeshView& mesh, std::string& out)
       row[c++] = static_cast<float>(mesh.tcoords[2 * p + static_cast<std::size_t>(k)]);
     }
     put(out, row, c * 4);
+    if (colourBytes > 0)
+    {
+      put(out, mesh.colours + colourBytes * p, colourBytes);
+    }
   }
   for (std::int64_t p = 0; p < mesh.numberOfPolygons; ++p)
   {

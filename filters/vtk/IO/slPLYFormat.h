@@ -28,9 +28,11 @@
 SHADELABIO_EXPORT bool slParsePLY(const char* bytes, std::size_t size, slMeshArrays& mesh);
 
 /// Appends @p mesh as binary little-endian PLY to @p out: vertex properties
-/// float x, y, z, then nx, ny, nz and u, v if the mesh has them, then faces
-/// as "list uchar int vertex_indices". Returns false, appending nothing, if
-/// a polygon has more than 255 corners or the host is big-endian.
+/// float x, y, z, then nx, ny, nz and u, v, and uchar red, green, blue
+/// (alpha) if the mesh has them, then faces as "list uchar int
+/// vertex_indices". Returns false, appending nothing, if a polygon has more
+/// than 255 corners (VTK's PLY reader reads no more) or the host is
+/// big-endian.
 SHADELABIO_EXPORT bool slFormatPLY(const slMeshView& mesh, std::string& out);
 
 #endif
