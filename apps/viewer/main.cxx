@@ -17,6 +17,7 @@
 #include <QTimer>
 #include <QVTKOpenGLNativeWidget.h>
 
+#include <clocale>
 #include <cstdlib>
 #include <iostream>
 
@@ -51,6 +52,11 @@ int main(int argc, char** argv)
   format.setSamples(0);
   QSurfaceFormat::setDefaultFormat(format);
   QApplication app(argc, argv);
+  // QApplication takes the locale from the environment; numbers in mesh and
+  // scene files are read with the C library and VTK, which then expect a
+  // decimal comma under de_DE and the like ("0.5" is not a number). The
+  // interface's own texts keep the user's language.
+  std::setlocale(LC_NUMERIC, "C");
   QApplication::setApplicationName("shadelab-viewer");
   QApplication::setApplicationVersion(SHADELAB_VERSION);
 

@@ -608,6 +608,35 @@ private slots:
     }
   }
 
+  void readsNumbersUnderADecimalCommaLocale()
+  {
+    // Under de_DE (LC_NUMERIC with a decimal comma) the viewer still reads
+    // "0.5" in a mesh file: a legacy VTK file goes through ShadeLab's check
+    // and VTK's reader, both of which read numbers with the C library.
+    QTemporaryDir work;
+    if (!QFile::exists("/usr/share/i18n/locales/de_DE") ||
+      QProcess::execute("localedef", { "-i", "de_DE", "-f", "UTF-8", work.path() + "/de_DE.UTF-8" }) != 0)
+    {
+      QSKIP("cannot make a de_DE locale here (Debian package locales)");
+    }
+    const QString mesh = work.path() + "/half.vtk";
+    QFile file(mesh);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("# vtk DataFile Version 3.0\nhalf\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n"
+               "0 0 0 0.5 0 0 0 0.5 0\nPOLYGONS 1 4\n3 0 1 2\n");
+    file.close();
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.insert("XDG_RUNTIME_DIR", work.path());
+    environment.insert("LOCPATH", work.path());
+    environment.insert("LC_ALL", "de_DE.UTF-8");
+    QProcess viewer;
+    viewer.setProcessEnvironment(environment);
+    viewer.start(QString(SHADELAB_VIEWER_PROGRAM), { mesh, "--screenshot", work.path() + "/shot.png" });
+    QVERIFY(viewer.waitForFinished(60000));
+    QVERIFY2(viewer.exitCode() == 0, viewer.readAllStandardError().constData());
+    QVERIFY(QFile::exists(work.path() + "/shot.png"));
+  }
+
   void materialControlsFollowTheModel()
   {
     // For every model, a material parameter has a control shown exactly when
