@@ -323,6 +323,45 @@ TEST(Normals, ZeroAreaFacesAndIsolatedPointsGiveNoNaN)
   }
 }
 
+TEST(Normals, ZeroAreaFacesDoNotJoinFacesAcrossASharpEdge)
+{
+  // A cube whose front face is cut at (0.5, 0, 0) of its bottom edge, the
+  // crack along that edge filled with the zero-area triangle (0, 1, 8), as
+  // CAD exports do. The bottom and front faces still meet at a sharp edge:
+  // each corner of the cube along it has the three face axes as normals,
+  // as if the degenerate triangle were not there, and none is (0, 0, 0).
+  auto m = mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 1, 1, 0 }, { 0, 0, 1 }, { 1, 0, 1 }, { 0, 1, 1 }, { 1, 1, 1 },
+                  { 0.5, 0, 0 } },
+    { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 2, 6, 7, 3 }, { 0, 4, 6, 2 }, { 1, 3, 7, 5 }, { 0, 8, 5, 4 }, { 8, 1, 5 },
+      { 0, 1, 8 } });
+  Result r = run(m);
+  EXPECT_EQ(r.errors, 0);
+  vtkDataArray* n = r.out->GetPointData()->GetNormals();
+  std::map<std::vector<double>, std::vector<Vec>> normalsAt;
+  for (vtkIdType i = 0; i < r.out->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    r.out->GetPoint(i, p);
+    normalsAt[{ p[0], p[1], p[2] }].push_back(tuple(n, i));
+  }
+  const auto expectAxes = [&](const std::vector<double>& at, const std::vector<Vec>& axes) {
+    std::vector<Vec> got = normalsAt[at];
+    ASSERT_EQ(got.size(), axes.size()) << at[0] << " " << at[1] << " " << at[2];
+    for (const Vec& axis : axes)
+    {
+      const bool found = std::any_of(got.begin(), got.end(), [&](const Vec& g) {
+        return std::fabs(g[0] - axis[0]) < 1e-6 && std::fabs(g[1] - axis[1]) < 1e-6 && std::fabs(g[2] - axis[2]) < 1e-6;
+      });
+      EXPECT_TRUE(found) << "(" << axis[0] << ", " << axis[1] << ", " << axis[2] << ") at " << at[0];
+    }
+  };
+  expectAxes({ 0, 0, 0 }, { { -1, 0, 0 }, { 0, -1, 0 }, { 0, 0, -1 } });
+  expectAxes({ 1, 0, 0 }, { { 1, 0, 0 }, { 0, -1, 0 }, { 0, 0, -1 } });
+  // The cut point lies on the front face only (the bottom face does not
+  // name it): the degenerate triangle takes the front face's group there.
+  expectAxes({ 0.5, 0, 0 }, { { 0, -1, 0 } });
+}
+
 TEST(Normals, NonManifoldEdgesAreSplit)
 {
   // Three triangles share the edge (0,1); each is its own smooth group there.

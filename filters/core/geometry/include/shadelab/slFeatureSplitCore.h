@@ -62,6 +62,7 @@ struct SplitScratch
   std::vector<glm::vec<3, T>> normal;    ///< unit normal of each corner's polygon
   std::vector<int> parent;
   std::vector<std::pair<int64_t, int>> ends; ///< (other point, corner) per edge end, by point
+  std::vector<std::pair<int, int>> edges;    ///< corners joined by a manifold edge (degenerate polygons only)
   std::vector<int> group; ///< per corner, 0..numGroups-1
   std::vector<int> slot;  ///< per corner, 0..numSlots-1 (welding only)
   std::vector<std::pair<int64_t, int>> slots; ///< (original id, group) per slot
@@ -105,7 +106,10 @@ inline glm::vec<3, T> unitOf(const glm::vec<3, T>& n, T& len)
 
 /// True if two polygons with unit normals @p ni, @p nj (zero if degenerate)
 /// across a manifold edge join one smooth group: a degenerate polygon joins
-/// any neighbour, others when their normals are at most the feature angle apart.
+/// any neighbour, others when their normals are at most the feature angle
+/// apart. (A point with degenerate corners among others is grouped by
+/// buildGroups() without it: joined to everything, a degenerate polygon
+/// would join two faces across the sharp edge it lies between.)
 template <typename T>
 inline bool smoothAcross(const glm::vec<3, T>& ni, const glm::vec<3, T>& nj, T cosFeature)
 {
@@ -274,6 +278,57 @@ int closedFanGroups(SplitScratch<T>& s, int k, T cosFeature)
   return groups;
 }
 
+/// The union of buildGroups() at a point where degenerate polygons (zero
+/// normal) meet others, over its manifold edges s.edges: first the faces
+/// across smooth edges, then each degenerate corner with a neighbour that
+/// already has a face (repeated, so that a run of degenerate corners joins
+/// the face at its start), and last the degenerate corners no face reaches
+/// with each other. A degenerate polygon then never joins two faces across
+/// the sharp edge it lies on, as a zero-area triangle filling a crack along
+/// a cube's edge did, and still has a face's normal where it touches one.
+template <typename T>
+void joinDegenerateCorners(SplitScratch<T>& s, T cosFeature)
+{
+  const auto isDegenerate = [&](int i) { return glm::dot(s.normal[i], s.normal[i]) == T(0); };
+  for (const std::pair<int, int>& e : s.edges)
+  {
+    if (!isDegenerate(e.first) && !isDegenerate(e.second) &&
+      glm::dot(s.normal[e.first], s.normal[e.second]) >= cosFeature)
+    {
+      s.parent[s.find(e.first)] = s.find(e.second);
+    }
+  }
+  // Whether each root's group holds a face: only such groups take corners.
+  std::vector<char> hasFace(static_cast<size_t>(s.k), 0);
+  for (int i = 0; i < s.k; ++i)
+  {
+    hasFace[static_cast<size_t>(s.find(i))] |= !isDegenerate(i);
+  }
+  for (bool joined = true; joined;)
+  {
+    joined = false;
+    for (const std::pair<int, int>& e : s.edges)
+    {
+      const int a = s.find(e.first), b = s.find(e.second);
+      if (a != b && hasFace[static_cast<size_t>(a)] != hasFace[static_cast<size_t>(b)])
+      {
+        // The faceless side joins the face's group.
+        const int face = hasFace[static_cast<size_t>(a)] ? a : b;
+        s.parent[a == face ? b : a] = face;
+        joined = true;
+      }
+    }
+  }
+  for (const std::pair<int, int>& e : s.edges)
+  {
+    const int a = s.find(e.first), b = s.find(e.second);
+    if (a != b && !hasFace[static_cast<size_t>(a)] && !hasFace[static_cast<size_t>(b)])
+    {
+      s.parent[a] = b;
+    }
+  }
+}
+
 /// Builds the groups of point @p v from the polygons' unit normals @p unit
 /// (3 per polygon, zero if degenerate) into s.group (per corner,
 /// 0..groups-1, in order of first corner) and returns the number of groups.
@@ -285,6 +340,7 @@ int buildGroups(const Polygons<Id>& polys, const Id* original, const T* unit, co
   const int32_t b = vc.offsets[static_cast<size_t>(v)];
   const int k = vc.offsets[static_cast<size_t>(v) + 1] - b;
   s.resize(k);
+  int degenerate = 0;
   for (int i = 0; i < k; ++i)
   {
     const int64_t c = vc.corners[static_cast<size_t>(b + i)];
@@ -292,7 +348,11 @@ int buildGroups(const Polygons<Id>& polys, const Id* original, const T* unit, co
     s.next[i] = polys.connectivity[a.next];
     s.prev[i] = polys.connectivity[a.prev];
     s.normal[i] = glm::vec<3, T>(unit[3 * a.face], unit[3 * a.face + 1], unit[3 * a.face + 2]);
+    degenerate += glm::dot(s.normal[i], s.normal[i]) == T(0);
   }
+  // Degenerate corners among others: the faces are grouped without them,
+  // then each joins a neighbour's group (degenerateAwareGroups).
+  const bool mixed = degenerate > 0 && degenerate < k;
   if (original)
   {
     for (int i = 0; i < k; ++i)
@@ -300,7 +360,7 @@ int buildGroups(const Polygons<Id>& polys, const Id* original, const T* unit, co
       s.orig[i] = static_cast<int64_t>(original[vc.corners[static_cast<size_t>(b + i)]]);
     }
   }
-  const int fanGroups = k > 0 ? closedFanGroups(s, k, cosFeature) : 0;
+  const int fanGroups = k > 0 && !mixed ? closedFanGroups(s, k, cosFeature) : 0;
   s.fan = fanGroups > 0;
   if (s.fan)
   {
@@ -323,6 +383,7 @@ int buildGroups(const Polygons<Id>& polys, const Id* original, const T* unit, co
     }
     s.ends[static_cast<size_t>(at)] = end;
   }
+  s.edges.clear();
   for (int r = 0; r < 2 * k;)
   {
     const int64_t w = s.ends[static_cast<size_t>(r)].first;
@@ -342,10 +403,19 @@ int buildGroups(const Polygons<Id>& polys, const Id* original, const T* unit, co
     {
       continue; // non-manifold or boundary edge
     }
+    if (mixed)
+    {
+      s.edges.emplace_back(i, other);
+      continue;
+    }
     if (smoothAcross(s.normal[i], s.normal[other], cosFeature))
     {
       s.parent[s.find(i)] = s.find(other);
     }
+  }
+  if (mixed)
+  {
+    joinDegenerateCorners(s, cosFeature);
   }
   // Number the groups in order of first corner.
   int groups = 0;
