@@ -749,3 +749,58 @@ CASES = [
              "shadelab compare: --size: 3 panels of 6000x200, 3 a row, make a 18000x200 image; "
              "at most 16384x16384 can be rendered\n"),
 ]
+
+# A UTF-8 byte order mark: ShadeLab's OBJ parser skips it; a file that goes to vtkOBJReader (here for its
+# group) is refused unless the mark's line is blank or a comment, as VTK would skip the line. The other text
+# formats name the mark with their first keyword.
+CASES += [
+    mesh_case("obj byte order mark before a vtkOBJReader file", "a.obj",
+              b"\xef\xbb\xbfv 0 0 0\nv 1 0 0\nv 0 1 0\nv 5 5 5\ng a\nf 1 2 3\n",
+              'line 1: "v" follows a UTF-8 byte order mark, which VTK\'s OBJ reader would read as part of it and skip '
+              'the line; save the file without the mark'),
+    mesh_case("off byte order mark", "a.off", b"\xef\xbb\xbf" + TETRA_OFF, 'line 1: expected "OFF", found "\\xEF\\xBB\\xBFOFF"'),
+    mesh_case("ply byte order mark", "a.ply", b"\xef\xbb\xbf" + ply_ascii(b"3 0 1 2\n"),
+              'line 1: expected "ply", found "\\xEF\\xBB\\xBFply"'),
+    mesh_case("stl byte order mark", "a.stl",
+              b"\xef\xbb\xbfsolid a\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\n"
+              b"endfacet\nendsolid a\n",
+              "STLReader: error while reading file a.stl at line 1: Parse error. Expecting 'solid' found "
+              "'\\xEF\\xBB\\xBFsolid'"),
+]
+
+# Legacy VTK as vtkDataWriter writes it: vtkIdType as 32-bit int; strings one a line in ASCII, and in binary
+# each after a big-endian length of 1, 2, 4 or 8 bytes (the first byte's top two bits: 3, 2, 1, 0), which
+# VTK allocates before it reads.
+CASES += [
+    mesh_case("vtk binary vtkIdType values are 32-bit", "a.vtk",
+              legacy_vtk_binary(b"FIELD FieldData 1\nids 1 3 vtkIdType\n" + struct.pack(">2i", 5, -1)),
+              'FIELD array "ids": 3 values need 12 bytes, the file has 8 after its keyword line'),
+    mesh_case("vtk binary string longer than the file", "a.vtk",
+              legacy_vtk_binary(b"FIELD FieldData 1\nnames 1 3 string\n\xc2ab\x80\x05abcde\x7f\xff\xff\xf0"),
+              'FIELD array "names": string 3 of 3 is 1073741808 bytes long, the file has 0 after its length'),
+    mesh_case("vtk binary strings cut", "a.vtk", legacy_vtk_binary(b"FIELD FieldData 1\nnames 1 3 string\n\xc2ab"),
+              'line 12: FIELD array "names": the file ends after 1 of 3 strings'),
+    mesh_case("vtk ascii strings cut", "a.vtk",
+              legacy_vtk(b"POLYGONS 1 4\n3 0 1 2\nPOINT_DATA 3\nFIELD FieldData 1\nnames 1 3 string\nab\ncd\n"),
+              'line 14: FIELD array "names": the file ends after 2 of 3 strings'),
+    mesh_case("vtk ascii string with a short escape", "a.vtk",
+              legacy_vtk(b"POLYGONS 1 4\n3 0 1 2\nPOINT_DATA 3\nFIELD FieldData 1\nnames 1 3 string\nab\n%\ncd\n"),
+              'line 13: FIELD array "names": string "%" holds a % in fewer than 3 characters, which VTK decodes by '
+              'reading past its end'),
+]
+
+# OFF, COFF (r g b [a] after each vertex: integers 0-255, or 0-1 when any is written otherwise) and NOFF.
+CASES += [
+    mesh_case("off colour after a plain vertex", "a.off", TETRA_OFF.replace(b"1 0 0\n", b"1 0 0 255 0 0\n"),
+              'line 4: 6 values for a vertex of plain OFF, which has 3 (x y z); a COFF header reads colours after them, '
+              'NOFF normals'),
+    mesh_case("coff colour beyond 255", "a.off", b"COFF\n3 1 0\n0 0 0 255 0 0\n1 0 0 300 0 0\n0 1 0 0 0 0\n3 0 1 2\n",
+              'line 4: colour value "300" is not a number from 0 to 255 (integers) or 0 to 1'),
+    mesh_case("coff float colour above 1", "a.off", b"COFF\n3 1 0\n0 0 0 0.5 0 0\n1 0 0 2 0 0\n0 1 0 0 0 0\n3 0 1 2\n",
+              'line 4: colour value above 1 in a file of float colours (0 to 1)'),
+    mesh_case("coff vertex without its colour", "a.off", b"COFF\n3 1 0\n0 0 0 1 0 0\n1 0 0\n0 1 0 0 0 0\n3 0 1 2\n",
+              'line 4: expected a COFF vertex: x y z r g b [a]'),
+    mesh_case("noff vertex without its normal", "a.off", b"NOFF\n3 1 0\n0 0 0 0 0 1\n1 0 0 0 0\n0 1 0 0 0 1\n3 0 1 2\n",
+              'line 4: expected a NOFF vertex: x y z nx ny nz'),
+    mesh_case("off variant not read", "a.off", b"STOFF\n3 1 0\n", 'line 1: "STOFF" files are not read (ShadeLab reads OFF, COFF and NOFF)'),
+]

@@ -11,9 +11,12 @@
 #include "slPLYFormat.h"
 
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkDataArray.h>
+#include <vtkFieldData.h>
 #include <vtkFloatArray.h>
 #include <vtkIdList.h>
+#include <vtkIdTypeArray.h>
 #include <vtkNew.h>
 #include <vtkOBJReader.h>
 #include <vtkPLYReader.h>
@@ -21,7 +24,10 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkPolyDataReader.h>
+#include <vtkPolyDataWriter.h>
 #include <vtkSphereSource.h>
+#include <vtkStringArray.h>
 
 #include <gtest/gtest.h>
 
@@ -532,5 +538,89 @@ TEST(MeshFormats, OBJCornersNamingOtherNormalsReadAlikeOnAnyThreadCount)
       EXPECT_EQ(one.normals[3 * k + 4], 1.5f) << what;
     }
     expectSameOnMoreThreads(text, one, what);
+  }
+}
+
+TEST(MeshFormats, LegacyVTKIdAndStringArraysReadAsVTKReadsThem)
+{
+  // vtkDataWriter writes vtkIdType as 32-bit int, and binary strings each
+  // after a length of 1, 2, 4 or 8 bytes: ShadeLab's check refused both.
+  const TestFolder folder;
+  vtkNew<vtkSphereSource> source;
+  source->Update();
+  vtkNew<vtkPolyData> mesh;
+  mesh->DeepCopy(source->GetOutput());
+  const vtkIdType points = mesh->GetNumberOfPoints(), cells = mesh->GetNumberOfCells();
+  vtkNew<vtkIdTypeArray> ids;
+  ids->SetName("ids");
+  for (vtkIdType i = 0; i < points; ++i)
+  {
+    ids->InsertNextValue(i * 1000 - 7);
+  }
+  mesh->GetPointData()->AddArray(ids);
+  {
+    vtkNew<slMeshWriter> idsOnly;
+    idsOnly->SetInputData(mesh);
+    idsOnly->SetFileName(folder.path("ids.vtk").c_str());
+    ASSERT_EQ(callError(idsOnly, [&] { return idsOnly->Write(); }), "");
+    vtkSmartPointer<vtkPolyData> read = readShadeLab(folder.path("ids.vtk"));
+    auto* readIds = vtkIdTypeArray::SafeDownCast(read->GetPointData()->GetAbstractArray("ids"));
+    ASSERT_NE(readIds, nullptr);
+    ASSERT_EQ(readIds->GetNumberOfValues(), points);
+    EXPECT_EQ(readIds->GetValue(points - 1), (points - 1) * 1000 - 7);
+  }
+  vtkNew<vtkStringArray> names;
+  names->SetName("names");
+  for (vtkIdType c = 0; c < cells; ++c)
+  {
+    // Empty, short, and past the 1-byte (63) and 2-byte (16383) lengths.
+    const size_t length = c == 1 ? 70 : c == 2 ? 17000 : static_cast<size_t>(c % 5);
+    names->InsertNextValue(std::string(length, static_cast<char>('a' + c % 26)));
+  }
+  mesh->GetCellData()->AddArray(names);
+  vtkNew<vtkStringArray> notes;
+  notes->SetName("notes");
+  notes->SetNumberOfComponents(2);
+  for (const char* note : { "first note", "100% sure", "x", "" })
+  {
+    notes->InsertNextValue(note);
+  }
+  mesh->GetFieldData()->AddArray(notes);
+  vtkNew<slMeshWriter> ours;
+  ours->SetInputData(mesh);
+  ours->SetFileName(folder.path("b.vtk").c_str());
+  ASSERT_EQ(callError(ours, [&] { return ours->Write(); }), "");
+  vtkNew<vtkPolyDataWriter> ascii;
+  ascii->SetInputData(mesh);
+  ascii->SetFileName(folder.path("a.vtk").c_str());
+  ascii->SetFileTypeToASCII();
+  ASSERT_EQ(ascii->Write(), 1);
+  for (const char* name : { "b.vtk", "a.vtk" })
+  {
+    vtkSmartPointer<vtkPolyData> read = readShadeLab(folder.path(name));
+    vtkSmartPointer<vtkPolyData> expected = readVTK<vtkPolyDataReader>(folder.path(name));
+    ASSERT_EQ(read->GetNumberOfPoints(), points) << name;
+    auto* readIds = vtkIdTypeArray::SafeDownCast(read->GetPointData()->GetAbstractArray("ids"));
+    auto* readNames = vtkStringArray::SafeDownCast(read->GetCellData()->GetAbstractArray("names"));
+    auto* readNotes = vtkStringArray::SafeDownCast(read->GetFieldData()->GetAbstractArray("notes"));
+    ASSERT_TRUE(readIds && readNames && readNotes) << name;
+    for (vtkIdType i = 0; i < points; ++i)
+    {
+      EXPECT_EQ(readIds->GetValue(i), ids->GetValue(i)) << name;
+    }
+    ASSERT_EQ(readNames->GetNumberOfValues(), cells) << name;
+    for (vtkIdType c = 0; c < cells; ++c)
+    {
+      EXPECT_EQ(readNames->GetValue(c), names->GetValue(c)) << name << " cell " << c;
+    }
+    ASSERT_EQ(readNotes->GetNumberOfComponents(), 2) << name;
+    ASSERT_EQ(readNotes->GetNumberOfValues(), 4) << name;
+    for (vtkIdType v = 0; v < 4; ++v)
+    {
+      EXPECT_EQ(readNotes->GetValue(v), notes->GetValue(v)) << name;
+      EXPECT_EQ(readNotes->GetValue(v),
+        vtkStringArray::SafeDownCast(expected->GetFieldData()->GetAbstractArray("notes"))->GetValue(v))
+        << name;
+    }
   }
 }

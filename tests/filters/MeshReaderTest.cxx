@@ -190,6 +190,45 @@ TEST(MeshReader, OBJLinesPointsAndFacesWithoutNormalsKeepEveryCell)
   arraysFit(r.mesh);
 }
 
+TEST(MeshReader, OBJByteOrderMarkIsSkippedOrNamed)
+{
+  // A UTF-8 byte order mark made the first keyword "\xEF\xBB\xBFv": the
+  // first vertex was dropped and every index shifted.
+  const TestFolder folder;
+  const auto triangle = [](vtkPolyData* mesh) {
+    std::vector<double> coordinates;
+    vtkNew<vtkIdList> ids;
+    mesh->GetPolys()->GetCellAtId(0, ids);
+    for (vtkIdType id : *ids)
+    {
+      double p[3];
+      mesh->GetPoint(id, p);
+      coordinates.insert(coordinates.end(), p, p + 3);
+    }
+    return coordinates;
+  };
+  const std::vector<double> expected({ 0, 0, 0, 1, 0, 0, 0, 1, 0 });
+  folder.write("bom.obj", "\xEF\xBB\xBFv 0 0 0\nv 1 0 0\nv 0 1 0\nv 5 5 5\nf 1 2 3\n");
+  ReadResult r = read(folder.path("bom.obj"));
+  ASSERT_EQ(r.error, "");
+  EXPECT_EQ(r.mesh->GetNumberOfPoints(), 4);
+  EXPECT_EQ(triangle(r.mesh), expected);
+
+  // Through vtkOBJReader (groups): a comment after the mark is skipped
+  // either way; anything else is refused, as VTK would skip it.
+  folder.write("bomcomment.obj", "\xEF\xBB\xBF# made on Windows\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 5 5 5\ng a\nf 1 2 3\n");
+  r = read(folder.path("bomcomment.obj"));
+  ASSERT_EQ(r.error, "");
+  EXPECT_EQ(r.mesh->GetNumberOfPoints(), 4);
+  EXPECT_EQ(triangle(r.mesh), expected);
+  folder.write("bomgroup.obj", "\xEF\xBB\xBFv 0 0 0\nv 1 0 0\nv 0 1 0\nv 5 5 5\ng a\nf 1 2 3\n");
+  r = read(folder.path("bomgroup.obj"));
+  EXPECT_EQ(r.error, folder.path("bomgroup.obj") +
+      ": line 1: \"v\" follows a UTF-8 byte order mark, which VTK's OBJ reader would read as part of it and "
+      "skip the line; save the file without the mark");
+  EXPECT_EQ(r.mesh->GetNumberOfPoints(), 0);
+}
+
 TEST(MeshReader, ReadsOFFWithNgonsAndComments)
 {
   const TestFolder folder;
@@ -202,6 +241,46 @@ TEST(MeshReader, ReadsOFFWithNgonsAndComments)
   EXPECT_EQ(r.mesh->GetNumberOfPoints(), 5);
   EXPECT_EQ(r.mesh->GetNumberOfPolys(), 5);
   EXPECT_EQ(r.mesh->GetPolys()->GetMaxCellSize(), 4);
+}
+
+TEST(MeshReader, ReadsCOFFColoursAndNOFFNormals)
+{
+  const TestFolder folder;
+  const auto values = [](vtkDataArray* array) {
+    std::vector<double> v;
+    for (vtkIdType t = 0; array && t < array->GetNumberOfTuples(); ++t)
+    {
+      for (int c = 0; c < array->GetNumberOfComponents(); ++c)
+      {
+        v.push_back(array->GetComponent(t, c));
+      }
+    }
+    return v;
+  };
+  // Integers are 0-255; alpha, where some vertex gives one, defaults to 255.
+  folder.write("ints.off", "COFF\n3 1 0\n0 0 0 255 0 0 128\n1 0 0 0 255 0\n0 1 0 0 0 255 0\n3 0 1 2\n");
+  ReadResult r = read(folder.path("ints.off"));
+  ASSERT_EQ(r.error, "");
+  vtkDataArray* colours = r.mesh->GetPointData()->GetScalars();
+  ASSERT_NE(colours, nullptr);
+  EXPECT_STREQ(colours->GetName(), "Colors");
+  EXPECT_EQ(colours->GetDataType(), VTK_UNSIGNED_CHAR);
+  EXPECT_EQ(values(colours), std::vector<double>({ 255, 0, 0, 128, 0, 255, 0, 255, 0, 0, 255, 0 }));
+  // A value written with a point (as MeshLab writes floats): 0-1.
+  folder.write("floats.off", "COFF\n3 1 0\n0 0 0 1 0 0\n1 0 0 0 0.5 0\n0 1 0 0 0 1.0\n3 0 1 2\n");
+  r = read(folder.path("floats.off"));
+  ASSERT_EQ(r.error, "");
+  EXPECT_EQ(values(r.mesh->GetPointData()->GetScalars()), std::vector<double>({ 255, 0, 0, 0, 128, 0, 0, 0, 255 }));
+  folder.write("n.off", "NOFF\n3 1 0\n0 0 0 0 0 1\n1 0 0 0 0.6 0.8\n0 1 0 0 1 0\n3 0 1 2\n");
+  r = read(folder.path("n.off"));
+  ASSERT_EQ(r.error, "");
+  EXPECT_EQ(values(r.mesh->GetPointData()->GetNormals()),
+    std::vector<double>({ 0, 0, 1, 0, 0.6f, 0.8f, 0, 1, 0 }));
+  // Values after a plain OFF vertex were ignored.
+  folder.write("plain.off", "OFF\n3 1 0\n0 0 0 255 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  EXPECT_EQ(read(folder.path("plain.off")).error, folder.path("plain.off") +
+      ": line 3: 6 values for a vertex of plain OFF, which has 3 (x y z); a COFF header reads colours after them, "
+      "NOFF normals");
 }
 
 TEST(MeshReader, BadOFFNamesTheLine)

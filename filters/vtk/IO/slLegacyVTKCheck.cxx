@@ -170,7 +170,10 @@ bool isMetadata(const std::string& word)
   return head == "metadata";
 }
 
-/// Bytes per value of a legacy type name; 0 for "bit" (packed), -1 unknown.
+/// Bytes per value of a legacy type name as vtkDataWriter writes and
+/// vtkDataReader reads it; 0 for "bit" (packed), -1 unknown. vtkIdType is
+/// written and read as 32-bit int; "string" values have a size of their own
+/// (Walker::strings()), given here as 1, the least.
 int typeSize(std::string type)
 {
   std::transform(type.begin(), type.end(), type.begin(), [](unsigned char c) { return std::tolower(c); });
@@ -181,8 +184,8 @@ int typeSize(std::string type)
   };
   static const Type types[] = { { "bit", 0 }, { "char", 1 }, { "signed_char", 1 }, { "unsigned_char", 1 },
     { "short", 2 }, { "unsigned_short", 2 }, { "int", 4 }, { "unsigned_int", 4 }, { "long", 8 },
-    { "unsigned_long", 8 }, { "vtkidtype", 8 }, { "vtktypeint64", 8 }, { "vtktypeuint64", 8 },
-    { "vtktypeint32", 4 }, { "vtktypeuint32", 4 }, { "float", 4 }, { "double", 8 } };
+    { "unsigned_long", 8 }, { "vtkidtype", 4 }, { "vtktypeint64", 8 }, { "vtktypeuint64", 8 },
+    { "vtktypeint32", 4 }, { "vtktypeuint32", 4 }, { "float", 4 }, { "double", 8 }, { "string", 1 } };
   for (const Type& t : types)
   {
     if (type == t.name)
@@ -299,6 +302,11 @@ public:
     }
     const long long n = tuples * components;
     this->Components = components;
+    if (upper(type) == "STRING")
+    {
+      this->strings(n, section);
+      return;
+    }
     if (!this->Binary)
     {
       const bool asFloat = upper(type) == "FLOAT";
@@ -368,6 +376,70 @@ public:
       }
     }
     this->Position = start + static_cast<size_t>(bytes);
+  }
+
+  /// Skips the @p n values of a string array, as vtkDataReader::ReadArray
+  /// reads them after the keyword line. ASCII: one line per value, decoded
+  /// with DecodeString. Binary: per value a big-endian length, whose first
+  /// byte's top two bits give its size (3: 1 byte, 2: 2, 1: 4, less those
+  /// two bits; 0: 8 bytes), then that many bytes; VTK allocates the length
+  /// before it reads, so it must lie within the file.
+  void strings(long long n, const std::string& section)
+  {
+    const size_t newline = this->Bytes.find('\n', this->Position);
+    // VTK skips the rest of a binary keyword line with getline(line, 256)
+    // even when there are no strings.
+    if (this->Binary && std::min(newline, this->Bytes.size()) - this->Position > 255)
+    {
+      fail("line " + std::to_string(this->line()) + ": " + section +
+        ": keyword line longer than the 255 bytes VTK reads before binary data");
+    }
+    this->Position = newline == std::string::npos ? this->Bytes.size() : newline + 1;
+    const size_t size = this->Bytes.size();
+    for (long long i = 0; i < n; ++i)
+    {
+      if (this->Position >= size)
+      {
+        fail("line " + std::to_string(this->line()) + ": " + section + ": the file ends after " + std::to_string(i) +
+          " of " + std::to_string(n) + " strings");
+      }
+      if (!this->Binary)
+      {
+        const long at = this->line();
+        const size_t end = std::min(this->Bytes.find('\n', this->Position), size);
+        const std::string problem = encodedProblem(this->Bytes.substr(this->Position, end - this->Position));
+        if (!problem.empty())
+        {
+          fail("line " + std::to_string(at) + ": " + section + ": string " + problem);
+        }
+        this->Position = end == size ? size : end + 1;
+        continue;
+      }
+      const unsigned char first = static_cast<unsigned char>(this->Bytes[this->Position]);
+      const int header = (first >> 6) == 3 ? 1 : (first >> 6) == 2 ? 2 : (first >> 6) == 1 ? 4 : 8;
+      if (size - this->Position < static_cast<size_t>(header))
+      {
+        fail(section + ": string " + std::to_string(i + 1) + " of " + std::to_string(n) +
+          ": the file ends within its length");
+      }
+      unsigned long long length = 0;
+      for (int b = 0; b < header; ++b)
+      {
+        length = length << 8 | static_cast<unsigned char>(this->Bytes[this->Position + static_cast<size_t>(b)]);
+      }
+      if (header < 8)
+      {
+        length &= (1ULL << (8 * header - 2)) - 1;
+      }
+      this->Position += static_cast<size_t>(header);
+      if (length > size - this->Position)
+      {
+        fail(section + ": string " + std::to_string(i + 1) + " of " + std::to_string(n) + " is " +
+          std::to_string(length) + " bytes long, the file has " + std::to_string(size - this->Position) +
+          " after its length");
+      }
+      this->Position += static_cast<size_t>(length);
+    }
   }
 
   /// Skips a METADATA block as vtkDataReader::ReadArray reads it: the

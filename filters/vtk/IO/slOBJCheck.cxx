@@ -121,6 +121,26 @@ std::string indexProblem(const std::string& text, const char* what, long long be
 std::string slOBJProblem(const std::string& fileName)
 {
   std::ifstream in(fileName, std::ios::binary);
+  // ShadeLab's parser skips a UTF-8 byte order mark; vtkOBJReader reads it
+  // as part of the first line's keyword and ignores that line, which is
+  // harmless only when it is blank or a comment.
+  {
+    std::string first;
+    long firstNumber = 0;
+    if (nextLine(in, first, firstNumber) && first.compare(0, 3, "\xEF\xBB\xBF") == 0)
+    {
+      std::istringstream words(first.substr(3));
+      std::string keyword;
+      if (words >> keyword && keyword[0] != '#')
+      {
+        return at(1, "\"" + shadelab::printableText(keyword) +
+            "\" follows a UTF-8 byte order mark, which VTK's OBJ reader would read as part of it and skip the line; "
+            "save the file without the mark");
+      }
+    }
+    in.clear();
+    in.seekg(0);
+  }
   // Pass 1: how many of each; indices may name values defined later.
   Counts total;
   std::string line, keyword;

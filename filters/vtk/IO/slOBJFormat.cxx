@@ -351,6 +351,13 @@ std::vector<T> joined(std::vector<Chunk>& chunks, std::vector<T> Chunk::*member)
 
 bool slParseOBJ(const char* text, std::size_t size, bool merge, slMeshArrays& mesh, int threads)
 {
+  // A UTF-8 byte order mark (some Windows editors write one) is not part of
+  // the first line's keyword.
+  if (size >= 3 && std::memcmp(text, "\xEF\xBB\xBF", 3) == 0)
+  {
+    text += 3;
+    size -= 3;
+  }
   // Lines split into one stretch per thread: indices are absolute, so the
   // stretches parse independently and are joined in order.
   const std::size_t parts = static_cast<std::size_t>(std::max(1, std::min(threads, 64)));

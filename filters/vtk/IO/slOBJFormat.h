@@ -27,9 +27,10 @@
 /// coordinate (slMergeIdenticalPoints, first occurrence first). Unlike
 /// vtkOBJReader 9.1 it keeps every face and "l" and "p" element, and leaves
 /// out the normals when some point would have none (see docs/mesh-io.md).
-/// Returns false, leaving @p mesh unspecified, unless the text consists only
-/// of blank lines, comments, "v x y z", "vt u v", "vn x y z" lines, "f"
-/// lines of 3 or more corners of one form each (v, v/vt, v//vn or v/vt/vn),
+/// Returns false, leaving @p mesh unspecified, unless the text (after a
+/// UTF-8 byte order mark, which is skipped) consists only of blank lines,
+/// comments, "v x y z", "vt u v", "vn x y z" lines, "f" lines of 3 or more
+/// corners of one form each (v, v/vt, v//vn or v/vt/vn),
 /// "l" lines of 2 or more v or v/vt corners and "p" lines of v corners,
 /// with positive indices naming existing values, at least one face, finite
 /// decimal numbers, lines of at most 1000 bytes, and vt (vn) lines only if

@@ -4,8 +4,13 @@
  * @file slOFFParser.h
  * @brief Parses Object File Format (OFF) text into vtkPolyData.
  *
- * Accepts "OFF" and "COFF"/"NOFF"-free plain OFF with '#' comments, n-gon
- * faces, and optional per-face colours (ignored). Non-manifold faces are kept,
+ * Accepts "OFF", "COFF" (a colour r g b [a] after each vertex's
+ * coordinates, read into the unsigned char point scalars "Colors": integers
+ * 0-255, or 0-1 when any value in the file is written otherwise) and "NOFF"
+ * (a normal after each vertex, read into the point normals "Normals"), with
+ * '#' comments and n-gon faces; values after a face's indices (a face
+ * colour) are ignored, values after a plain OFF vertex refused. Other forms
+ * (STOFF, 4OFF, nOFF, CNOFF) are refused. Non-manifold faces are kept,
  * unlike half-edge readers that must drop them. Internal to ShadeLab::IO.
  */
 
