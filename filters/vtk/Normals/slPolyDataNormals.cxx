@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 #include <numeric>
 #include <string>
 #include <type_traits>
@@ -40,6 +41,22 @@ namespace
 bool floatArithmeticSuffices(double largestSide)
 {
   return largestSide >= 0x1p-10 && largestSide <= 0x1p20;
+}
+
+/// Whether points can be computed in double: the same products overflow a
+/// double above sizes of about 2^255 (1e77) and underflow below about
+/// 2^-255, so a mesh whose bounding box is not between 2^-128 and 2^200
+/// across (and is not a single position) is computed in long double, whose
+/// exponent range (x86-64: 80-bit, up to 1e4932) holds them for every
+/// double input. Every float and integer mesh is within the range.
+bool doubleArithmeticSuffices(double largestSide)
+{
+  // 2^1025 to the 4th power, and 2^-1074 (the smallest double) too, and
+  // their reciprocals (Max weights).
+  static_assert(std::numeric_limits<long double>::max_exponent >= 4400 &&
+      std::numeric_limits<long double>::min_exponent <= -4400,
+    "long double must hold the 4th powers of every double (x86-64's 80-bit format does)");
+  return largestSide == 0.0 || (largestSide >= 0x1p-128 && largestSide <= 0x1p200);
 }
 
 /// The cell data of the output: the input's, with the triangles cut from
@@ -81,25 +98,26 @@ void passCellData(vtkPolyData* input, vtkPolyData* output, int64_t numPolygons)
 }
 
 /// The output's points, point data and polygons after a split: one point
-/// per entry of @p r.source, of type T (the caller turns them back into the
+/// per entry of @p r.source, of type P (the caller turns them back into the
 /// input's type if that differs).
-template <typename T, typename Id>
-void setSplitPoints(vtkPolyData* input, vtkPolyData* output, const T* xyz, const slnormals::PolygonNormals<Id>& r,
+template <typename P, typename Id>
+void setSplitPoints(vtkPolyData* input, vtkPolyData* output, const P* xyz, const slnormals::PolygonNormals<Id>& r,
   vtkDataArray* givenOffsets, vtkTypeInt32Array* connectivity, vtkFloatArray* normals, const slnormals::Parallel& par)
 {
   const int64_t total = static_cast<int64_t>(r.source.size());
   vtkNew<vtkPoints> points;
-  points->SetDataType(std::is_same<T, float>::value ? VTK_FLOAT : VTK_DOUBLE);
+  static_assert(std::is_same<P, float>::value || std::is_same<P, double>::value, "points are float or double");
+  points->SetDataType(std::is_same<P, float>::value ? VTK_FLOAT : VTK_DOUBLE);
   points->SetNumberOfPoints(total);
   if (points->GetNumberOfPoints() != total)
   {
     throw std::bad_alloc(); // VTK could not allocate them (see slSetNumberOfTuplesOrThrow)
   }
-  T* out = static_cast<T*>(points->GetData()->GetVoidPointer(0));
+  P* out = static_cast<P*>(points->GetData()->GetVoidPointer(0));
   par.forRange(0, total, 65536, [&](int64_t b, int64_t e) {
     for (int64_t i = b; i < e; ++i)
     {
-      std::memcpy(out + 3 * i, xyz + 3 * r.source[static_cast<size_t>(i)], 3 * sizeof(T));
+      std::memcpy(out + 3 * i, xyz + 3 * r.source[static_cast<size_t>(i)], 3 * sizeof(P));
     }
   });
   output->SetPoints(points);
@@ -149,11 +167,17 @@ void setSplitPoints(vtkPolyData* input, vtkPolyData* output, const T* xyz, const
 /// the VTK side of the filter. Returns the number of polygons reversed.
 /// @p lastPoints and @p lastCells hold the normals arrays last output
 /// (refilled when nothing else holds them), and then those of this output.
-template <typename T, typename Id>
+/// Split points are copied from @p pointXyz, the same points as @p xyz in
+/// type P (float or double; @p xyz itself unless T is long double).
+template <typename T, typename Id, typename P = T>
 int64_t computeInto(const slnormals::PolygonNormalsSettings& settings, bool cellNormals, vtkPolyData* input,
   vtkPolyData* output, const T* xyz, shadelab::ScratchPool* scratch, vtkSmartPointer<vtkFloatArray>& lastPoints,
-  vtkSmartPointer<vtkFloatArray>& lastCells)
+  vtkSmartPointer<vtkFloatArray>& lastCells, const P* pointXyz = nullptr)
 {
+  if constexpr (std::is_same<T, P>::value)
+  {
+    pointXyz = xyz;
+  }
   slnormals::Parallel par = slSMPParallel();
   par.scratch = scratch;
   if (settings.split || !settings.pointNormals)
@@ -201,7 +225,7 @@ int64_t computeInto(const slnormals::PolygonNormalsSettings& settings, bool cell
   {
     vtkDataArray* givenOffsets = hasOwned ? static_cast<vtkDataArray*>(owned.offsets.GetPointer())
                                           : input->GetPolys()->GetOffsetsArray();
-    setSplitPoints(input, output, xyz, r, givenOffsets, splitConnectivity, normals, par);
+    setSplitPoints(input, output, pointXyz, r, givenOffsets, splitConnectivity, normals, par);
     if (input->GetNumberOfVerts() + input->GetNumberOfLines() > 0)
     {
       const std::vector<vtkIdType> pointMap(r.pointMap.begin(), r.pointMap.end());
@@ -319,7 +343,10 @@ int slPolyDataNormals::RequestData(vtkInformation*, vtkInformationVector** input
   }
 
   // Points as float or double; anything else, and float points of a mesh
-  // too large or too small for float arithmetic, is converted to double.
+  // too large or too small for float arithmetic, is converted to double. A
+  // mesh too large or too small for double arithmetic is computed in long
+  // double (a copy of its points; split points are copied from the double
+  // ones).
   vtkSmartPointer<vtkDataArray> data = input->GetPoints()->GetData();
   const bool computeAsGiven = vtkDoubleArray::SafeDownCast(data) ||
     (vtkFloatArray::SafeDownCast(data) && floatArithmeticSuffices(largestSide));
@@ -328,6 +355,12 @@ int slPolyDataNormals::RequestData(vtkInformation*, vtkInformationVector** input
     auto converted = vtkSmartPointer<vtkDoubleArray>::New();
     converted->DeepCopy(data);
     data = converted;
+  }
+  std::vector<long double> wide;
+  if (vtkDoubleArray::SafeDownCast(data) && !doubleArithmeticSuffices(largestSide))
+  {
+    const double* d = vtkDoubleArray::SafeDownCast(data)->GetPointer(0);
+    wide.assign(d, d + 3 * input->GetNumberOfPoints());
   }
   vtkIdType flipped = 0;
   if (!slRunCore(this, output, [&] {
@@ -338,10 +371,15 @@ int slPolyDataNormals::RequestData(vtkInformation*, vtkInformationVector** input
         flipped = computeInto<float, Id>(
           s, cellNormals, input, output, f->GetPointer(0), this->Scratch.get(), lastPoints, lastCells);
       }
-      else
+      else if (wide.empty())
       {
         flipped = computeInto<double, Id>(s, cellNormals, input, output,
           vtkDoubleArray::SafeDownCast(data)->GetPointer(0), this->Scratch.get(), lastPoints, lastCells);
+      }
+      else
+      {
+        flipped = computeInto<long double, Id, double>(s, cellNormals, input, output, wide.data(),
+          this->Scratch.get(), lastPoints, lastCells, vtkDoubleArray::SafeDownCast(data)->GetPointer(0));
       }
       return 0;
     });

@@ -15,12 +15,15 @@
  *   vertices of a sphere, with e1, e2 the corner's two edges.
  *
  * A corner of a degenerate polygon (zero Newell vector) or with a zero-length
- * edge weighs nothing, so it never brings a NaN.
+ * edge weighs nothing, so it never brings a NaN; for Max weighting, neither
+ * does a corner with edges so short that 1 / (|e1|² |e2|²) would overflow
+ * (maxCornerWeight()).
  */
 
 #include <glm/glm.hpp>
 
 #include <cmath>
+#include <limits>
 
 namespace slnormals
 {
@@ -73,6 +76,19 @@ inline T cornerAngle(T crossLength, T dot)
   return dot < T(0) ? T(3.141592653589793) - firstQuadrant : firstQuadrant;
 }
 
+/// Max's weight sin θ / (|e1| |e2|) = @p crossLength / @p squaredLengths of a
+/// corner whose edges e1, e2 have |e1 x e2| = @p crossLength and |e1|² |e2|²
+/// = @p squaredLengths. A corner whose @p squaredLengths is below the smallest
+/// normal T (about 1.2e-38 in float, 2.2e-308 in double: |e1| |e2| below
+/// 1.1e-19 or 1.5e-154), where the quotient could overflow, weighs 0, as
+/// one with a zero-length edge. So the weight is finite for every finite
+/// input, and exact (up to rounding) for every other corner.
+template <typename T>
+inline T maxCornerWeight(T crossLength, T squaredLengths)
+{
+  return squaredLengths >= std::numeric_limits<T>::min() ? crossLength / squaredLengths : T(0);
+}
+
 /// The corner weight times the unit normal, for the corner at @p p whose
 /// polygon continues to @p next and comes from @p prev. @p unitNormal is the
 /// polygon's unit normal (zero for a degenerate polygon), @p doubleArea the
@@ -97,13 +113,7 @@ inline glm::vec<3, T> cornerContribution(Weighting weighting, const glm::vec<3, 
     {
       const glm::vec<3, T> e1 = next - p;
       const glm::vec<3, T> e2 = prev - p;
-      const T l2 = glm::dot(e1, e1) * glm::dot(e2, e2);
-      if (!(l2 > T(0)))
-      {
-        return glm::vec<3, T>(0);
-      }
-      // |e1 x e2| / (|e1|^2 |e2|^2) = sin(theta) / (|e1| |e2|)
-      return unitNormal * (glm::length(glm::cross(e1, e2)) / l2);
+      return unitNormal * maxCornerWeight(glm::length(glm::cross(e1, e2)), glm::dot(e1, e1) * glm::dot(e2, e2));
     }
   }
   return glm::vec<3, T>(0);

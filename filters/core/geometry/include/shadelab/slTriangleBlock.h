@@ -36,6 +36,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <type_traits>
 #if defined(__SSE2__)
 #include <xmmintrin.h>
@@ -252,12 +253,16 @@ struct TriangleBlock
       else
       {
         // Max: sin θ / (|e1| |e2|) times the unit normal = N / (|e1|² |e2|²).
+        // Below the smallest normal T the reciprocal of |e1|² |e2|² could
+        // overflow (and 0 × inf give NaN): such a corner weighs 0, as in
+        // maxCornerWeight() (slCornerWeights.h).
         const T la = ax * ax + ay * ay + az * az, lb = bx * bx + by * by + bz * bz,
                 lc = cx * cx + cy * cy + cz * cz;
         const T l0 = lc * la, l1 = la * lb, l2 = lb * lc;
-        w[0] = (valid && l0 > T(0) ? T(1) : T(0)) / (l0 > T(0) ? l0 : T(1));
-        w[1] = (valid && l1 > T(0) ? T(1) : T(0)) / (l1 > T(0) ? l1 : T(1));
-        w[2] = (valid && l2 > T(0) ? T(1) : T(0)) / (l2 > T(0) ? l2 : T(1));
+        const T smallest = std::numeric_limits<T>::min();
+        w[0] = (valid && l0 >= smallest ? T(1) : T(0)) / (l0 >= smallest ? l0 : T(1));
+        w[1] = (valid && l1 >= smallest ? T(1) : T(0)) / (l1 >= smallest ? l1 : T(1));
+        w[2] = (valid && l2 >= smallest ? T(1) : T(0)) / (l2 >= smallest ? l2 : T(1));
       }
       for (int k = 0; k < 3; ++k)
       {
