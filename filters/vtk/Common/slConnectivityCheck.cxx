@@ -1,5 +1,6 @@
 #include "slConnectivityCheck.h"
 
+#include "shadelab/PrintableText.h"
 #include "shadelab/slAtomicMinimum.h"
 #include "shadelab/slIdsBelow.h"
 #include "shadelab/slVectorClones.h"
@@ -125,25 +126,25 @@ std::string arrayProblem(vtkCellArray* cells, vtkIdType numPoints, const char* k
   return cellsProblem(offsets->GetPointer(0), offsets->GetNumberOfValues(), ids->GetPointer(0),
     ids->GetNumberOfValues(), numPoints, kind, checkIds);
 }
-/// "" or the first array of @p data (the point or cell data, @p kind "point"
-/// or "cell") with fewer tuples than the mesh has @p items: the filters and
-/// VTK's own copying index such arrays by point or cell id.
-std::string shortArrayProblem(vtkDataSetAttributes* data, vtkIdType items, const char* kind)
+} // namespace
+
+std::string slArrayLengthProblem(vtkDataSetAttributes* data, vtkIdType items, const char* kind, bool exact)
 {
   for (int i = 0; data && i < data->GetNumberOfArrays(); ++i)
   {
     vtkAbstractArray* array = data->GetAbstractArray(i);
-    if (array && array->GetNumberOfTuples() < items)
+    const vtkIdType tuples = array ? array->GetNumberOfTuples() : items;
+    if (tuples < items || (exact && tuples != items))
     {
       const char* name = array->GetName();
-      return std::string(kind) + " array " + (name ? "\"" + std::string(name) + "\"" : "number " + std::to_string(i)) +
-        " has " + std::to_string(array->GetNumberOfTuples()) +
-        (array->GetNumberOfTuples() == 1 ? " tuple for " : " tuples for ") + std::to_string(items) + " " + kind + "s";
+      return std::string(kind) + " array " +
+        (name ? "\"" + shadelab::printableText(name, 100) + "\"" : "number " + std::to_string(i)) + " has " +
+        std::to_string(tuples) + (tuples == 1 ? " tuple for " : " tuples for ") + std::to_string(items) + " " + kind +
+        "s";
     }
   }
   return std::string();
 }
-} // namespace
 
 std::string slConnectivityProblem(vtkPolyData* mesh)
 {
@@ -172,11 +173,11 @@ std::string slConnectivityProblem(vtkPolyData* mesh, bool polygonIds)
   }
   if (problem.empty())
   {
-    problem = shortArrayProblem(mesh->GetPointData(), numPoints, "point");
+    problem = slArrayLengthProblem(mesh->GetPointData(), numPoints, "point", false);
   }
   if (problem.empty())
   {
-    problem = shortArrayProblem(mesh->GetCellData(), mesh->GetNumberOfCells(), "cell");
+    problem = slArrayLengthProblem(mesh->GetCellData(), mesh->GetNumberOfCells(), "cell", false);
   }
   return problem;
 }

@@ -17,8 +17,11 @@
 
 #include "ShadeLabCommonModule.h"
 
+#include <vtkType.h>
+
 #include <string>
 
+class vtkDataSetAttributes;
 class vtkPolyData;
 
 /// "" when every cell of @p mesh names only points in [0, number of points),
@@ -34,5 +37,13 @@ SHADELABCOMMON_EXPORT std::string slConnectivityProblem(vtkPolyData* mesh);
 /// checks each id before it follows it, and asks slConnectivityProblem(mesh)
 /// for the line when one is bad.
 SHADELABCOMMON_EXPORT std::string slConnectivityProblem(vtkPolyData* mesh, bool polygonIds);
+
+/// "" or the first array of @p data (a mesh's point or cell data, @p kind
+/// "point" or "cell") with fewer tuples than the mesh's @p items, or, with
+/// @p exact, another number: "point array "Normals" has 3 tuples for 50
+/// points". slConnectivityProblem() asks for fewer (longer arrays are read no
+/// further than the mesh); a reader asks for exactly as many.
+SHADELABCOMMON_EXPORT std::string slArrayLengthProblem(
+  vtkDataSetAttributes* data, vtkIdType items, const char* kind, bool exact);
 
 #endif

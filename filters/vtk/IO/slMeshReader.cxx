@@ -121,26 +121,6 @@ std::string shortPolygonProblem(vtkCellArray* polys)
     std::to_string(polys->GetCellSize(first)) + ")";
 }
 
-/// "" unless an array of @p data has another number of tuples than
-/// @p expected, the mesh's @p what: point merging and the filters index
-/// them by point or cell. vtkOBJReader attaches the listed normals or
-/// texture coordinates as they are when every face names the same index for
-/// v, vt and vn, also when fewer are listed than points.
-std::string arrayLengthProblem(vtkDataSetAttributes* data, vtkIdType expected, const char* kind, const char* what)
-{
-  for (int a = 0; a < data->GetNumberOfArrays(); ++a)
-  {
-    vtkAbstractArray* array = data->GetAbstractArray(a);
-    if (array && array->GetNumberOfTuples() != expected)
-    {
-      const char* name = array->GetName();
-      return std::string(kind) + " array \"" + shadelab::printableText(name ? name : "", 100) + "\" has " +
-        std::to_string(array->GetNumberOfTuples()) + " tuples for " + std::to_string(expected) + " " + what;
-    }
-  }
-  return std::string();
-}
-
 /// vtkOBJReader 9.1 gives its cell array "GroupIds" a value per face only,
 /// although VTK orders a mesh's vertex and line cells (OBJ "p" and "l")
 /// before its faces. Gives those cells the group -1 (the reader records none
@@ -370,11 +350,15 @@ int slMeshReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInform
     }
     if (cellProblem.empty())
     {
-      cellProblem = arrayLengthProblem(mesh->GetPointData(), mesh->GetNumberOfPoints(), "point", "points");
+      // vtkOBJReader attaches the listed normals or texture coordinates as
+      // they are when every face names the same index for v, vt and vn,
+      // also when fewer are listed than points; point merging and the
+      // filters index them by point or cell.
+      cellProblem = slArrayLengthProblem(mesh->GetPointData(), mesh->GetNumberOfPoints(), "point", true);
     }
     if (cellProblem.empty())
     {
-      cellProblem = arrayLengthProblem(mesh->GetCellData(), mesh->GetNumberOfCells(), "cell", "cells");
+      cellProblem = slArrayLengthProblem(mesh->GetCellData(), mesh->GetNumberOfCells(), "cell", true);
     }
     if (!cellProblem.empty())
     {
