@@ -29,6 +29,8 @@
 #include <QStatusBar>
 #include <QUrl>
 
+#include <iterator>
+
 namespace shadelab
 {
 namespace viewer
@@ -80,18 +82,19 @@ MainWindow::MainWindow(QWidget* parent)
   this->Brdf = new BrdfPanel(this->Document, this->View);
   this->BrdfFileEditor = new BrdfFilePanel(this->Document);
 
-  const std::pair<QString, QWidget*> panels[] = { { tr("Shading"), this->Shading },
-    { tr("Material"), this->Material }, { tr("Lights"), this->Lights }, { tr("Normals"), this->Normals },
-    { tr("Fields"), this->Fields }, { tr("BRDF"), this->Brdf }, { tr("BRDF file"), this->BrdfFileEditor } };
+  QWidget* const panels[] = { this->Shading, this->Material, this->Lights, this->Normals, this->Fields, this->Brdf,
+    this->BrdfFileEditor };
+  const QStringList titles = panelNames();
+  Q_ASSERT(titles.size() == static_cast<int>(std::size(panels)));
   QDockWidget* previous = nullptr;
-  for (const auto& panel : panels)
+  for (int i = 0; i < titles.size(); ++i)
   {
     auto* scroll = new QScrollArea;
-    scroll->setWidget(panel.second);
+    scroll->setWidget(panels[i]);
     scroll->setWidgetResizable(true);
-    scroll->setMinimumWidth(panel.second->sizeHint().width() + 24); // no horizontal scrolling
-    auto* dock = new QDockWidget(panel.first, this);
-    dock->setObjectName(panel.first);
+    scroll->setMinimumWidth(panels[i]->sizeHint().width() + 24); // no horizontal scrolling
+    auto* dock = new QDockWidget(titles[i], this);
+    dock->setObjectName(titles[i]);
     dock->setWidget(scroll);
     this->addDockWidget(Qt::RightDockWidgetArea, dock);
     if (previous)
@@ -205,6 +208,11 @@ void MainWindow::setViewSize(int width, int height)
   this->View->setMinimumSize(width, height);
   this->View->setMaximumSize(width, height);
   this->resize(extra + QSize(width, height));
+}
+
+QStringList MainWindow::panelNames()
+{
+  return { "Shading", "Material", "Lights", "Normals", "Fields", "BRDF", "BRDF file" };
 }
 
 bool MainWindow::raisePanel(const QString& name)

@@ -44,8 +44,11 @@ public:
   bool saveScreenshot(const QString& path, QString* error = nullptr);
   /// Sets the size of the 3D view in pixels (the scene's imageSize to match `shadelab render`).
   void setViewSize(int width, int height);
-  /// Brings the panel titled @p name to the front; false if there is none.
+  /// Brings the panel titled @p name (any case) to the front; false if there is none.
   bool raisePanel(const QString& name);
+  /// The panels' titles, in the order of their tabs: the names raisePanel()
+  /// and the --panel option take.
+  static QStringList panelNames();
   /// When on (tests, scripts), errors only go to the status bar: no message box.
   void setQuiet(bool quiet) { this->Quiet = quiet; }
 

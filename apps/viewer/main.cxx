@@ -38,10 +38,56 @@ int fail(const QString& message)
   std::cerr << "shadelab-viewer: " << message.toStdString() << "\n";
   return 1;
 }
+
+/// The name and version --help and --version print.
+void nameApplication()
+{
+  QCoreApplication::setApplicationName("shadelab-viewer");
+  QCoreApplication::setApplicationVersion(SHADELAB_VERSION);
+}
+
+/// "A, B or C".
+QString listWithOr(QStringList items)
+{
+  const QString last = items.isEmpty() ? QString() : items.takeLast();
+  return items.isEmpty() ? last : items.join(", ") + " or " + last;
+}
 } // namespace
 
 int main(int argc, char** argv)
 {
+  QCommandLineParser parser;
+  parser.setApplicationDescription("ShadeLab's interactive viewer: the lighting equation term by term, live.");
+  const QCommandLineOption helpOption = parser.addHelpOption();
+  const QCommandLineOption versionOption = parser.addVersionOption();
+  parser.addPositionalArgument("mesh", "mesh to open (OBJ, PLY, STL, VTP, VTK, OFF, glTF); default: the bundled Spot");
+  const QCommandLineOption sceneOption(
+    QStringList{ "s", "scene" }, "JSON scene to open (default: the bundled default scene)", "FILE");
+  const QCommandLineOption shotOption(
+    "screenshot", "render the view at the scene's image size, write it (PNG, EXR, ...) and quit", "FILE");
+  const QCommandLineOption windowShotOption(
+    "window-screenshot", "write a picture of the whole window, panels included, and quit", "FILE");
+  const QCommandLineOption panelOption(
+    "panel", "raise a panel: " + listWithOr(shadelab::viewer::MainWindow::panelNames()) + " (any case)", "NAME");
+  const QCommandLineOption splitOption("split", "start in the split view flat | Gouraud | Phong");
+  const QCommandLineOption verboseOption("verbose", "also print VTK's own multi-line error reports");
+  parser.addOptions({ sceneOption, shotOption, windowShotOption, panelOption, splitOption, verboseOption });
+
+  // --help and --version need no display: answered before it is looked for,
+  // by a core application. (Qt's own options, such as -platform, are only
+  // known once QApplication has taken them, so a parse error here waits.)
+  QStringList arguments;
+  for (int i = 0; i < argc; ++i)
+  {
+    arguments << QString::fromLocal8Bit(argv[i]);
+  }
+  if (parser.parse(arguments) && (parser.isSet(helpOption) || parser.isSet(versionOption)))
+  {
+    QCoreApplication core(argc, argv);
+    nameApplication();
+    parser.process(core); // prints and exits with 0
+  }
+
   const std::string display = slDisplayProblem();
   if (!display.empty() && !std::getenv("QT_QPA_PLATFORM") && !std::getenv("WAYLAND_DISPLAY"))
   {
@@ -57,25 +103,8 @@ int main(int argc, char** argv)
   // decimal comma under de_DE and the like ("0.5" is not a number). The
   // interface's own texts keep the user's language.
   std::setlocale(LC_NUMERIC, "C");
-  QApplication::setApplicationName("shadelab-viewer");
-  QApplication::setApplicationVersion(SHADELAB_VERSION);
+  nameApplication();
 
-  QCommandLineParser parser;
-  parser.setApplicationDescription("ShadeLab's interactive viewer: the lighting equation term by term, live.");
-  parser.addHelpOption();
-  parser.addVersionOption();
-  parser.addPositionalArgument("mesh", "mesh to open (OBJ, PLY, STL, VTP, VTK, OFF, glTF); default: the bundled Spot");
-  const QCommandLineOption sceneOption(
-    QStringList{ "s", "scene" }, "JSON scene to open (default: the bundled default scene)", "FILE");
-  const QCommandLineOption shotOption(
-    "screenshot", "render the view at the scene's image size, write it (PNG, EXR, ...) and quit", "FILE");
-  const QCommandLineOption windowShotOption(
-    "window-screenshot", "write a picture of the whole window, panels included, and quit", "FILE");
-  const QCommandLineOption panelOption(
-    "panel", "raise a panel: Shading, Material, Lights, Normals, Fields or BRDF", "NAME");
-  const QCommandLineOption splitOption("split", "start in the split view flat | Gouraud | Phong");
-  const QCommandLineOption verboseOption("verbose", "also print VTK's own multi-line error reports");
-  parser.addOptions({ sceneOption, shotOption, windowShotOption, panelOption, splitOption, verboseOption });
   parser.process(app);
   // As in `shadelab`: the viewer reports each problem itself, in one line or
   // a dialog that gives VTK's reason (slErrorCapture); VTK's own reports

@@ -53,6 +53,7 @@
 #include <QListWidget>
 #include <QMimeData>
 #include <QDir>
+#include <QDockWidget>
 #include <QPair>
 #include <QProcess>
 #include <QProcessEnvironment>
@@ -577,6 +578,38 @@ private slots:
     const QString message = QString::fromUtf8(viewer.readAllStandardError()).trimmed();
     QVERIFY2(message.startsWith("shadelab-viewer: ") && !message.contains('\n'), qPrintable(message));
     QVERIFY2(message.contains("DISPLAY"), qPrintable(message));
+  }
+
+  void helpAndVersionNeedNoDisplay()
+  {
+    // Asking how to run the viewer works where it cannot run: --help and
+    // --version print and exit 0 without a display. The help names every
+    // panel --panel can raise (the window's own docks, not a list).
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.remove("DISPLAY");
+    environment.remove("QT_QPA_PLATFORM");
+    environment.remove("WAYLAND_DISPLAY");
+    for (const QString& option : { QString("--help"), QString("--version") })
+    {
+      QProcess viewer;
+      viewer.setProcessEnvironment(environment);
+      viewer.start(QString(SHADELAB_VIEWER_PROGRAM), { option });
+      QVERIFY(viewer.waitForFinished(30000));
+      const QString out = QString::fromUtf8(viewer.readAllStandardOutput());
+      QVERIFY2(viewer.exitCode() == 0, qPrintable(option + ": " + viewer.readAllStandardError()));
+      QVERIFY2(out.contains("shadelab-viewer"), qPrintable(out));
+      if (option == "--help")
+      {
+        const QString panelHelp = out.simplified().mid(out.simplified().indexOf("--panel")); // lines wrap
+        const QList<QDockWidget*> docks = this->Window->findChildren<QDockWidget*>();
+        QVERIFY(docks.size() >= 7);
+        for (const QDockWidget* dock : docks)
+        {
+          QVERIFY2(panelHelp.contains(dock->windowTitle()), qPrintable(dock->windowTitle() + " missing in: " + panelHelp));
+          QVERIFY(this->Window->raisePanel(dock->windowTitle().toUpper()));
+        }
+      }
+    }
   }
 
   void scriptedFailuresGiveOneLine()
