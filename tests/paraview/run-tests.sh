@@ -2,6 +2,9 @@
 # The ParaView plugin's tests, inside a root with ParaView 5.11 and the
 # plugin built in BUILD_DIR (scripts/paraview-test.sh does both):
 #   1. the plugin loads in pvpython and every filter runs from paraview.simple;
+#      the properties' defaults and ranges are the VTK classes', every
+#      property has a tooltip, the diffuse colour array is chosen from a list,
+#      state files and Python traces reproduce the pipeline;
 #   2. pvbatch on 1, 2 and 3 MPI ranks (oversubscribed as needed), ParaView's
 #      default ghost request off: normals, tangents and radiance agree with
 #      the serial run at every point, and no ghost cells are left;
@@ -23,6 +26,8 @@ mpi=(mpiexec --oversubscribe --host 127.0.0.1:3)
 
 pvpython "$here/obj_to_vtp.py" data/meshes/spot.obj "$work/spot.vtp"
 pvpython "$here/test_plugin.py" "$plugin" "$work/spot.vtp" data
+# Under a display: the state file holds a ShadeLab Render View.
+bash scripts/with-display.sh pvpython "$here/test_properties.py" "$plugin" "$work/spot.vtp" "$work"
 
 for n in 1 2 3; do
   "${mpi[@]}" -n $n pvbatch --symmetric "$here/mpi_pieces.py" "$plugin" "$work/spot.vtp" "$work/ranks$n.pvtp"

@@ -51,8 +51,9 @@ public:
   ///@}
 
   ///@{
-  /// Lighting model, SL_MODEL_LAMBERT (0) .. SL_MODEL_BLINN_PHONG_NORMALIZED
-  /// (5). Blinn-Phong (2) by default.
+  /// Lighting model: a row of the model table (shadelab/LightingTables.h,
+  /// the values of slLighting.glsl's SL_MODEL_* constants); another value is
+  /// reported and ignored. Blinn-Phong (2) by default.
   void SetLightingModel(int model);
   int GetLightingModel();
   ///@}
