@@ -236,7 +236,7 @@ class StateAndTrace(unittest.TestCase):
         normals = apply(pvs.ShadeLabNormals(registrationName="normals", Input=reader),
                         Weighting="Area", FeatureAngle=45)
         return apply(pvs.ShadeLabRadiance(registrationName="lit", Input=normals),
-                     LightingModel="Cook-Torrance-Ggx", OverrideMaterial=1, Roughness=0.6,
+                     LightingModel="Cook-Torrance GGX", OverrideMaterial=1, Roughness=0.6,
                      DiffuseColor=[0.3, 0.6, 0.9], SpecularColor=[0.1, 0.2, 0.3])
 
     def test_state_file_round_trip(self):
@@ -266,7 +266,7 @@ print(json.dumps(dict(model=lit.LightingModel.GetData(), roughness=lit.Roughness
         self.assertEqual(run.returncode, 0, run.stderr)
         out = run.stdout
         loaded = json.loads(out.strip().splitlines()[-1])
-        self.assertEqual(loaded["model"], "Cook-Torrance-Ggx")
+        self.assertEqual(loaded["model"], "Cook-Torrance GGX")
         self.assertAlmostEqual(loaded["roughness"], 0.6)
         self.assertEqual(loaded["diffuse"], [0.3, 0.6, 0.9])
         self.assertEqual((loaded["weighting"], loaded["angle"]), ("Area", 45))

@@ -34,9 +34,18 @@ const std::string kPropertiesMarker = "<!-- shadelab:material-number-properties"
 const std::string kNamesMarker = "<!-- shadelab:material-number-names -->";
 const std::string kNormalizedSuffix = "-normalized";
 
+/// "cook-torrance-ggx" -> "Cook-Torrance GGX": a family name and its
+/// microfacet distribution, written as their authors write them.
+const std::string kCookTorrance = "cook-torrance-";
+
 /// "blinn-phong-normalized" -> "Blinn-Phong (normalized)".
 std::string label(std::string name)
 {
+  if (name.compare(0, kCookTorrance.size(), kCookTorrance) == 0)
+  {
+    const std::string distribution = name.substr(kCookTorrance.size());
+    return "Cook-Torrance " + (distribution == "ggx" ? std::string("GGX") : label(distribution));
+  }
   std::string suffix;
   if (name.size() > kNormalizedSuffix.size() &&
     name.compare(name.size() - kNormalizedSuffix.size(), kNormalizedSuffix.size(), kNormalizedSuffix) == 0)
