@@ -504,6 +504,48 @@ TEST(Normals, WeldingWithSplittingLeavesNoOrphanPoints)
   }
 }
 
+TEST(Normals, WeldedUnusedPointTakesTheNormalOfItsPositionOnlyWithoutSplitting)
+{
+  // A unit square in z = 0 (normal +z), point 4 unused at the position of
+  // point 0, point 5 unused elsewhere. Welding without splitting gives
+  // point 4 the square's normal: one position, one normal. With splitting a
+  // position may have several normals, so unused points keep (0, 0, 0), as
+  // point 5 does in both.
+  vtkSmartPointer<vtkPolyData> square =
+    mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0, 0, 0 }, { 5, 5, 5 } }, { { 0, 1, 2, 3 } });
+  auto normalAt = [](const Result& r, vtkIdType p) {
+    double n[3];
+    r.out->GetPointData()->GetNormals()->GetTuple(p, n);
+    return Vec({ n[0], n[1], n[2] });
+  };
+  Result smooth = run(square, [](slPolyDataNormals* f) {
+    f->SplittingOff();
+    f->WeldCoincidentPointsOn();
+  });
+  ASSERT_EQ(smooth.out->GetNumberOfPoints(), 6);
+  EXPECT_EQ(normalAt(smooth, 0), Vec({ 0, 0, 1 }));
+  EXPECT_EQ(normalAt(smooth, 4), Vec({ 0, 0, 1 }));
+  EXPECT_EQ(normalAt(smooth, 5), Vec({ 0, 0, 0 }));
+
+  Result split = run(square, [](slPolyDataNormals* f) {
+    f->SplittingOn();
+    f->WeldCoincidentPointsOn();
+  });
+  ASSERT_EQ(split.out->GetNumberOfPoints(), 6);
+  // Used points first, in the polygon's order; the unused ones last, in input order.
+  for (vtkIdType p = 0; p < 4; ++p)
+  {
+    EXPECT_EQ(normalAt(split, p), Vec({ 0, 0, 1 })) << "point " << p;
+  }
+  double p4[3], p5[3];
+  split.out->GetPoint(4, p4);
+  split.out->GetPoint(5, p5);
+  EXPECT_EQ(Vec({ p4[0], p4[1], p4[2] }), Vec({ 0, 0, 0 }));
+  EXPECT_EQ(Vec({ p5[0], p5[1], p5[2] }), Vec({ 5, 5, 5 }));
+  EXPECT_EQ(normalAt(split, 4), Vec({ 0, 0, 0 }));
+  EXPECT_EQ(normalAt(split, 5), Vec({ 0, 0, 0 }));
+}
+
 TEST(Normals, PointsThatAreNotOneSmoothClosedFanTakeTheGeneralGrouping)
 {
   // Most points are one smooth closed fan (one group, found by a walk around

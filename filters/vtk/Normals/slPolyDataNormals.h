@@ -38,7 +38,10 @@
  * Triangles, quads, n-gons and triangle strips are handled; strips are output
  * as triangles. Vertex and line cells are passed through with a warning.
  * Zero-area polygons contribute nothing and get a (0, 0, 0) face normal;
- * points used by no polygon of non-zero area get a (0, 0, 0) normal. Input
+ * points used by no polygon of non-zero area get a (0, 0, 0) normal (with
+ * WeldCoincidentPoints and without Splitting, such a point at the position
+ * of a used one takes that point's normal; with Splitting a position may
+ * have several normals, and it keeps (0, 0, 0)). Input
  * point and cell arrays are passed through (an input "Normals" is replaced).
  *
  * A point with a NaN or infinite coordinate gives an error and an empty
