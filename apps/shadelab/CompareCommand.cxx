@@ -26,7 +26,7 @@ namespace
 int runCompare(const std::vector<std::string>& args)
 {
   const std::vector<OptionSpec> specs{
-    { "scene", "s", "FILE", "JSON scene (default: ShadeLab's built-in scene)" },
+    sceneOption(),
     { "output", "o", "FILE", outputHelp("composite image to write", OutputKind::Image) },
     { "models", "", "", "compare Lambert | Phong | Blinn-Phong (at the scene's frequency) instead of frequencies" },
     { "grid", "", "A,B,...", "draw these lighting models (or all) at the scene's frequency instead of frequencies" },

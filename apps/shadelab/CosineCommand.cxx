@@ -4,7 +4,6 @@
 #include "Inputs.h"
 #include "MeshJobs.h"
 #include "LightingOptions.h"
-#include "OutputFormats.h"
 
 #include "slCosineField.h"
 #include "slScene.h"
@@ -12,6 +11,7 @@
 #include <vtkNew.h>
 #include <vtkPolyData.h>
 
+#include <algorithm>
 #include <iostream>
 
 namespace shadelab
@@ -24,6 +24,8 @@ namespace
 int runCosine(const std::vector<std::string>& args)
 {
   std::vector<OptionSpec> specs = litOptions();
+  // N.L reads neither the lighting model nor the material: no --model.
+  specs.erase(std::find_if(specs.begin(), specs.end(), [](const OptionSpec& s) { return s.name == "model"; }));
   specs.push_back({ "light", "l", "INDEX", "only this light (0-based); default: every light, arrays CosTheta_<i>" });
   specs.push_back({ "no-cells", "", "", "point arrays only" });
   specs = withMeshJobOptions(specs);
@@ -38,11 +40,13 @@ int runCosine(const std::vector<std::string>& args)
     return 0;
   }
   const std::vector<MeshJob> jobs = meshJobs(cl);
-  checkSingleMeshOption(cl, "image", jobs);
-  checkOutputOption(cl, "image", { OutputKind::Image });
+  checkFieldImageOptions(cl, jobs);
+  // -1, every light, is the default only: --light names one.
+  const int light = cl.has("light") ? cl.getIndex("light", 0, 0, 1000000) : -1;
   vtkNew<slCosineField> filter;
   vtkSmartPointer<slScene> scene = configureLitFilter(cl, filter);
-  filter->SetLightIndex(cl.getIndex("light", -1, -1, 1000000));
+  checkLightOption(cl, light, scene);
+  filter->SetLightIndex(light);
   filter->SetComputeCellArrays(!cl.has("no-cells"));
   return runMeshJobs("cosine", jobs, [&](const MeshJob& job) {
     filter->SetInputData(loadMeshWithNormals(job.input));

@@ -55,6 +55,22 @@ int runDetail(const std::vector<std::string>& args)
   {
     throw UsageError("give exactly one of --normal-map, --bump-map, --displace");
   }
+  // Each of these options tunes some of the modes; with another it would do nothing.
+  const bool height = cl.has("bump-map") || cl.has("displace");
+  for (const char* option : { "directx", "strength" })
+  {
+    if (cl.has(option) && height)
+    {
+      throw UsageError(std::string("--") + option + ": only with --normal-map");
+    }
+  }
+  for (const char* option : { "scale", "invert" })
+  {
+    if (cl.has(option) && !height)
+    {
+      throw UsageError(std::string("--") + option + ": only with --bump-map or --displace");
+    }
+  }
   vtkSmartPointer<slPolyDataFilter> filter;
   if (cl.has("normal-map"))
   {

@@ -43,6 +43,13 @@ vtkSmartPointer<vtkPolyData> loadMesh(const std::string& path)
   });
 }
 
+OptionSpec sceneOption()
+{
+  // shadelab::defaultScene()'s lights, as --light counts them.
+  return { "scene", "s", "FILE",
+    "JSON scene (default: ShadeLab's built-in scene: key and fill lights in camera space, and an ambient light)" };
+}
+
 vtkSmartPointer<slScene> loadScene(const std::string& path)
 {
   auto scene = vtkSmartPointer<slScene>::New();
@@ -143,6 +150,17 @@ void checkTangentsFor(ShadingModel model, vtkPolyData* mesh, const std::string& 
   if (!problem.empty())
   {
     throw Error(path + ": " + problem);
+  }
+}
+
+void checkLightOption(const CommandLine& cl, int light, slScene* scene)
+{
+  const int count = scene->GetNumberOfLights();
+  if (light >= count)
+  {
+    throw Error("option --light: light " + std::to_string(light) + " is out of range: " +
+      (cl.has("scene") ? cl.get("scene") : std::string("the built-in scene")) + " has " + std::to_string(count) +
+      (count == 1 ? " light" : " lights"));
   }
 }
 

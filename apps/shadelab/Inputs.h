@@ -69,6 +69,9 @@ const char* meshFormatsText();
 /// Reads a mesh with slMeshReader. Throws shadelab::Error ("FILE: problem").
 vtkSmartPointer<vtkPolyData> loadMesh(const std::string& path);
 
+/// The --scene option of every subcommand that reads a scene.
+OptionSpec sceneOption();
+
 /// Reads a scene file, or returns the built-in default scene for "".
 /// Throws shadelab::Error ("FILE: KEY.PATH: problem").
 vtkSmartPointer<slScene> loadScene(const std::string& path);
@@ -100,6 +103,12 @@ void applySceneOverrides(const CommandLine& cl, slScene* scene);
 void checkTangentsFor(slScene* scene, vtkPolyData* mesh, const std::string& path);
 /// The same check for drawing @p mesh with @p model.
 void checkTangentsFor(ShadingModel model, vtkPolyData* mesh, const std::string& path);
+
+/// Throws shadelab::Error "option --light: light K is out of range: FILE has
+/// N lights" (the scene file of --scene, or the built-in scene) unless
+/// @p scene has light @p light; -1 (every light) passes. Exit status 1: only
+/// the scene can tell.
+void checkLightOption(const CommandLine& cl, int light, slScene* scene);
 
 /// Parses "WxH", each in [kMinImageSize, kMaxImageSize] (SceneLimits.h, the
 /// range of a scene's imageSize and of a panel). Throws UsageError.

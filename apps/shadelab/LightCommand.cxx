@@ -5,7 +5,6 @@
 #include "MeshJobs.h"
 #include "LightingOptions.h"
 #include "MaterialOptions.h"
-#include "OutputFormats.h"
 #include "slScene.h"
 #include "slUpdateOrThrow.h"
 
@@ -14,6 +13,7 @@
 
 #include <vtkImageData.h>
 #include <vtkNew.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 
 #include <iostream>
@@ -30,7 +30,7 @@ int runLight(const std::vector<std::string>& args)
   std::vector<OptionSpec> specs = withMaterialOptions(litOptions(), "default: the scene's");
   specs.push_back({ "per-light", "", "", "also write Radiance_<i> for every light i" });
   specs.push_back({ "diffuse-array", "", "NAME", "an RGB(A) point array of MESH: a base colour multiplying k_a and k_d (as in render)" });
-  specs.push_back({ "diffuse-texture", "", "FILE", "an image: a base colour multiplying k_a and k_d at the texture coordinates" });
+  specs.push_back({ "diffuse-texture", "", "FILE", "an image: a base colour multiplying k_a and k_d at the texture coordinates (default: the scene's material.diffuseTexture)" });
   specs = withMeshJobOptions(specs);
   const CommandLine cl(args, specs);
   if (cl.has("help"))
@@ -43,8 +43,12 @@ int runLight(const std::vector<std::string>& args)
     return 0;
   }
   const std::vector<MeshJob> jobs = meshJobs(cl);
-  checkSingleMeshOption(cl, "image", jobs);
-  checkOutputOption(cl, "image", { OutputKind::Image });
+  checkFieldImageOptions(cl, jobs);
+  if (cl.has("diffuse-array") && cl.has("diffuse-texture"))
+  {
+    // The filter would take the array and never read the texture.
+    throw UsageError("--diffuse-texture: give either --diffuse-array or --diffuse-texture, not both");
+  }
   vtkNew<slRadianceFilter> filter;
   vtkSmartPointer<slScene> scene = configureLitFilter(cl, filter);
   filter->SetPerLightArrays(cl.has("per-light"));
@@ -53,14 +57,28 @@ int runLight(const std::vector<std::string>& args)
     filter->SetDiffuseColorArrayName(cl.get("diffuse-array").c_str());
   }
   vtkNew<slImageReader> texture;
+  // Without --diffuse-texture or --diffuse-array, the scene's
+  // material.diffuseTexture, as render draws it.
+  vtkNew<vtkImageData> sceneTexture;
   if (cl.has("diffuse-texture"))
   {
     texture->SetFileName(cl.get("diffuse-texture").c_str());
     slUpdateOrThrow(texture);
     filter->SetDiffuseTexture(texture->GetOutput());
   }
+  else if (!cl.has("diffuse-array"))
+  {
+    slCallOrThrow(scene, [&] { return scene->ReadDiffuseTexture(sceneTexture); });
+  }
+  const bool useSceneTexture = sceneTexture->GetPointData()->GetScalars() != nullptr;
   return runMeshJobs("light", jobs, [&](const MeshJob& job) {
-    filter->SetInputData(loadMeshWithNormals(job.input));
+    vtkSmartPointer<vtkPolyData> mesh = loadMeshWithNormals(job.input);
+    if (useSceneTexture)
+    {
+      // render draws a mesh without texture coordinates untextured.
+      filter->SetDiffuseTexture(mesh->GetPointData()->GetTCoords() ? sceneTexture.Get() : nullptr);
+    }
+    filter->SetInputData(mesh);
     runLitFilter(filter, job.input);
     writeFieldImageIfAsked(cl, filter->GetOutput(), scene, "Ambient,Diffuse,Specular,Radiance", job.output);
     writeMesh(filter->GetOutput(), job.output, cl);

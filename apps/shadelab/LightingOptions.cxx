@@ -23,7 +23,7 @@ namespace app
 std::vector<OptionSpec> litOptions()
 {
   return {
-    { "scene", "s", "FILE", "JSON scene (default: ShadeLab's built-in two-light scene)" },
+    sceneOption(),
     { "model", "", "NAME", modelOptionHelp() },
     { "output", "o", "FILE", outputHelp("mesh to write; .vtp and .vtk keep the arrays", OutputKind::Mesh) },
     meshCompressionOption(),
@@ -103,6 +103,16 @@ namespace shadelab
 {
 namespace app
 {
+
+void checkFieldImageOptions(const CommandLine& cl, const std::vector<MeshJob>& jobs)
+{
+  checkSingleMeshOption(cl, "image", jobs);
+  checkOutputOption(cl, "image", { OutputKind::Image });
+  if (cl.has("fields") && !cl.has("image"))
+  {
+    throw UsageError("--fields: only with --image FILE (it chooses the arrays the image shows)");
+  }
+}
 
 void writeFieldImageIfAsked(const CommandLine& cl, vtkPolyData* mesh, slScene* scene, const std::string& defaultFields,
   const std::string& meshOutput)

@@ -8,6 +8,7 @@
  */
 
 #include "CommandLine.h"
+#include "MeshJobs.h"
 
 #include <vtkSmartPointer.h>
 
@@ -37,6 +38,11 @@ vtkSmartPointer<slScene> configureLitFilter(const CommandLine& cl, slLitFilter* 
 /// Updates @p filter; throws shadelab::Error with its one-line message on failure,
 /// "input mesh" replaced by @p meshPath.
 void runLitFilter(slLitFilter* filter, const std::string& meshPath);
+
+/// Before any work: --image names an image file and is given for one MESH
+/// of @p jobs only; --fields is given only with --image (it chooses what the
+/// image shows). Throws UsageError.
+void checkFieldImageOptions(const CommandLine& cl, const std::vector<MeshJob>& jobs);
 
 /// With --image FILE: renders the arrays named by --fields (comma-separated,
 /// default @p defaultFields) of @p mesh colour-mapped with scalar bars and the

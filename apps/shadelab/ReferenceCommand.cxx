@@ -75,7 +75,24 @@ int runReference(const std::vector<std::string>& args)
   }
   const std::string meshPath = cl.meshWithOutput();
   checkOutputOption(cl, "output", { OutputKind::Mesh });
-  checkOutputOption(cl, "image", { OutputKind::Image });
+  checkFieldImageOptions(cl, { { meshPath, cl.get("output") } });
+  // Each of these shapes a light source the command would not use.
+  if (cl.has("envmap-scale") && !cl.has("envmap"))
+  {
+    throw UsageError("--envmap-scale: only with --envmap FILE");
+  }
+  for (const char* option : { "light-radius", "sun-angle" })
+  {
+    if (cl.has(option) && cl.has("no-lights"))
+    {
+      throw UsageError(std::string("--") + option + ": the scene's lights are left out (--no-lights)");
+    }
+  }
+  // The filter reads 0 as "1% of the mesh diagonal"; given, a radius is a size.
+  if (cl.has("light-radius") && cl.getNumber("light-radius", 0.0, 0.0, 1e30) == 0.0)
+  {
+    throw UsageError("--light-radius: 0 is no sphere; give a radius above 0 (or leave it out for 1% of the mesh diagonal)");
+  }
   vtkNew<slRadianceReference> filter;
   vtkSmartPointer<slScene> scene = configureLitFilter(cl, filter);
   if (cl.has("envmap"))
@@ -85,8 +102,8 @@ int runReference(const std::vector<std::string>& args)
   filter->SetEnvironmentScale(cl.getNumber("envmap-scale", 1.0, 0.0, 1e6));
   filter->SetUseSceneLights(!cl.has("no-lights"));
   filter->SetStrategy(strategyNumber(cl.get("sampling", "mis")));
-  filter->SetSamplesPerPoint(static_cast<int>(cl.getNumber("samples", 64, 1, 1 << 24)));
-  filter->SetSeed(static_cast<int>(cl.getNumber("seed", 1, 0, 2147483647.0)));
+  filter->SetSamplesPerPoint(cl.getIndex("samples", 64, 1, 1 << 24));
+  filter->SetSeed(cl.getIndex("seed", 1, 0, 2147483647));
   filter->SetLightRadius(cl.getNumber("light-radius", 0.0, 0.0, 1e30));
   filter->SetDirectionalLightAngle(cl.getNumber("sun-angle", 0.5, 1e-4, 45.0));
   runOnMesh(meshPath, [&] {

@@ -159,7 +159,7 @@ void applyComponentOptions(const ComponentOptions& options, slLightingPass* pass
 int runRender(const std::vector<std::string>& args)
 {
   const std::vector<OptionSpec> specs = withMaterialOptions({
-    { "scene", "s", "FILE", "JSON scene (default: ShadeLab's built-in two-light scene)" },
+    sceneOption(),
     { "output", "o", "FILE", outputHelp("image to write", OutputKind::Image) },
     { "size", "", "WxH", "image size in pixels (default: the scene's imageSize)" },
     { "model", "", "NAME", modelOptionHelp() },
@@ -197,13 +197,9 @@ int runRender(const std::vector<std::string>& args)
   {
     throw Error(cl.get("scene") + ": " + lightProblem);
   }
-  // As cosine and lobe do: a light the scene does not have is an error, not
-  // a background-only image; exit 1, as it depends on the scene file.
-  if (components.light >= scene->GetNumberOfLights())
-  {
-    throw Error("option --light: light " + cl.get("light") + " is out of range: the scene has " +
-      std::to_string(scene->GetNumberOfLights()) + " lights");
-  }
+  // As cosine does: a light the scene does not have is an error, not a
+  // background-only image.
+  checkLightOption(cl, components.light, scene);
   int width = 0, height = 0;
   if (cl.has("size"))
   {

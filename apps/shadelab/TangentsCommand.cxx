@@ -38,7 +38,8 @@ int runTangents(const std::vector<std::string>& args)
               << meshFormatsText()
               << ") from its texture coordinates:\n"
                  "point array \"Tangents\" (xyz and handedness w = +-1, bitangent = w N x T).\n"
-                 "When MESH has no normals they are computed first (the normals options apply).\n\noptions:\n"
+                 "When MESH has no normals they are computed first, as the normals options say;\n"
+                 "MESH's own normals are kept (a normals option is then an error).\n\noptions:\n"
               << CommandLine::describe(specs);
     return 0;
   }
@@ -54,6 +55,18 @@ int runTangents(const std::vector<std::string>& args)
     {
       normals->SetInputData(mesh);
       mesh = runMeshFilter(normals, path);
+    }
+    else
+    {
+      // The mesh's own normals are kept: a normals option would change nothing.
+      for (const OptionSpec& spec : normalsOptionSpecs())
+      {
+        if (cl.has(spec.name))
+        {
+          throw Error(path + ": --" + spec.name +
+            ": the mesh has point normals, which tangents keep; the normals options apply only to a mesh without them");
+        }
+      }
     }
     vtkNew<slPolyDataTangents> tangents;
     tangents->SetInputData(mesh);

@@ -31,6 +31,18 @@ class LightingCommandsTest(unittest.TestCase):
             self.assertEqual(r.returncode, 0, command)
             self.assertIn("usage: shadelab " + command, r.stdout)
 
+    def test_scene_help_describes_the_built_in_scene(self):
+        # The built-in scene's lights, as cosine writes one CosTheta_<i> per light: key, fill, ambient.
+        r = run("cosine", SPOT, "--no-cells", "-o", self.out("c.vtk"))
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(self.out("c.vtk"), "rb") as f:
+            text = f.read()
+        self.assertEqual([text.count(b"CosThetaRaw_%d " % i) for i in range(4)], [1, 1, 1, 0])
+        for command in ("render", "compare", "cosine", "light", "reference"):
+            help_text = run(command, "--help").stdout
+            self.assertIn("built-in scene: key and fill lights in camera space, and an ambient light", help_text,
+                          command)
+
     def test_jobs_write_their_outputs(self):
         jobs = [
             ["cosine", SPOT, "-o", self.out("c.vtp")],
@@ -46,6 +58,42 @@ class LightingCommandsTest(unittest.TestCase):
             self.assertTrue(os.path.getsize(job[job.index("-o") + 1]) > 0, job)
         with open(self.out("albedo.csv")) as f:
             self.assertTrue(f.readline().startswith("IncidenceDegrees,lambert,phong"))
+
+    def test_scene_diffuse_texture_multiplies_k_d(self):
+        """material.diffuseTexture is the base colour of light's Diffuse, as render draws it: k_d * texel * N.L."""
+        import vtk
+        from vtk.util.numpy_support import vtk_to_numpy
+        image = vtk.vtkImageData()
+        image.SetDimensions(2, 2, 1)
+        image.AllocateScalars(vtk.VTK_UNSIGNED_CHAR, 3)
+        for i in range(4):
+            image.GetPointData().GetScalars().SetTuple3(i, 51, 102, 204)  # 0.2, 0.4, 0.8
+        writer = vtk.vtkPNGWriter()
+        writer.SetInputData(image)
+        writer.SetFileName(self.out("t.png"))
+        writer.Write()
+        quad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+        with open(self.out("uv.obj"), "w") as f:
+            f.write(quad + "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 2/2 3/3 4/4\n")
+        with open(self.out("plain.obj"), "w") as f:
+            f.write(quad + "f 1 2 3 4\n")
+        with open(self.out("s.json"), "w") as f:
+            f.write('{"shading": {"model": "lambert"}, "material": {"ambient": [0, 0, 0], "diffuse": [0.5, 0.5, 0.5], '
+                    '"specular": [0, 0, 0], "diffuseTexture": "t.png"}, '
+                    '"lights": [{"type": "directional", "direction": [0, -1, -1]}]}')
+        cos = 0.5 ** 0.5  # N = +z, L = (0, 1, 1) / sqrt(2)
+        # A mesh without texture coordinates render draws untextured: k_d alone.
+        for mesh, texel in (("uv.obj", (0.2, 0.4, 0.8)), ("plain.obj", (1.0, 1.0, 1.0))):
+            r = run("light", self.out(mesh), "--scene", self.out("s.json"), "-o", self.out("l.vtp"))
+            self.assertEqual(r.returncode, 0, r.stderr)
+            reader = vtk.vtkXMLPolyDataReader()
+            reader.SetFileName(self.out("l.vtp"))
+            reader.Update()
+            diffuse = vtk_to_numpy(reader.GetOutput().GetPointData().GetArray("Diffuse"))
+            self.assertEqual(diffuse.shape, (4, 3))
+            for point in diffuse:
+                for value, t in zip(point, texel):
+                    self.assertAlmostEqual(value, 0.5 * t * cos, places=5, msg=mesh)
 
     def test_bad_input_is_one_line_and_non_zero(self):
         bad = self.out("bad.hdr")

@@ -40,6 +40,7 @@
 
 class vtkActor;
 class vtkCamera;
+class vtkImageData;
 class vtkLight;
 class vtkLightCollection;
 class vtkProperty;
@@ -101,6 +102,13 @@ public:
 
   /// The diffuse texture resolved against the scene file's folder, or "".
   std::string GetDiffuseTexturePath() const;
+  /// Reads the material's diffuse texture (GetDiffuseTexturePath()) into
+  /// @p image, as it is stored (ApplyToActor() and slRadianceFilter each
+  /// make their own use of its values); @p image is left empty, and true
+  /// returned, when the scene has none. False, after vtkErrorMacro naming
+  /// the image, the reason and "material.diffuseTexture of FILE", if it
+  /// cannot be read.
+  bool ReadDiffuseTexture(vtkImageData* image);
   /// The .brdf file (brdf.file) resolved against the scene file's folder, or "".
   std::string GetBrdfFilePath() const;
 

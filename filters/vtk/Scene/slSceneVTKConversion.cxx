@@ -259,18 +259,17 @@ void slScene::ApplyToRenderer(vtkRenderer* renderer, const double bounds[6], int
   }
 }
 
-bool slScene::ApplyToActor(vtkActor* actor)
+bool slScene::ReadDiffuseTexture(vtkImageData* image)
 {
-  this->ApplyMaterial(actor->GetProperty());
+  image->Initialize();
   const std::string texturePath = this->GetDiffuseTexturePath();
   if (texturePath.empty())
   {
-    actor->SetTexture(nullptr);
     return true;
   }
   vtkNew<slImageReader> reader;
   reader->SetFileName(texturePath.c_str());
-  const bool read = slRunCore(this, [&] {
+  return slRunCore(this, [&] {
     try
     {
       slUpdateOrThrow(reader);
@@ -281,15 +280,27 @@ bool slScene::ApplyToActor(vtkActor* actor)
       throw shadelab::Error(std::string(e.what()) + " (material.diffuseTexture of " +
         (this->Data->sourceFile.empty() ? std::string("the scene") : this->Data->sourceFile) + ")");
     }
+    image->ShallowCopy(reader->GetOutput());
   });
-  if (!read)
+}
+
+bool slScene::ApplyToActor(vtkActor* actor)
+{
+  this->ApplyMaterial(actor->GetProperty());
+  if (this->GetDiffuseTexturePath().empty())
+  {
+    actor->SetTexture(nullptr);
+    return true;
+  }
+  vtkNew<vtkImageData> image;
+  if (!this->ReadDiffuseTexture(image))
   {
     return false;
   }
-  prepareTextureImage(reader->GetOutput());
+  prepareTextureImage(image);
   vtkNew<vtkTexture> texture;
   // The image, not the reader: it is read once and not again at a render.
-  texture->SetInputData(reader->GetOutput());
+  texture->SetInputData(image);
   // Unsigned char as v / 255, float as it is (see prepareTextureImage);
   // never through a lookup table.
   texture->SetColorModeToDirectScalars();
