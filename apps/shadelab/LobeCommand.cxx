@@ -174,7 +174,7 @@ std::vector<OptionSpec> lobeOptions()
   specs.push_back({ "cosine", "", "", "multiply the lobe by cos(theta_o)" });
   specs.push_back({ "slice", "", "FILE", "also write the polar slice in the plane of incidence (single lobe)" });
   specs.push_back({ "points", "", "N", "lobes on MESH: number of sampled points (default 16)" });
-  specs.push_back({ "light", "l", "INDEX", "lobes on MESH: the light giving the incident direction" });
+  specs.push_back({ "light", "l", "INDEX", "lobes on MESH: the light giving the incident direction (default: the first light that has one)" });
   specs.push_back({ "scale", "", "X", "lobes on MESH: largest lobe / bounding-box diagonal (default 0.1)" });
   specs.push_back({ "albedo-table", "", "", "write the directional albedo table of every model (CSV)" });
   specs.push_back({ "models", "", "A,B,...", "single lobe as an image: overlay these models (default: --model)" });
@@ -337,7 +337,10 @@ int runLobe(const std::vector<std::string>& args)
     vtkNew<slLobesOnMesh> lobes;
     vtkSmartPointer<slScene> scene = configureLitFilter(cl, lobes);
     lobes->SetNumberOfLobes(static_cast<int>(cl.getNumber("points", 16, 1, 100000)));
-    lobes->SetLightIndex(cl.getIndex("light", -1, -1, 1000000));
+    // -1, the first light with a direction, is the default only: --light names one.
+    const int light = cl.has("light") ? cl.getIndex("light", 0, 0, 1000000) : -1;
+    checkLightOption(cl, light, scene);
+    lobes->SetLightIndex(light);
     lobes->SetScale(cl.getNumber("scale", 0.1, 0.0, 100.0));
     lobes->SetMultiplyByCosine(cl.has("cosine"));
     runOnMesh(meshPath, [&] {
