@@ -164,7 +164,7 @@ int runRender(const std::vector<std::string>& args)
     { "size", "", "WxH", "image size in pixels (default: the scene's imageSize)" },
     { "model", "", "NAME", modelOptionHelp() },
     { "frequency", "", "NAME", "override the scene's shading frequency: flat, gouraud, phong" },
-    { "component", "", "NAME", "show only: ambient, diffuse, specular, emission or cos (N.L)" },
+    { "component", "", "NAME", "show only: ambient, diffuse, specular, emission or cos (N.L); total (default): the whole equation" },
     { "light", "", "K", "with --component ambient, diffuse, specular or cos: only light K (0-based; cos uses light 0 by default)" },
     { "false-color", "", "", "with --component (not total): false colour instead of grey/RGB" },
     { "brdf", "", "FILE", "shade with a BRDF Explorer .brdf file's BRDF instead of the model's (replaces the scene's brdf)" },
