@@ -15,6 +15,7 @@
 #include <vtkSmartPointer.h>
 
 #include <iostream>
+#include <sstream>
 
 namespace shadelab
 {
@@ -23,17 +24,37 @@ namespace app
 
 namespace
 {
+/// "MIN to MAX" of a clamped property.
+std::string rangeText(double low, double high)
+{
+  std::ostringstream text;
+  text << low << " to " << high;
+  return text.str();
+}
+
 int runDetail(const std::vector<std::string>& args)
 {
+  // The filters' own defaults and ranges (their vtkSetClampMacro), for the
+  // help and the checks alike.
+  vtkNew<slNormalMapFilter> normalMap;
+  vtkNew<slBumpMapFilter> bumpMap;
+  vtkNew<slDisplacementFilter> displacement;
+  std::ostringstream strengthHelp, scaleHelp;
+  strengthHelp << "normal-map strength, " << rangeText(normalMap->GetStrengthMinValue(), normalMap->GetStrengthMaxValue())
+               << " (default " << normalMap->GetStrength() << ")";
+  scaleHelp << "height scale: --bump-map " << rangeText(bumpMap->GetScaleMinValue(), bumpMap->GetScaleMaxValue())
+            << " (default " << bumpMap->GetScale() << "), --displace "
+            << rangeText(displacement->GetScaleMinValue(), displacement->GetScaleMaxValue()) << " (default "
+            << displacement->GetScale() << ")";
   const std::vector<OptionSpec> specs{
     { "output", "o", "FILE", outputHelp("mesh to write", OutputKind::Mesh) },
     meshCompressionOption(),
     { "normal-map", "", "IMG", "tangent-space normal map (OpenGL, green up)" },
     { "directx", "", "", "the normal map is DirectX (green down)" },
-    { "strength", "", "S", "normal-map strength, 0-10 (default 1)" },
+    { "strength", "", "S", strengthHelp.str() },
     { "bump-map", "", "IMG", "height image: normals from its gradient" },
     { "displace", "", "IMG", "height image: move points along their normals" },
-    { "scale", "", "S", "height scale for --bump-map / --displace (default 0.05)" },
+    { "scale", "", "S", scaleHelp.str() },
     { "invert", "", "", "height = 1 - value (depth maps, e.g. Bevy's)" },
     { "help", "h", "", "show this help" },
   };
@@ -74,25 +95,25 @@ int runDetail(const std::vector<std::string>& args)
   vtkSmartPointer<slPolyDataFilter> filter;
   if (cl.has("normal-map"))
   {
-    auto f = vtkSmartPointer<slNormalMapFilter>::New();
+    slNormalMapFilter* f = normalMap;
     f->SetFileName(cl.get("normal-map").c_str());
     f->SetGreenDown(cl.has("directx"));
-    f->SetStrength(cl.getNumber("strength", 1.0, 0.0, 10.0));
+    f->SetStrength(cl.getNumber("strength", f->GetStrength(), f->GetStrengthMinValue(), f->GetStrengthMaxValue()));
     filter = f;
   }
   else if (cl.has("bump-map"))
   {
-    auto f = vtkSmartPointer<slBumpMapFilter>::New();
+    slBumpMapFilter* f = bumpMap;
     f->SetFileName(cl.get("bump-map").c_str());
-    f->SetScale(cl.getNumber("scale", 0.05, -100.0, 100.0));
+    f->SetScale(cl.getNumber("scale", f->GetScale(), f->GetScaleMinValue(), f->GetScaleMaxValue()));
     f->SetInvertHeight(cl.has("invert"));
     filter = f;
   }
   else
   {
-    auto f = vtkSmartPointer<slDisplacementFilter>::New();
+    slDisplacementFilter* f = displacement;
     f->SetFileName(cl.get("displace").c_str());
-    f->SetScale(cl.getNumber("scale", 0.05, -1e6, 1e6));
+    f->SetScale(cl.getNumber("scale", f->GetScale(), f->GetScaleMinValue(), f->GetScaleMaxValue()));
     f->SetInvertHeight(cl.has("invert"));
     filter = f;
   }
