@@ -28,6 +28,7 @@
 #include <QTimer>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -70,7 +71,6 @@ BrdfPanel::BrdfPanel(ViewerDocument* document, SceneView* view, QWidget* parent)
   , Pending(new QTimer(this))
 {
   this->Pick->setCheckable(true);
-  this->Light->setRange(0, 15);
   this->Light->setPrefix(tr("light "));
   this->Info->setWordWrap(true);
   auto* layout = new QVBoxLayout(this);
@@ -87,7 +87,13 @@ BrdfPanel::BrdfPanel(ViewerDocument* document, SceneView* view, QWidget* parent)
   this->Pending->setSingleShot(true);
   this->Pending->setInterval(150);
   connect(this->Pending, &QTimer::timeout, this, &BrdfPanel::update);
-  connect(document, &ViewerDocument::sceneChanged, this, [this](int changes) {
+  // The light chooser goes from the scene's first light to its last.
+  const auto showLightCount = [this] {
+    this->Light->setMaximum(std::max(0, static_cast<int>(this->Document->scene().lights.size()) - 1));
+  };
+  showLightCount();
+  connect(document, &ViewerDocument::sceneChanged, this, [this, showLightCount](int changes) {
+    showLightCount();
     if (this->Point >= 0 && (changes & (MaterialChange | LightsChange | ShadingChange)))
     {
       this->Pending->start();

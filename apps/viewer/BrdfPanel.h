@@ -35,6 +35,8 @@ public:
   BrdfPanel(ViewerDocument* document, SceneView* view, QWidget* parent = nullptr);
 
   QPushButton* pickButton() const { return this->Pick; }
+  /// The light whose lobe is drawn: 0 to the scene's last light.
+  QSpinBox* lightBox() const { return this->Light; }
   /// Shows the lobe at the mesh point nearest to (x, y, z).
   void showLobeAt(double x, double y, double z);
   /// The picked point (index into the view's meshWithNormals()), or -1.

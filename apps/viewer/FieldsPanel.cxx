@@ -74,7 +74,6 @@ FieldsPanel::FieldsPanel(ViewerDocument* document, SceneView* view, QWidget* par
   {
     this->Field->addItem(tr(entry.label));
   }
-  this->Light->setRange(0, 15);
   this->Light->setToolTip(tr("The light whose N.L is shown"));
   this->Samples->setRange(1, 1 << 20);
   this->Samples->setValue(64);
@@ -119,19 +118,48 @@ FieldsPanel::FieldsPanel(ViewerDocument* document, SceneView* view, QWidget* par
   connect(this->Job, &ReferenceJob::progress, this->Progress, &QProgressBar::setValue);
   connect(this->Job, &ReferenceJob::finished, this, &FieldsPanel::referenceFinished);
   connect(document, &ViewerDocument::sceneChanged, this, [this](int changes) {
+    this->showLightCount();
     if (changes & (MaterialChange | LightsChange | ShadingChange | CameraChange))
     {
-      this->ReferenceStale = this->Reference != nullptr;
-      if (this->Field->currentIndex() > 0)
-      {
-        this->showField();
-      }
+      this->lightingChanged();
     }
   });
+  // Other normals (or tangents) light the mesh otherwise: the fields follow,
+  // computed on the mesh the view lights now (which the lit view makes).
+  const auto remeshed = [this] {
+    if (this->View->mode() == SceneView::FieldMode)
+    {
+      this->View->setMode(SceneView::LitMode);
+    }
+    this->lightingChanged();
+  };
+  connect(document, &ViewerDocument::normalsChanged, this, remeshed);
+  connect(document, &ViewerDocument::tangentsChanged, this, remeshed);
   connect(document, &ViewerDocument::meshChanged, this, [this] {
+    // A reference of the mesh that was shown is no field of this one, nor
+    // is one still being computed for it.
+    ++this->MeshGeneration;
+    this->Job->cancel();
     this->Reference = nullptr;
     this->Field->setCurrentIndex(0);
   });
+  this->showLightCount();
+}
+
+void FieldsPanel::showLightCount()
+{
+  const int count = static_cast<int>(this->Document->scene().lights.size());
+  this->Light->setMaximum(std::max(0, count - 1));
+}
+
+void FieldsPanel::lightingChanged()
+{
+  this->ReferenceStale = this->Reference != nullptr;
+  this->ChangedWhileRunning = this->Job->running();
+  if (this->Field->currentIndex() > 0)
+  {
+    this->showField();
+  }
 }
 
 FieldsPanel::~FieldsPanel()
@@ -171,8 +199,7 @@ void FieldsPanel::showField()
     if (entry.source == Source::Cosine)
     {
       auto cosine = vtkSmartPointer<slCosineField>::New();
-      cosine->SetLightIndex(std::min(this->Light->value(), std::max(0, this->Document->scene().lights.empty() ? 0 :
-        static_cast<int>(this->Document->scene().lights.size()) - 1)));
+      cosine->SetLightIndex(this->Light->value()); // the box's range is the scene's lights
       filter = cosine;
     }
     else
@@ -211,6 +238,8 @@ void FieldsPanel::startReference()
   settings.environmentMap = this->Environment->text();
   if (this->Job->start(mesh, this->Document->scene(), this->View->camera(), settings))
   {
+    this->JobMeshGeneration = this->MeshGeneration;
+    this->ChangedWhileRunning = false;
     this->Compute->setEnabled(false);
     this->Cancel->setEnabled(true);
     this->Progress->setValue(0);
@@ -222,6 +251,12 @@ void FieldsPanel::referenceFinished(const QString& error)
 {
   this->Compute->setEnabled(true);
   this->Cancel->setEnabled(false);
+  if (this->JobMeshGeneration != this->MeshGeneration)
+  {
+    this->Progress->setValue(0);
+    this->Status->setText(tr("Another mesh was opened: compute its reference."));
+    return;
+  }
   if (!error.isEmpty())
   {
     this->Progress->setValue(0);
@@ -233,7 +268,7 @@ void FieldsPanel::referenceFinished(const QString& error)
     return;
   }
   this->Reference = this->Job->result();
-  this->ReferenceStale = false;
+  this->ReferenceStale = this->ChangedWhileRunning;
   this->Status->setText(tr("Reference done."));
   if (kFields[this->Field->currentIndex()].source != Source::Reference)
   {

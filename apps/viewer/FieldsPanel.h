@@ -9,9 +9,10 @@
  *
  * Fields come from slCosineField, slRadianceFilter and slRadianceReference on
  * the view's mesh and normals, with the view's camera as the eye, and are
- * recomputed when the scene changes. The reference runs as a ReferenceJob:
- * a progress bar, a cancel button, and a note when the scene has changed
- * since it was computed.
+ * recomputed when the scene, the normals or the mesh's tangents change. The
+ * reference runs as a ReferenceJob: a progress bar, a cancel button, and a
+ * note when the scene has changed since it was computed (or while it was).
+ * A reference still running when another mesh is opened is dropped.
  */
 
 #include <vtkSmartPointer.h>
@@ -47,6 +48,10 @@ public:
   QPushButton* computeButton() const { return this->Compute; }
   QPushButton* cancelButton() const { return this->Cancel; }
   QProgressBar* progressBar() const { return this->Progress; }
+  /// The light whose N.L is shown: 0 to the scene's last light.
+  QSpinBox* lightBox() const { return this->Light; }
+  /// The reference's state: computing, done, stale, discarded.
+  QLabel* statusLabel() const { return this->Status; }
   ReferenceJob* job() const { return this->Job; }
   /// The last reference output, or null.
   vtkPolyData* reference() const;
@@ -56,6 +61,10 @@ signals:
 
 private:
   void showField();
+  void showLightCount();
+  /// The scene, normals or tangents changed: a shown field is recomputed, a
+  /// reference (computed or being computed) is stale.
+  void lightingChanged();
   void startReference();
   void referenceFinished(const QString& error);
 
@@ -73,6 +82,9 @@ private:
   ReferenceJob* Job;
   vtkSmartPointer<vtkPolyData> Reference;
   bool ReferenceStale = false;
+  bool ChangedWhileRunning = false; ///< the running job's result is stale
+  int MeshGeneration = 0;           ///< counts the meshes opened
+  int JobMeshGeneration = 0;        ///< MeshGeneration when the job started
 };
 
 } // namespace viewer

@@ -5,16 +5,25 @@
 #include "SceneView.h"
 #include "ViewerDocument.h"
 
+#include "slLightingPass.h"
+
+#include "shadelab/SceneKeys.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
+#include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
 #include <QMenu>
 #include <QPushButton>
 #include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace shadelab
 {
@@ -23,6 +32,10 @@ namespace viewer
 
 namespace
 {
+/// Decimals of every light spin box: what the panel shows and what can be
+/// typed. A value read from a file keeps all its digits until it is edited.
+constexpr int kDecimals = 4;
+
 QString describe(const SceneLight& light, size_t index)
 {
   const QString name = light.name.empty() ? QString("light %1").arg(index) : QString::fromStdString(light.name);
@@ -30,27 +43,28 @@ QString describe(const SceneLight& light, size_t index)
     .arg(name, lightTypeName(light.type), light.space == LightSpace::Camera ? ", camera" : "");
 }
 
-QHBoxLayout* rowOf(QDoubleSpinBox* const (&boxes)[3])
+/// A spin box over a key's range. Its size hint ignores the range: an
+/// unbounded key (a position) would otherwise ask for the width of
+/// 3.4e38 written out.
+class KeySpinBox : public QDoubleSpinBox
 {
-  auto* row = new QHBoxLayout;
-  for (QDoubleSpinBox* box : boxes)
+public:
+  using QDoubleSpinBox::QDoubleSpinBox;
+  QSize sizeHint() const override
   {
-    row->addWidget(box);
+    const QSize hint = QDoubleSpinBox::sizeHint();
+    return QSize(std::min(hint.width(), this->fontMetrics().horizontalAdvance("-000000.0000") + 24), hint.height());
   }
-  return row;
+  QSize minimumSizeHint() const override { return this->sizeHint(); }
+};
+
+/// A range end as a spin box can hold it: scene values are floats.
+double finiteEnd(double end)
+{
+  const double largest = std::numeric_limits<float>::max();
+  return std::max(-largest, std::min(largest, end));
 }
 } // namespace
-
-QDoubleSpinBox* LightPanel::spinBox(double minimum, double maximum, int decimals)
-{
-  auto* box = new QDoubleSpinBox(this->Editor);
-  box->setRange(minimum, maximum);
-  box->setDecimals(decimals);
-  box->setSingleStep(maximum > 100.0 ? 0.1 : 0.05);
-  box->setKeyboardTracking(false);
-  connect(box, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, &LightPanel::editLight);
-  return box;
-}
 
 LightPanel::LightPanel(ViewerDocument* document, SceneView* view, QWidget* parent)
   : QWidget(parent)
@@ -60,9 +74,8 @@ LightPanel::LightPanel(ViewerDocument* document, SceneView* view, QWidget* paren
   , Remove(new QPushButton(tr("Remove"), this))
   , ShowWidgets(new QCheckBox(tr("Show and drag lights in the view"), this))
   , Editor(new QWidget(this))
-  , Name(new QLineEdit(this->Editor))
+  , Form(new QFormLayout(this->Editor))
   , Type(new QComboBox(this->Editor))
-  , Space(new QComboBox(this->Editor))
 {
   auto* layout = new QVBoxLayout(this);
   layout->addWidget(this->List, 1);
@@ -81,68 +94,143 @@ LightPanel::LightPanel(ViewerDocument* document, SceneView* view, QWidget* paren
     this->Type->addItem(name);
   }
   this->Add->setMenu(addMenu);
-  for (const std::string& space : lightSpaceNames())
-  {
-    this->Space->addItem(QString::fromStdString(space));
-  }
 
-  auto* form = new QFormLayout(this->Editor);
-  form->setContentsMargins(0, 0, 0, 0);
-  form->addRow(tr("Name"), this->Name);
-  form->addRow(tr("Type"), this->Type);
-  form->addRow(tr("Space"), this->Space);
-  const char* const colourNames[3] = { "Ambient", "Diffuse", "Specular" };
-  for (int k = 0; k < 3; ++k)
+  this->Form->setContentsMargins(0, 0, 0, 0);
+  this->Form->addRow(tr("type"), this->Type);
+  for (size_t key = 0; key < lightKeys().size(); ++key)
   {
-    this->Colours[k] = new ColorButton(this->Editor);
-    form->addRow(tr(colourNames[k]), this->Colours[k]);
-    connect(this->Colours[k], &ColorButton::valueChanged, this, &LightPanel::editLight);
+    this->addRow(key);
   }
-  this->Intensity = this->spinBox(0.0, 1.0e4, 3);
-  form->addRow(tr("Intensity"), this->Intensity);
-  for (int i = 0; i < 3; ++i)
-  {
-    this->Attenuation[i] = this->spinBox(0.0, 1.0e4, 4);
-    this->Position[i] = this->spinBox(-1.0e6, 1.0e6, 3);
-    this->Direction[i] = this->spinBox(-1.0e6, 1.0e6, 3);
-  }
-  form->addRow(tr("Attenuation c1 c2 c3"), rowOf(this->Attenuation));
-  this->Cutoff = this->spinBox(0.1, 90.0, 1);
-  this->Exponent = this->spinBox(0.0, 1000.0, 2);
-  this->Edge = this->spinBox(0.0, 90.0, 1);
-  form->addRow(tr("Spot cutoff (deg)"), this->Cutoff);
-  form->addRow(tr("Spot exponent"), this->Exponent);
-  form->addRow(tr("Spot smooth edge (deg)"), this->Edge);
-  form->addRow(tr("Position"), rowOf(this->Position));
-  form->addRow(tr("Direction"), rowOf(this->Direction));
 
   this->ShowWidgets->setChecked(view->lightWidgets()->enabled());
   connect(this->ShowWidgets, &QCheckBox::toggled, view, &SceneView::setLightWidgets);
   connect(this->Remove, &QPushButton::clicked, this, &LightPanel::removeSelectedLight);
   connect(this->List, &QListWidget::currentRowChanged, this, &LightPanel::showLight);
-  connect(this->Name, &QLineEdit::editingFinished, this, &LightPanel::editLight);
-  connect(this->Type, QOverload<int>::of(&QComboBox::currentIndexChanged), this, &LightPanel::editLight);
-  connect(this->Space, QOverload<int>::of(&QComboBox::currentIndexChanged), this, &LightPanel::editLight);
+  connect(this->Type, QOverload<int>::of(&QComboBox::currentIndexChanged), this, &LightPanel::editType);
   connect(document, &ViewerDocument::sceneChanged, this, &LightPanel::showScene);
   this->showScene();
+}
+
+void LightPanel::addRow(size_t key)
+{
+  const SceneKey<SceneLight>& k = lightKeys()[key];
+  Row row;
+  row.key = key;
+  const size_t index = this->Rows.size();
+  const auto spinBox = [this, &k, index] {
+    auto* box = new KeySpinBox(this->Editor);
+    box->setDecimals(kDecimals);
+    // An open end is the nearest value the box can hold inside it (a cutoff above 0).
+    const double step = std::pow(10.0, -kDecimals);
+    box->setRange(finiteEnd(k.lo + (k.openLo ? step : 0.0)), finiteEnd(k.hi - (k.openHi ? step : 0.0)));
+    box->setSingleStep(k.hi - k.lo > 50.0 && k.hi - k.lo <= 1e4 ? 1.0 : 0.05); // degrees, exponents: whole steps
+    box->setKeyboardTracking(false);
+    connect(box, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this, index] { this->editKey(index); });
+    return box;
+  };
+  switch (k.kind)
+  {
+    case SceneKeyKind::Text:
+      row.text = new QLineEdit(this->Editor);
+      row.editor = row.text;
+      connect(row.text, &QLineEdit::editingFinished, this, [this, index] { this->editKey(index); });
+      break;
+    case SceneKeyKind::Space:
+      row.space = new QComboBox(this->Editor);
+      for (const std::string& space : lightSpaceNames())
+      {
+        row.space->addItem(QString::fromStdString(space));
+      }
+      row.editor = row.space;
+      connect(row.space, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this, index] { this->editKey(index); });
+      break;
+    case SceneKeyKind::Number:
+      row.number = spinBox();
+      row.editor = row.number;
+      break;
+    case SceneKeyKind::Colour:
+      row.colour = new ColorButton(this->Editor);
+      row.editor = row.colour;
+      connect(row.colour, &ColorButton::valueChanged, this, [this, index] { this->editKey(index); });
+      break;
+    case SceneKeyKind::Point:
+    case SceneKeyKind::Direction:
+    case SceneKeyKind::Coefficients:
+    {
+      row.editor = new QWidget(this->Editor);
+      auto* line = new QHBoxLayout(row.editor);
+      line->setContentsMargins(0, 0, 0, 0);
+      for (QDoubleSpinBox*& box : row.components)
+      {
+        box = spinBox();
+        line->addWidget(box);
+      }
+      break;
+    }
+    case SceneKeyKind::Parameters:
+      return; // not a light's
+  }
+  const QString what = k.what ? QString::fromUtf8(k.what) : QString();
+  row.editor->setToolTip(what);
+  this->Form->addRow(QString::fromUtf8(k.name), row.editor);
+  this->Form->labelForField(row.editor)->setToolTip(what);
+  this->Rows.push_back(row);
+}
+
+const LightPanel::Row* LightPanel::rowOf(const QString& key) const
+{
+  for (const Row& row : this->Rows)
+  {
+    if (key == QString::fromUtf8(lightKeys()[row.key].name))
+    {
+      return &row;
+    }
+  }
+  return nullptr;
+}
+
+QWidget* LightPanel::editor(const QString& key) const
+{
+  const Row* row = this->rowOf(key);
+  return row ? row->editor : nullptr;
+}
+
+QDoubleSpinBox* LightPanel::numberBox(const QString& key) const
+{
+  const Row* row = this->rowOf(key);
+  return row ? row->number : nullptr;
+}
+
+QDoubleSpinBox* LightPanel::componentBox(const QString& key, int i) const
+{
+  const Row* row = this->rowOf(key);
+  return row && i >= 0 && i < 3 ? row->components[i] : nullptr;
+}
+
+ColorButton* LightPanel::colourButton(const QString& key) const
+{
+  const Row* row = this->rowOf(key);
+  return row ? row->colour : nullptr;
 }
 
 void LightPanel::addLight(const QString& typeName)
 {
   Scene scene = this->Document->scene();
-  SceneLight light;
-  parseLightTypeName(typeName.toStdString(), light.type);
-  light.name = typeName.toStdString() + " " + std::to_string(scene.lights.size());
-  if (!lightTakes(light.type, kLightDiffuse))
+  LightType type = LightType::Directional;
+  if (!parseLightTypeName(typeName.toStdString(), type) ||
+    !slLightingPass::GetLightCountProblem(static_cast<int>(scene.lights.size()) + 1).empty())
   {
-    // It lights k_a only.
-    light.ambient = glm::vec3(0.1f);
-    light.diffuse = light.specular = glm::vec3(0.0f);
+    return;
   }
-  // A camera light from above the viewer's right shoulder: visible at once.
-  light.space = LightSpace::Camera;
-  light.position = glm::vec3(0.5f, 0.5f, 1.0f);
-  light.direction = -light.position;
+  SceneLight light = defaultLight(type);
+  light.name = typeName.toStdString() + " " + std::to_string(scene.lights.size());
+  if (lightTakes(type, kLightSpace))
+  {
+    // A camera light from above the viewer's right shoulder: visible at once.
+    light.space = LightSpace::Camera;
+    light.position = glm::vec3(0.5f, 0.5f, 1.0f);
+    light.direction = -light.position;
+  }
   scene.lights.push_back(light);
   this->Document->setScene(scene, LightsChange);
   this->List->setCurrentRow(static_cast<int>(scene.lights.size()) - 1);
@@ -172,6 +260,8 @@ void LightPanel::showScene()
   }
   this->Showing = false;
   const int count = static_cast<int>(scene.lights.size());
+  // The pass draws a limited number of lights: no more can be added.
+  this->Add->setEnabled(slLightingPass::GetLightCountProblem(count + 1).empty());
   this->List->setCurrentRow(count == 0 ? -1 : std::min(std::max(row, 0), count - 1));
   this->showLight(this->List->currentRow());
 }
@@ -188,30 +278,41 @@ void LightPanel::showLight(int index)
   }
   const SceneLight& l = scene.lights[static_cast<size_t>(index)];
   this->Showing = true;
-  this->Name->setText(QString::fromStdString(l.name));
   this->Type->setCurrentText(lightTypeName(l.type));
-  this->Space->setCurrentText(lightSpaceName(l.space));
-  this->Colours[0]->setValue(l.ambient);
-  this->Colours[1]->setValue(l.diffuse);
-  this->Colours[2]->setValue(l.specular);
-  this->Intensity->setValue(l.intensity);
-  for (int i = 0; i < 3; ++i)
+  for (const Row& row : this->Rows)
   {
-    this->Attenuation[i]->setValue(l.attenuation[i]);
-    this->Position[i]->setValue(l.position[i]);
-    this->Direction[i]->setValue(l.direction[i]);
+    const SceneKey<SceneLight>& key = lightKeys()[row.key];
+    if (row.text)
+    {
+      row.text->setText(QString::fromStdString(l.*(key.text)));
+    }
+    else if (row.space)
+    {
+      row.space->setCurrentText(lightSpaceName(l.*(key.space)));
+    }
+    else if (row.number)
+    {
+      row.number->setMaximum(finiteEnd(keyUpperLimit(key, l))); // the edge's is the cutoff
+      row.number->setValue(l.*(key.number));
+    }
+    else if (row.colour)
+    {
+      row.colour->setValue(l.*(key.vector));
+    }
+    else
+    {
+      for (int i = 0; i < 3; ++i)
+      {
+        row.components[i]->setValue((l.*(key.vector))[i]);
+      }
+    }
+    // Live for the light types that take the key (LightingTables.h).
+    row.editor->setEnabled(lightTakesKey(l.type, key));
   }
-  this->Cutoff->setValue(l.cutoffDegrees);
-  this->Exponent->setValue(l.exponent);
-  this->Edge->setValue(l.edgeDegrees);
-  // Each control is live for the light types that take its value (LightingTables.h).
-  this->Cutoff->setEnabled(lightTakes(l.type, kLightCutoff));
-  this->Exponent->setEnabled(lightTakes(l.type, kLightExponent));
-  this->Edge->setEnabled(lightTakes(l.type, kLightEdge));
   this->Showing = false;
 }
 
-void LightPanel::editLight()
+void LightPanel::editType()
 {
   const int index = this->List->currentRow();
   Scene scene = this->Document->scene();
@@ -219,34 +320,61 @@ void LightPanel::editLight()
   {
     return;
   }
-  SceneLight& l = scene.lights[static_cast<size_t>(index)];
-  const LightType typeBefore = l.type;
-  l.name = this->Name->text().toStdString();
-  parseLightTypeName(this->Type->currentText().toStdString(), l.type);
-  parseLightSpaceName(this->Space->currentText().toStdString(), l.space);
-  l.ambient = this->Colours[0]->value();
-  l.diffuse = this->Colours[1]->value();
-  l.specular = this->Colours[2]->value();
-  l.intensity = static_cast<float>(this->Intensity->value());
-  for (int i = 0; i < 3; ++i)
-  {
-    l.attenuation[i] = static_cast<float>(this->Attenuation[i]->value());
-    l.position[i] = static_cast<float>(this->Position[i]->value());
-    l.direction[i] = static_cast<float>(this->Direction[i]->value());
-  }
-  // Scene files require c1 + c2 + c3 > 0 and edge <= cutoff; keep the light valid.
-  if (l.attenuation[0] + l.attenuation[1] + l.attenuation[2] <= 0.0f)
-  {
-    l.attenuation[0] = 1.0f;
-  }
-  l.cutoffDegrees = static_cast<float>(this->Cutoff->value());
-  l.exponent = static_cast<float>(this->Exponent->value());
-  l.edgeDegrees = std::min(static_cast<float>(this->Edge->value()), l.cutoffDegrees);
+  parseLightTypeName(this->Type->currentText().toStdString(), scene.lights[static_cast<size_t>(index)].type);
   this->Document->setScene(scene, LightsChange);
-  if (l.type != typeBefore)
+}
+
+void LightPanel::editKey(size_t rowIndex)
+{
+  const int index = this->List->currentRow();
+  Scene scene = this->Document->scene();
+  if (this->Showing || index < 0 || index >= static_cast<int>(scene.lights.size()))
   {
-    this->showLight(index);
+    return;
   }
+  const Row& row = this->Rows[rowIndex];
+  const SceneKey<SceneLight>& key = lightKeys()[row.key];
+  SceneLight& l = scene.lights[static_cast<size_t>(index)];
+  if (row.text)
+  {
+    l.*(key.text) = row.text->text().toStdString();
+  }
+  else if (row.space)
+  {
+    parseLightSpaceName(row.space->currentText().toStdString(), l.*(key.space));
+  }
+  else if (row.number)
+  {
+    l.*(key.number) = static_cast<float>(row.number->value());
+  }
+  else if (row.colour)
+  {
+    l.*(key.vector) = row.colour->value();
+  }
+  else
+  {
+    glm::vec3 value;
+    for (int i = 0; i < 3; ++i)
+    {
+      value[i] = static_cast<float>(row.components[i]->value());
+    }
+    if (key.kind == SceneKeyKind::Direction && !(glm::length(value) > 0.0f))
+    {
+      // No direction to travel along, and no scene file may hold it: keep the last one.
+      this->showLight(index);
+      return;
+    }
+    l.*(key.vector) = value;
+  }
+  // A value bounded by another (a spot's edge by its cutoff) stays within it.
+  for (const SceneKey<SceneLight>& bounded : lightKeys())
+  {
+    if (bounded.upTo && bounded.number)
+    {
+      l.*(bounded.number) = std::min(l.*(bounded.number), l.*(bounded.upTo));
+    }
+  }
+  this->Document->setScene(scene, LightsChange);
 }
 
 } // namespace viewer

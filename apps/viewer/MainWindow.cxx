@@ -15,6 +15,7 @@
 #include "slUpdateOrThrow.h"
 
 #include <vtkImageData.h>
+#include <vtkSmartPointer.h>
 #include <vtkNew.h>
 
 #include <QDockWidget>
@@ -22,6 +23,7 @@
 #include <QDropEvent>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QImage>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
@@ -29,6 +31,7 @@
 #include <QStatusBar>
 #include <QUrl>
 
+#include <algorithm>
 #include <iterator>
 
 namespace shadelab
@@ -56,6 +59,23 @@ QString meshFilter()
     patterns << "*" + ext;
   }
   return QObject::tr("Meshes (%1);;Scenes (*.json);;BRDF Explorer BRDFs (*.brdf);;All files (*)").arg(patterns.join(' '));
+}
+
+/// @p image as RGB unsigned char image data, row 0 at the bottom (as VTK's captures).
+vtkSmartPointer<vtkImageData> toImageData(const QImage& image)
+{
+  const QImage rgb = image.convertToFormat(QImage::Format_RGB888);
+  auto out = vtkSmartPointer<vtkImageData>::New();
+  out->SetDimensions(rgb.width(), rgb.height(), 1);
+  out->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* pixels = static_cast<unsigned char*>(out->GetScalarPointer());
+  const size_t row = 3 * static_cast<size_t>(rgb.width());
+  for (int y = 0; y < rgb.height(); ++y)
+  {
+    std::copy(rgb.constScanLine(rgb.height() - 1 - y), rgb.constScanLine(rgb.height() - 1 - y) + row,
+      pixels + row * static_cast<size_t>(y));
+  }
+  return out;
 }
 
 bool fail(const QString& message, QString* error)
@@ -182,13 +202,24 @@ bool MainWindow::saveScene(const QString& path, QString* error)
 
 bool MainWindow::saveScreenshot(const QString& path, QString* error)
 {
+  // The capture throws rather than hand over a picture it could not draw.
+  return this->writeImage([this] { return this->View->grabImage(); }, path, error);
+}
+
+bool MainWindow::saveWindowScreenshot(const QString& path, QString* error)
+{
+  return this->writeImage([this] { return toImageData(this->grab().toImage()); }, path, error);
+}
+
+bool MainWindow::writeImage(const std::function<vtkSmartPointer<vtkImageData>()>& capture, const QString& path,
+  QString* error)
+{
   vtkNew<slImageWriter> writer;
   const QByteArray file = path.toLocal8Bit();
   writer->SetFileName(file.constData());
   try
   {
-    // The capture throws rather than hand over a picture it could not draw.
-    writer->SetInputData(this->View->grabImage());
+    writer->SetInputData(capture());
     slCallOrThrow(writer, [&] { return writer->Write(); });
   }
   catch (const shadelab::Error& e)

@@ -13,7 +13,13 @@
  * command-line tools print; nothing already loaded is lost.
  */
 
+#include <vtkSmartPointer.h>
+
 #include <QMainWindow>
+
+#include <functional>
+
+class vtkImageData;
 
 namespace shadelab
 {
@@ -42,6 +48,8 @@ public:
   bool saveScene(const QString& path, QString* error = nullptr);
   /// Writes the view as PNG, EXR or any format OpenImageIO writes.
   bool saveScreenshot(const QString& path, QString* error = nullptr);
+  /// Writes the whole window, panels included, the same way.
+  bool saveWindowScreenshot(const QString& path, QString* error = nullptr);
   /// Sets the size of the 3D view in pixels (the scene's imageSize to match `shadelab render`).
   void setViewSize(int width, int height);
   /// Brings the panel titled @p name (any case) to the front; false if there is none.
@@ -68,6 +76,9 @@ protected:
 
 private:
   void buildMenus();
+  /// Writes what @p capture returns to @p path (slImageWriter: atomic, the
+  /// format by extension); a problem goes to the status bar and @p error.
+  bool writeImage(const std::function<vtkSmartPointer<vtkImageData>()>& capture, const QString& path, QString* error);
   void showProblem(const QString& message);
   void updateTitle();
 

@@ -133,6 +133,11 @@ void SceneView::setField(vtkPolyData* mesh, const QString& arrayName)
   this->rebuild(true);
 }
 
+vtkPolyData* SceneView::fieldMesh() const
+{
+  return this->FieldMesh;
+}
+
 void SceneView::setNormalGlyphs(bool shown)
 {
   this->ShowNormals = shown;

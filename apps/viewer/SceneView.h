@@ -72,6 +72,8 @@ public:
   /// Field mode shows point (or cell) array @p arrayName of @p mesh.
   void setField(vtkPolyData* mesh, const QString& arrayName);
   QString fieldName() const { return this->FieldName; }
+  /// The mesh whose field is shown, or null.
+  vtkPolyData* fieldMesh() const;
 
   /// Normals as line glyphs (length 3% of the mesh's diagonal).
   void setNormalGlyphs(bool shown);

@@ -1,5 +1,6 @@
 #include "ViewerDocument.h"
 
+#include "slLightingPass.h"
 #include "slLitFilter.h"
 #include "slMeshReader.h"
 #include "slPolyDataTangents.h"
@@ -7,6 +8,7 @@
 #include "slUpdateOrThrow.h"
 
 #include "shadelab/BrdfFile.h"
+#include "shadelab/Error.h"
 #include "shadelab/DefaultScene.h"
 
 #include <vtkDataArray.h>
@@ -57,6 +59,12 @@ bool ViewerDocument::openScene(const QString& path, QString& error)
   try
   {
     slCallOrThrow(read, [&] { return read->ReadFile(file.constData()); });
+    // As `shadelab render`: the pass would leave the last lights out of the picture.
+    const std::string tooMany = slLightingPass::GetLightCountProblem(read->GetNumberOfLights());
+    if (!tooMany.empty())
+    {
+      throw Error(file.toStdString() + ": " + tooMany);
+    }
   }
   catch (const shadelab::Error& e)
   {

@@ -57,7 +57,8 @@ public:
   /// Reads a mesh (OBJ, PLY, STL, VTP, VTK, OFF, glTF). False, with the
   /// reader's one-line @p error, if it cannot; the current mesh stays.
   bool openMesh(const QString& path, QString& error);
-  /// Reads a JSON scene. False with @p error (file: key: problem) if invalid.
+  /// Reads a JSON scene. False with @p error (file: key: problem) if invalid,
+  /// or if it has more lights than the lighting pass draws.
   bool openScene(const QString& path, QString& error);
   /// Reads a BRDF Explorer .brdf file and makes it the scene's BRDF, its
   /// parameters at their defaults (a ShadingChange). False with the

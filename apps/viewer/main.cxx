@@ -66,7 +66,7 @@ int main(int argc, char** argv)
   const QCommandLineOption shotOption(
     "screenshot", "render the view at the scene's image size, write it (PNG, EXR, ...) and quit", "FILE");
   const QCommandLineOption windowShotOption(
-    "window-screenshot", "write a picture of the whole window, panels included, and quit", "FILE");
+    "window-screenshot", "write a picture of the whole window, panels included (PNG, EXR, ...), and quit", "FILE");
   const QCommandLineOption panelOption(
     "panel", "raise a panel: " + listWithOr(shadelab::viewer::MainWindow::panelNames()) + " (any case)", "NAME");
   const QCommandLineOption splitOption("split", "start in the split view flat | Gouraud | Phong");
@@ -119,14 +119,17 @@ int main(int argc, char** argv)
   {
     return fail("give at most one mesh (got " + QString::number(positional.size()) + ")");
   }
-  if (parser.isSet(shotOption))
+  for (const QCommandLineOption& option : { shotOption, windowShotOption })
   {
-    // Before anything is loaded or rendered.
-    const QByteArray shot = parser.value(shotOption).toLocal8Bit();
-    const std::string problem = slFormatProblem(shot.constData(), "image", slImageWriter::GetSupportedExtensions());
-    if (!problem.empty())
+    if (parser.isSet(option))
     {
-      return fail(parser.value(shotOption) + ": " + QString::fromStdString(problem));
+      // Before anything is loaded or rendered.
+      const QByteArray shot = parser.value(option).toLocal8Bit();
+      const std::string problem = slFormatProblem(shot.constData(), "image", slImageWriter::GetSupportedExtensions());
+      if (!problem.empty())
+      {
+        return fail(parser.value(option) + ": " + QString::fromStdString(problem));
+      }
     }
   }
   const bool defaults = positional.isEmpty() && !parser.isSet(sceneOption);
@@ -164,9 +167,9 @@ int main(int argc, char** argv)
       status = fail(error);
     }
     window.view()->renderNow(); // with the light widgets, which the view screenshot leaves out
-    if (parser.isSet(windowShotOption) && !window.grab().save(parser.value(windowShotOption)))
+    if (parser.isSet(windowShotOption) && !window.saveWindowScreenshot(parser.value(windowShotOption), &error))
     {
-      status = fail(parser.value(windowShotOption) + ": cannot write the window picture");
+      status = fail(error);
     }
     QApplication::quit();
   });

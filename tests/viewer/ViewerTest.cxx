@@ -16,6 +16,7 @@
 #include "SceneView.h"
 #include "ShadingPanel.h"
 #include "ViewerDocument.h"
+#include "ColorButton.h"
 
 #include "ImageComparison.h"
 
@@ -23,6 +24,7 @@
 #include "slLitFilter.h"
 #include "slMeshReader.h"
 #include "slLightingPass.h"
+#include "slRenderNormals.h"
 #include "slScene.h"
 #include "slSceneRenderer.h"
 #include "VTKErrors.h"
@@ -49,7 +51,9 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFile>
+#include <QDoubleSpinBox>
 #include <QLabel>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QMimeData>
 #include <QDir>
@@ -179,6 +183,289 @@ private:
   Rgb grab() { return toRgb(this->Window->view()->grabImage()); }
 
 private slots:
+
+
+  void lightEditWritesOnlyThatValue()
+  {
+    // A light with values the panel shows rounded, or that lie beyond what a
+    // hand-picked spin box range would hold, and no attenuation (all zero).
+    QFile file(this->path("precise.json"));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({ "imageSize": [320, 240], "lights": [ { "name": "lamp", "type": "spot",
+      "position": [0.123456, 1.234567, 2.5], "direction": [-0.1, -0.4, -1], "intensity": 20000, "cutoff": 22.25,
+      "edge": 2.125, "exponent": 5000, "attenuation": [0, 0, 0], "diffuse": [1, 1, 1], "specular": [0.3, 0.3, 0.3] } ] })");
+    file.close();
+    QString error;
+    QVERIFY2(this->Window->openFile(this->path("precise.json"), &error), qPrintable(error));
+    LightPanel* panel = this->Window->lightPanel();
+    QCOMPARE(panel->list()->currentRow(), 0);
+    const SceneLight original = this->Window->document()->scene().lights[0];
+
+    // Every number's control takes the scene format's range (lightKeys()).
+    for (const SceneKey<SceneLight>& key : lightKeys())
+    {
+      if (key.number)
+      {
+        QDoubleSpinBox* box = panel->numberBox(key.name);
+        QVERIFY2(box != nullptr, key.name);
+        QCOMPARE(box->maximum(), keyUpperLimit(key, original));
+        QVERIFY2(key.openLo ? box->minimum() > key.lo && box->minimum() < key.lo + 1e-3 : box->minimum() == key.lo,
+          key.name);
+        QVERIFY2(std::abs(box->value() - original.*(key.number)) < 1e-3, key.name);
+      }
+    }
+
+    // Halve the light's diffuse colour: that, and only that, changes.
+    panel->colourButton("diffuse")->slider()->setValue(500);
+    Scene expected = this->Window->document()->scene();
+    expected.lights[0] = original;
+    expected.lights[0].diffuse = glm::vec3(0.5f);
+    vtkNew<slScene> expectedScene;
+    expectedScene->SetScene(expected);
+    QCOMPARE(this->Window->document()->vtkScene()->ToJSON(), expectedScene->ToJSON());
+    // So does a new name.
+    auto* name = qobject_cast<QLineEdit*>(panel->editor("name"));
+    QVERIFY(name != nullptr);
+    name->setText("key");
+    emit name->editingFinished();
+    expected.lights[0].name = "key";
+    expectedScene->SetScene(expected);
+    QCOMPARE(this->Window->document()->vtkScene()->ToJSON(), expectedScene->ToJSON());
+  }
+
+  void lightControlsReachThePicture()
+  {
+    // k_a = (0.2, 0.4, 0.6), k_d = 1, nothing else; one directional light on
+    // a blue background: a mesh pixel is 255 * (light) * N.L, exactly.
+    QFile file(this->path("one-light.json"));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({ "imageSize": [320, 240], "background": [0, 0, 1],
+      "shading": { "model": "lambert", "frequency": "phong" },
+      "material": { "ambient": [0.2, 0.4, 0.6], "diffuse": [1, 1, 1], "emission": [0, 0, 0] },
+      "lights": [ { "type": "directional", "space": "camera", "direction": [0, 0, -1], "diffuse": [0.8, 0.8, 0.8] } ] })");
+    file.close();
+    QString error;
+    QVERIFY2(this->Window->openFile(this->path("one-light.json"), &error), qPrintable(error));
+    LightPanel* panel = this->Window->lightPanel();
+    const Rgb full = this->grab();
+    std::vector<size_t> mesh; // pixels of the mesh lit well inside (0, 255)
+    for (size_t i = 0; i < full.pixels.size(); i += 3)
+    {
+      if (full.pixels[i] >= 20 && full.pixels[i] <= 235)
+      {
+        mesh.push_back(i);
+      }
+    }
+    QVERIFY(mesh.size() > 1000);
+
+    // Intensity 0.5: every channel of every mesh pixel halves.
+    panel->numberBox("intensity")->setValue(0.5);
+    Rgb half = this->grab();
+    for (size_t i : mesh)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        QVERIFY(std::abs(2.0 * half.pixels[i + c] - full.pixels[i + c]) <= 2.0);
+      }
+    }
+    // The diffuse colour at 0: the mesh goes black (it has no other light).
+    panel->colourButton("diffuse")->slider()->setValue(0);
+    Rgb dark = this->grab();
+    for (size_t i : mesh)
+    {
+      QVERIFY(dark.pixels[i] == 0 && dark.pixels[i + 1] == 0 && dark.pixels[i + 2] == 0);
+    }
+    // An ambient light of colour 1 at intensity 0.5 lights k_a only: 255 * 0.5 * (0.2, 0.4, 0.6) everywhere.
+    panel->typeBox()->setCurrentText("ambient");
+    QCOMPARE(this->Window->document()->scene().lights[0].type, LightType::Ambient);
+    QVERIFY(!panel->editor("diffuse")->isEnabled() && panel->editor("ambient")->isEnabled());
+    panel->colourButton("ambient")->slider()->setValue(1000);
+    Rgb ambient = this->grab();
+    for (size_t i : mesh)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        QVERIFY(std::abs(ambient.pixels[i + c] - 255.0 * 0.5 * (0.2 + 0.2 * c)) <= 1.0);
+      }
+    }
+  }
+
+  void lightDirectionIsNeverZero()
+  {
+    // Zeroing the direction one component at a time: no scene file may hold
+    // a zero direction, so the panel keeps the last one and the scene saves
+    // and loads back.
+    LightPanel* panel = this->Window->lightPanel();
+    panel->list()->setCurrentRow(0);
+    for (int i = 0; i < 3; ++i)
+    {
+      panel->componentBox("direction", i)->setValue(0.0);
+    }
+    QVERIFY(glm::length(this->Window->document()->scene().lights[0].direction) > 0.0f);
+    QString error;
+    QVERIFY2(this->Window->saveScene(this->path("turned.json"), &error), qPrintable(error));
+    const std::string text = this->Window->document()->vtkScene()->ToJSON();
+    QVERIFY2(this->Window->openFile(this->path("turned.json"), &error), qPrintable(error));
+    QCOMPARE(this->Window->document()->vtkScene()->ToJSON(), text);
+  }
+
+  void lightsStopAtWhatThePassDraws()
+  {
+    LightPanel* panel = this->Window->lightPanel();
+    const int most = slLightingPass::GetMaximumNumberOfLights();
+    while (panel->addButton()->isEnabled())
+    {
+      panel->addLight("point");
+      QVERIFY(static_cast<int>(this->Window->document()->scene().lights.size()) <= most);
+    }
+    QCOMPARE(static_cast<int>(this->Window->document()->scene().lights.size()), most);
+    panel->addLight("point");
+    QCOMPARE(static_cast<int>(this->Window->document()->scene().lights.size()), most);
+
+    // A scene with more is refused as `shadelab render` refuses it; the current one stays.
+    const std::string shown = this->Window->document()->vtkScene()->ToJSON();
+    QString text = R"({ "lights": [)";
+    for (int i = 0; i <= most; ++i)
+    {
+      text += QString(i ? ", " : "") + R"({ "type": "point", "position": [1, 1, 1] })";
+    }
+    QFile file(this->path("crowd.json"));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write((text + "] }").toUtf8());
+    file.close();
+    QString error;
+    QVERIFY(!this->Window->openFile(this->path("crowd.json"), &error));
+    QCOMPARE(error, this->path("crowd.json") + ": " + QString::fromStdString(slLightingPass::GetLightCountProblem(most + 1)));
+    QCOMPARE(this->Window->document()->vtkScene()->ToJSON(), shown);
+  }
+
+  void lightChoosersCoverTheScenesLights()
+  {
+    // The N.L field and the lobe are of the chosen light: choices are the scene's lights.
+    const int last = static_cast<int>(this->Window->document()->scene().lights.size()) - 1;
+    QCOMPARE(this->Window->fieldsPanel()->lightBox()->maximum(), last);
+    QCOMPARE(this->Window->brdfPanel()->lightBox()->maximum(), last);
+    this->Window->lightPanel()->addLight("point");
+    QCOMPARE(this->Window->fieldsPanel()->lightBox()->maximum(), last + 1);
+    QCOMPARE(this->Window->brdfPanel()->lightBox()->maximum(), last + 1);
+    // Light 2 (the point light "bulb") is the one whose N.L is shown.
+    this->Window->fieldsPanel()->fieldBox()->setCurrentIndex(1);
+    this->Window->fieldsPanel()->lightBox()->setValue(2);
+    vtkPolyData* field = this->Window->view()->fieldMesh();
+    QVERIFY(field != nullptr);
+    vtkDataArray* cosine = field->GetPointData()->GetArray("CosTheta");
+    vtkDataArray* normals = field->GetPointData()->GetNormals();
+    QVERIFY(cosine && normals);
+    const glm::vec3 bulb = this->Window->document()->scene().lights[2].position; // world space
+    for (vtkIdType i = 0; i < field->GetNumberOfPoints(); i += 97)
+    {
+      double p[3], n[3];
+      field->GetPoint(i, p);
+      normals->GetTuple(i, n);
+      const double l[3] = { bulb.x - p[0], bulb.y - p[1], bulb.z - p[2] };
+      const double expected = std::max(0.0, vtkMath::Dot(n, l) / (vtkMath::Norm(n) * vtkMath::Norm(l)));
+      QVERIFY2(std::abs(cosine->GetTuple1(i) - expected) < 1e-4,
+        qPrintable(QString("point %1: %2, expected %3").arg(i).arg(cosine->GetTuple1(i)).arg(expected)));
+    }
+  }
+
+  void fieldFollowsTheNormalsPanel()
+  {
+    // A field is computed on the normals the normals panel asks for.
+    this->Window->fieldsPanel()->fieldBox()->setCurrentIndex(1); // CosTheta
+    SceneView* view = this->Window->view();
+    this->Window->normalsPanel()->weightingBox()->setCurrentIndex(0); // uniform
+    QCOMPARE(view->mode(), SceneView::FieldMode);
+    vtkDataArray* shown = view->fieldMesh()->GetPointData()->GetNormals();
+    // Uniform weighting, computed here by the renderers' own normals function.
+    NormalsSettings uniform = this->Window->document()->normals();
+    QCOMPARE(uniform.weighting, 0);
+    vtkNew<slMeshReader> reader;
+    reader->SetFileName(kSpot);
+    reader->Update();
+    uniform.replace = true;
+    vtkSmartPointer<vtkPolyData> expected = slWithRenderNormals(reader->GetOutput(), uniform);
+    QCOMPARE(shown->GetNumberOfTuples(), expected->GetPointData()->GetNormals()->GetNumberOfTuples());
+    double worst = 0.0;
+    for (vtkIdType i = 0; i < shown->GetNumberOfTuples(); ++i)
+    {
+      double a[3], b[3];
+      shown->GetTuple(i, a);
+      expected->GetPointData()->GetNormals()->GetTuple(i, b);
+      worst = std::max(worst, std::sqrt(vtkMath::Distance2BetweenPoints(a, b)));
+    }
+    QVERIFY2(worst < 1e-5, qPrintable(QString("normals differ by up to %1").arg(worst)));
+  }
+
+  void referenceOfAnotherMeshIsDropped()
+  {
+    // A reference still being computed when another mesh opens is not shown on it.
+    FieldsPanel* panel = this->Window->fieldsPanel();
+    QSignalSpy finished(panel->job(), &ReferenceJob::finished);
+    panel->samplesBox()->setValue(4);
+    panel->computeButton()->click();
+    QVERIFY(panel->job()->running());
+    QFile file(this->path("tetra.off"));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+    file.close();
+    QString error;
+    QVERIFY2(this->Window->openFile(this->path("tetra.off"), &error), qPrintable(error)); // before the job can report
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 60000);
+    QTest::qWait(50);
+    QVERIFY(panel->reference() == nullptr);
+    QCOMPARE(this->Window->view()->mode(), SceneView::LitMode);
+    QVERIFY(panel->computeButton()->isEnabled());
+
+    // One computed while the scene changes is stale when it arrives.
+    panel->computeButton()->click();
+    QVERIFY(panel->job()->running());
+    Scene scene = this->Window->document()->scene();
+    scene.lights[0].intensity = 0.5f;
+    this->Window->document()->setScene(scene, LightsChange);
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 2, 60000);
+    QVERIFY(panel->reference() != nullptr);
+    QVERIFY2(panel->statusLabel()->text().contains("changed"), qPrintable(panel->statusLabel()->text()));
+  }
+
+  void windowScreenshotLikeTheView()
+  {
+    // --window-screenshot writes what --screenshot writes (PNG, EXR, ...)
+    // and says why it cannot, naming the file.
+    const QString mesh = QString(SHADELAB_DATA_DIR) + "/meshes/spot.obj";
+    QTemporaryDir runtime;
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.insert("XDG_RUNTIME_DIR", runtime.path());
+    QProcess viewer;
+    viewer.setProcessEnvironment(environment);
+    viewer.start(QString(SHADELAB_VIEWER_PROGRAM), { mesh, "--window-screenshot", this->path("window.exr") });
+    QVERIFY(viewer.waitForFinished(60000));
+    QVERIFY2(viewer.exitCode() == 0, viewer.readAllStandardError().constData());
+    vtkNew<slImageReader> reader;
+    const QByteArray file = this->path("window.exr").toLocal8Bit();
+    reader->SetFileName(file.constData());
+    QCOMPARE(QString::fromStdString(updateError(reader)), QString());
+    int dims[3];
+    reader->GetOutput()->GetDimensions(dims);
+    QVERIFY(dims[0] > this->Window->document()->scene().width); // the view and the panels beside it
+
+    const QList<QPair<QString, QString>> cases = {
+      { this->path("no-such-folder/w.png"), "No such file or directory" },
+      { this->path("w.gif"), "unsupported image format" },
+    };
+    for (const auto& c : cases)
+    {
+      QProcess failing;
+      failing.setProcessEnvironment(environment);
+      failing.start(QString(SHADELAB_VIEWER_PROGRAM), { mesh, "--window-screenshot", c.first });
+      QVERIFY(failing.waitForFinished(60000));
+      const QString message = QString::fromUtf8(failing.readAllStandardError()).trimmed();
+      QCOMPARE(failing.exitCode(), 1);
+      QVERIFY2(message.startsWith("shadelab-viewer: " + c.first + ": ") && !message.contains('\n'), qPrintable(message));
+      QVERIFY2(message.contains(c.second), qPrintable(message));
+    }
+  }
+
   void init()
   {
     QVERIFY(this->Folder.isValid());
