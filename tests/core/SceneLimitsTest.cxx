@@ -44,6 +44,8 @@ TEST(SceneLimits, NamesTheFirstValueThatIsNotFiniteOrOutOfRange)
     { [](Scene& s) { s.lights[0].position.z = INFINITY; }, "position[2]: inf is not a finite number" },
     { [](Scene& s) { s.lights[0].attenuation.x = -1.0f; }, "attenuation[0]: -1 is out of range [0, inf)" },
     { [](Scene& s) { s.lights[0].direction.y = NAN; }, "direction[1]: nan is not a finite number" },
+    // The scene reader refuses a zero direction, so nothing may write one.
+    { [](Scene& s) { s.lights[0].direction = glm::vec3(0.0f); }, "direction: a direction must not have zero length" },
     { [](Scene& s) { s.lights[0].cutoffDegrees = 0.0f; }, "cutoff: 0 is out of range (0, 90]" },
     { [](Scene& s) { s.lights[0].exponent = 2e4f; }, "exponent: 20000 is out of range [0, 10000]" },
     { [](Scene& s) { s.lights[0].edgeDegrees = 45.0f; }, "edge: 45 is out of range [0, 30]" },
@@ -65,6 +67,7 @@ TEST(SceneLimits, NamesTheFirstValueThatIsNotFiniteOrOutOfRange)
     { [](Scene& s) { s.material.shininess = NAN; }, "material.shininess: nan is not a finite number" },
     { [](Scene& s) { s.camera.position.y = -INFINITY; }, "camera.position[1]: -inf is not a finite number" },
     { [](Scene& s) { s.camera.focalPoint.x = NAN; }, "camera.focalPoint[0]: nan is not a finite number" },
+    { [](Scene& s) { s.camera.viewUp = glm::vec3(0.0f); }, "camera.viewUp: a direction must not have zero length" },
   };
   for (const auto& c : materialAndCamera)
   {

@@ -222,9 +222,10 @@ private:
   glm::vec3 direction(const json& value, const std::string& path) const
   {
     const glm::vec3 d = this->triple(value, path, "a direction", -HUGE_VAL);
-    if (!(glm::length(d) > 0.0f))
+    const std::string problem = directionProblem(d);
+    if (!problem.empty())
     {
-      this->fail(path, "a direction must not have zero length");
+      this->fail(path, problem);
     }
     return d;
   }

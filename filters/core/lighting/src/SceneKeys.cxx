@@ -222,6 +222,11 @@ SceneLight defaultLight(LightType type)
   return light;
 }
 
+std::string directionProblem(const glm::vec3& direction)
+{
+  return glm::length(direction) > 0.0f ? "" : "a direction must not have zero length";
+}
+
 template <typename Struct>
 std::string keyValueProblem(const SceneKey<Struct>& key, const Struct& object, const std::string& path)
 {
@@ -242,6 +247,11 @@ std::string keyValueProblem(const SceneKey<Struct>& key, const Struct& object, c
       {
         return indexed(at, i) + ": " + p;
       }
+    }
+    if (key.kind == SceneKeyKind::Direction)
+    {
+      const std::string p = directionProblem(v);
+      return p.empty() ? p : at + ": " + p;
     }
   }
   return "";

@@ -90,9 +90,10 @@ std::string sceneValueProblem(const Scene& scene)
     return material;
   }
   // A camera from VTK or code has no azimuth or elevation to check; its
-  // position and focal point must be finite.
-  return firstProblem(cameraKeys(), scene.camera, "camera",
-    [](const SceneKey<SceneCamera>& key) { return key.kind == SceneKeyKind::Point; });
+  // position and focal point must be finite, its view-up a direction.
+  return firstProblem(cameraKeys(), scene.camera, "camera", [](const SceneKey<SceneCamera>& key) {
+    return key.kind == SceneKeyKind::Point || key.kind == SceneKeyKind::Direction;
+  });
 }
 
 } // namespace shadelab

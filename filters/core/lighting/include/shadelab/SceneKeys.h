@@ -69,9 +69,15 @@ bool lightTakesKey(LightType type, const SceneKey<SceneLight>& key);
 /// diffuse and specular colours are zero.
 SceneLight defaultLight(LightType type);
 
-/// "" if @p object's value for @p key is finite and in range; else
-/// "PATH.KEY[i]: problem" (numberProblem()'s wording). Text and space keys
-/// have no problem here; directions are checked for finiteness only.
+/// "" if @p direction has a length above 0 (in float, as it is used);
+/// else "a direction must not have zero length". Scene files and
+/// keyValueProblem() both ask it.
+std::string directionProblem(const glm::vec3& direction);
+
+/// "" if @p object's value for @p key is finite and in range, and a
+/// direction not of zero length; else "PATH.KEY[i]: problem"
+/// (numberProblem()'s wording) or "PATH.KEY: problem" (directionProblem()).
+/// Text and space keys have no problem here.
 template <typename Struct>
 std::string keyValueProblem(const SceneKey<Struct>& key, const Struct& object, const std::string& path);
 
