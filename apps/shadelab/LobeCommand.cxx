@@ -11,6 +11,7 @@
 
 #include "shadelab/AtomicFile.h"
 #include "shadelab/BrdfFile.h"
+#include "shadelab/LightingGLSL.h"
 #include "shadelab/LightingTables.h"
 #include "shadelab/Scene.h"
 #include "slAlbedoTable.h"
@@ -30,8 +31,9 @@
 #include <vtkTable.h>
 
 #include <algorithm>
-#include <iostream>
 #include <cctype>
+#include <cmath>
+#include <iostream>
 #include <memory>
 #include <sstream>
 
@@ -57,6 +59,46 @@ void applyLobeOptions(const CommandLine& cl, slBRDFLobeSource* lobe)
   lobe->SetDiffuseWeight(cl.getNumber("kd", -1.0, 0.0, 1e3));
   lobe->SetSpecularWeight(cl.getNumber("ks", -1.0, 0.0, 1e3));
   lobe->SetMultiplyByCosine(cl.has("cosine"));
+}
+
+/// Throws UsageError for an --incidence at which the light grazes the
+/// surface: slBRDF() is 0 there for every built-in model (it does not divide
+/// by cos theta_i <= SL_MIN_COS_THETA), so their lobes would be empty. A
+/// .brdf file's own GLSL decides for itself, so it may take 90 degrees.
+void refuseGrazingIncidence(const CommandLine& cl)
+{
+  const double degrees = cl.getNumber("incidence", 45.0, 0.0, 90.0);
+  if (std::cos(degrees * glsl::SL_PI / 180.0) <= glsl::SL_MIN_COS_THETA)
+  {
+    std::ostringstream text;
+    text << "--incidence " << degrees
+         << ": the light grazes the surface, where every built-in model's f_r is 0, so the lobe would be empty"
+            " (at most 89.9 degrees)";
+    throw UsageError(text.str());
+  }
+}
+
+/// Throws UsageError for an option of the built-in models when only .brdf
+/// files are drawn: a file's f_r reads its own parameters (--param), so
+/// --model, --kd, --ks and the material numbers would change nothing.
+void refuseModelOptionsForFilesAlone(const CommandLine& cl)
+{
+  std::vector<std::string> names{ "model", "kd", "ks" };
+  for (const MaterialParameterInfo& row : kMaterialParameters)
+  {
+    if (!row.colour)
+    {
+      names.push_back(materialOptionName(row.key));
+    }
+  }
+  for (const std::string& name : names)
+  {
+    if (cl.has(name))
+    {
+      throw UsageError("--" + name +
+        ": only for built-in models; a .brdf file's lobe takes the file's parameters (--param NAME=VALUE)");
+    }
+  }
 }
 
 /// The albedo table as CSV, written all-or-nothing.
@@ -159,7 +201,7 @@ std::vector<OptionSpec> lobeOptions()
   specs.erase(std::remove_if(specs.begin(), specs.end(),
                 [](const OptionSpec& spec) { return spec.name == "image" || spec.name == "fields"; }),
     specs.end());
-  specs.push_back({ "incidence", "", "DEG", "angle of incidence from the normal (single lobe; default 45)" });
+  specs.push_back({ "incidence", "", "DEG", "angle of incidence from the normal (single lobe; default 45; below 90 for built-in models, whose f_r is 0 at grazing incidence)" });
   // The models whose unit weight is k_d (shadelab::unitWeights()).
   std::string diffuseOnly;
   for (const shadelab::LightingModelInfo& m : shadelab::kLightingModels)
@@ -237,6 +279,16 @@ int runLobe(const std::vector<std::string>& args)
       : imageOfLobes       ? LobeMode::LobeImage
       : lobeMesh           ? LobeMode::LobeMesh
                            : LobeMode::LobesOnMesh);
+  const bool drawsModels =
+    (lobeMesh && brdfs.empty()) || (imageOfLobes && (cl.has("models") || cl.has("model") || brdfs.empty()));
+  if (drawsModels)
+  {
+    refuseGrazingIncidence(cl);
+  }
+  else if (lobeMesh || imageOfLobes)
+  {
+    refuseModelOptionsForFilesAlone(cl);
+  }
   if (lobeMesh && brdfs.size() > 1)
   {
     throw UsageError("--brdf: a lobe mesh takes one .brdf file; an image (-o LOBE.png) overlays several");

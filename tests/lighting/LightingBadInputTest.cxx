@@ -174,9 +174,11 @@ TEST(LightingBadInput, NoLight)
 
 TEST(LightingBadInput, DegenerateMeshGivesNoNaN)
 {
+  // A spot light at a point of the mesh: L is zero there. (A spot of zero
+  // direction is a scene error of its own, tests/core/SceneLimitsTest.cxx.)
   SceneLight spot = whiteLight(LightType::Spot);
   spot.position = glm::vec3(0.0f);
-  spot.direction = glm::vec3(0.0f);
+  spot.direction = glm::vec3(0.0f, 0.0f, -1.0f);
   SceneLight ambient = whiteLight(LightType::Ambient);
   ambient.ambient = glm::vec3(1.0f);
   for (int model = 0; model < kLightingModelCount; ++model)

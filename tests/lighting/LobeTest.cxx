@@ -289,6 +289,50 @@ TEST(BRDFLobeSource, WardLobeFollowsTheRoughnessPair)
     ++checked;
   }
   EXPECT_GT(checked, 100);
+
+  // There is no plane of incidence at normal incidence; the slice stays in
+  // the x-z plane, the limit as the light leaves the normal, so it follows
+  // roughnessX there as at every other angle: along +x the half vector is at
+  // theta_o / 2 and f = exp(-tan^2(theta_o / 2) / ax^2) / (4 pi ax ay sqrt(cos theta_o)).
+  vtkPolyData* slice = lobe->GetSliceOutput();
+  vtkDataArray* sliceR = slice->GetPointData()->GetScalars();
+  int sliceChecked = 0;
+  for (vtkIdType i = 0; i < slice->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    slice->GetPoint(i, p);
+    EXPECT_NEAR(p[1], 0.0, 1e-7) << i;
+    const double length = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+    if (length < 1e-3 || p[2] < 0.05 * length)
+    {
+      continue; // too small to have a direction, or grazing
+    }
+    const double thetaO = std::acos(p[2] / length), t = std::tan(0.5 * thetaO);
+    const double f = std::exp(-t * t / (ax * ax)) / (4.0 * kPi * ax * ay * std::sqrt(std::cos(thetaO)));
+    EXPECT_NEAR(sliceR->GetTuple1(i), f, 1e-4 * f + 1e-6) << i;
+    ++sliceChecked;
+  }
+  EXPECT_GT(sliceChecked, 20);
+}
+
+TEST(LobesOnMesh, AnAmbientLightIsRefused)
+{
+  // An ambient light gives no incident direction: the chosen light is an
+  // error, not an empty output that blames the points for facing away.
+  SceneLight ambient = whiteLight(LightType::Ambient);
+  ambient.ambient = glm::vec3(1.0f);
+  SceneLight key = whiteLight(LightType::Directional);
+  key.direction = glm::vec3(0.0f, 0.0f, -1.0f);
+  vtkNew<slLobesOnMesh> lobes;
+  lobes->SetScene(makeScene({ ambient, key }, ShadingModel::BlinnPhong));
+  lobes->SetInputData(sphere(12));
+  lobes->SetLightIndex(0);
+  EXPECT_EQ(updateError(lobes),
+    "LightIndex 0: the light is ambient; a lobe needs an incident direction (a directional, point or spot light)");
+  // The default takes the first light with a direction.
+  lobes->SetLightIndex(-1);
+  ASSERT_EQ(updateError(lobes), "");
+  EXPECT_EQ(lobes->GetNumberOfLobesDrawn(), 16);
 }
 
 TEST(LobesOnMesh, EachLobeSitsInItsPointsNormalFrame)

@@ -95,6 +95,42 @@ class LightingCommandsTest(unittest.TestCase):
                 for value, t in zip(point, texel):
                     self.assertAlmostEqual(value, 0.5 * t * cos, places=5, msg=mesh)
 
+    def test_lobe_at_grazing_incidence(self):
+        """Built-in models have f_r = 0 at 90 degrees (slBRDF's grazing limit): refused, not an empty lobe."""
+        import vtk
+        from vtk.util.numpy_support import vtk_to_numpy
+        for args in (["--model", "lambert-normalized"], ["--models", "phong,ward"]):
+            target = self.out("x.png" if "--models" in args else "x.vtp")
+            r = run("lobe", *args, "--incidence", "90", "-o", target)
+            self.assertEqual(r.returncode, 2, (args, r.stderr))
+            self.assertEqual(r.stderr.count("\n"), 1, r.stderr)
+            self.assertIn("--incidence 90: the light grazes the surface", r.stderr)
+            self.assertFalse(os.path.exists(target), args)
+        # Just below: normalised Lambert is still the hemisphere of radius 1/pi.
+        r = run("lobe", "--model", "lambert-normalized", "--incidence", "89.9", "-o", self.out("l.vtp"))
+        self.assertEqual(r.returncode, 0, r.stderr)
+        reader = vtk.vtkXMLPolyDataReader()
+        reader.SetFileName(self.out("l.vtp"))
+        reader.Update()
+        points = vtk_to_numpy(reader.GetOutput().GetPoints().GetData())
+        radii = (points.astype(float) ** 2).sum(axis=1) ** 0.5
+        self.assertGreater(len(radii), 100)
+        self.assertAlmostEqual(radii.min(), 1.0 / 3.141592653589793, places=6)
+        self.assertAlmostEqual(radii.max(), 1.0 / 3.141592653589793, places=6)
+
+    def test_lobe_of_brdf_files_alone_refuses_model_options(self):
+        """A .brdf file's f_r reads its own parameters: the built-in models' options would change nothing."""
+        ward = os.path.join(DATA, "brdf", "ward-anisotropic.brdf")
+        for option, value, target in (("--kd", "0.3", "x.vtp"), ("--model", "phong", "x.vtp"),
+                                      ("--shininess", "5", "x.vtp"), ("--roughness-x", "0.5", "x.png"),
+                                      ("--ks", "0.5", "x.png")):
+            r = run("lobe", "--brdf", ward, option, value, "-o", self.out(target))
+            self.assertEqual(r.returncode, 2, (option, r.stderr))
+            self.assertEqual(r.stderr.count("\n"), 1, r.stderr)
+            self.assertIn(option + ": only for built-in models; a .brdf file's lobe takes the file's parameters",
+                          r.stderr)
+            self.assertFalse(os.path.exists(self.out(target)), option)
+
     def test_bad_input_is_one_line_and_non_zero(self):
         bad = self.out("bad.hdr")
         with open(bad, "w") as f:

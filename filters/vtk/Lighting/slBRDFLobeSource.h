@@ -8,7 +8,8 @@
  *
  * The surface is origin + r(w_o) w_o over the hemisphere around +z, for the
  * incident direction given by IncidenceAngle (degrees from +z, in the x-z
- * plane, light on the -x side so the mirror lobe leans toward +x), with the
+ * plane, light on the -x side so the mirror lobe leans toward +x; the slice
+ * is in the x-z plane at every angle, 0 included), with the
  * surface tangent along +x (anisotropic models: roughnessX along x,
  * roughnessY along y). The point array "BRDF" holds r. f_r is slBRDF() of
  * slLighting.glsl with k_d = DiffuseWeight and k_s = SpecularWeight (grey)

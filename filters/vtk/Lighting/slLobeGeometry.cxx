@@ -21,8 +21,11 @@ void frame(const LobeSpec& spec, glm::vec3& N, glm::vec3& T, glm::vec3& B)
   T = glsl::slSafeNormalize(glm::dot(N, L) * N - L);
   if (glm::length(T) == 0.0f)
   {
-    const glm::vec3 helper = std::abs(N.x) < 0.9f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
-    T = glsl::slSafeNormalize(glm::cross(helper, N));
+    // Light along the normal: no plane of incidence. The surface's tangent X
+    // takes its place, the limit of the planes of incidence as the light
+    // leaves the normal on the -X side (slBRDFLobeSource's x-z plane), so the
+    // slice of an anisotropic lobe shows roughnessX at every incidence.
+    T = glsl::slTangentX(N, spec.tangent);
   }
   B = glm::cross(N, T);
 }

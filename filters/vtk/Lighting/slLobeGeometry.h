@@ -9,7 +9,8 @@
  * surface origin + scale r(w_o) w_o over the hemisphere of outgoing unit
  * directions w_o, with r = f_r(L, w_o) (slBRDF() of slLighting.glsl,
  * averaged over R, G, B), optionally times cos(theta_o). Tangent T lies in
- * the plane of incidence (the plane of N and L), B = N x T.
+ * the plane of incidence (the plane of N and L), on the side away from L;
+ * with L along N it is the surface's tangent X (slTangentX()). B = N x T.
  *
  * f_r may instead be given per point (a BRDF that only the GPU evaluates,
  * a `.brdf` file): lobeDirections() and sliceDirections() list the outgoing

@@ -64,6 +64,13 @@ int slLobesOnMesh::RequestData(vtkInformation*, vtkInformationVector** inputVect
     return this->Fail(output, "LightIndex " + std::to_string(light) + " is out of range: the scene has " +
         std::to_string(setup.lights.size()) + " lights");
   }
+  if (!lightHasDirection(setup.lights[static_cast<size_t>(light)].type))
+  {
+    // An ambient light lights every point from no direction: without this
+    // check every point would count as unlit and the output would be empty.
+    return this->Fail(output, "LightIndex " + std::to_string(light) +
+        ": the light is ambient; a lobe needs an incident direction (a directional, point or spot light)");
+  }
 
   vtkDataArray* tangentArray = nullptr;
   if (!this->GetTangents(input, output, setup, tangentArray))

@@ -40,6 +40,7 @@ public:
 
   ///@{
   /// The light whose direction is used; -1 (default): the first light that has one.
+  /// An index out of range or of an ambient light is an error at the update.
   vtkSetClampMacro(LightIndex, int, -1, VTK_INT_MAX);
   vtkGetMacro(LightIndex, int);
   ///@}
