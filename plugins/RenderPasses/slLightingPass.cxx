@@ -28,10 +28,10 @@
 #include <vtkRenderer.h>
 #include <vtkShader.h>
 #include <vtkShaderProgram.h>
+#include <vtkWeakPointer.h>
 
 #include <algorithm>
 #include <map>
-#include <set>
 #include <vector>
 
 vtkStandardNewMacro(slLightingPass);
@@ -113,14 +113,30 @@ bool hasTangentsWithHandedness(vtkAbstractMapper* mapper)
   return tangents && tangents->GetNumberOfComponents() == 4;
 }
 
-/// Opaque, lit polydata actors. An actor whose property has lighting off
-/// (colour-mapped fields, widget handles, glyphs in their own colour) is
-/// drawn unlit by VTK, as without the pass.
+/// Opaque actors whose property has lighting on. An actor whose property has
+/// lighting off (colour-mapped fields, widget handles, glyphs in their own
+/// colour) is drawn unlit by VTK, as without the pass, and a translucent one
+/// with VTK's lighting.
+bool isLitOpaqueActor(vtkActor* actor)
+{
+  return actor && actor->GetMapper() && !actor->HasTranslucentPolygonalGeometry() &&
+    actor->GetProperty()->GetLighting();
+}
+
+/// The polydata the pass lights: isLitOpaqueActor's, drawn by an OpenGL polydata mapper.
 bool isOurs(vtkAbstractMapper* mapper, vtkProp* prop)
 {
-  vtkActor* actor = vtkActor::SafeDownCast(prop);
-  return vtkOpenGLPolyDataMapper::SafeDownCast(mapper) && actor && !actor->HasTranslucentPolygonalGeometry() &&
-    actor->GetProperty()->GetLighting();
+  return vtkOpenGLPolyDataMapper::SafeDownCast(mapper) && isLitOpaqueActor(vtkActor::SafeDownCast(prop));
+}
+
+/// Whether VTK's fragment shader @p fragmentShader colours the surface with
+/// point or cell scalars (a colour attribute, a colour texture map or a cell
+/// colour buffer): then VTK's ambientColor and diffuseColor are the scalar
+/// colour times the property's intensities, in place of its colours.
+bool drawsScalarColours(const std::string& fragmentShader)
+{
+  return contains(fragmentShader, "vertexColorVSOutput") || contains(fragmentShader, "colortexture") ||
+    contains(fragmentShader, "textureC");
 }
 } // namespace
 
@@ -132,7 +148,15 @@ struct slLightingPass::Internals
   bool ReportedTooManyLights = false; // until the lights fit again
   bool WarnedNoNormals = false;
   bool WarnedNoTangents = false;
-  std::set<vtkMapper*> TangentMappers; // mappers given the slTangentMC attribute
+  bool WarnedShadows = false;
+  // Mappers given the slTangentMC attribute; weak, so that a new mapper at a
+  // freed one's address is not taken for it.
+  std::map<vtkMapper*, vtkWeakPointer<vtkMapper>> TangentMappers;
+  // Whether each shader program draws scalar colours (drawsScalarColours()),
+  // read from its source once: the source is fixed once compiled, and
+  // copying it for every actor of every frame would cost in scenes of many
+  // actors. Weak, as TangentMappers.
+  std::map<vtkShaderProgram*, std::pair<vtkWeakPointer<vtkShaderProgram>, bool>> ScalarColourPrograms;
 
   // The .brdf file, if any: its GLSL as the shaders hold it, its parameter
   // values (uniforms), and what compiling its GLSL on its own gave.
@@ -203,8 +227,11 @@ int slLightingPass::GetNumberOfLightsUsed() const
 
 void slLightingPass::SetDelegatePass(vtkRenderPass* delegate)
 {
-  this->DelegatePass = delegate;
-  this->Modified();
+  if (delegate != this->DelegatePass)
+  {
+    this->DelegatePass = delegate;
+    this->Modified();
+  }
 }
 
 vtkRenderPass* slLightingPass::GetDelegatePass()
@@ -214,14 +241,19 @@ vtkRenderPass* slLightingPass::GetDelegatePass()
 
 void slLightingPass::SetScene(slScene* scene)
 {
-  this->Scene = scene;
+  if (scene != this->Scene)
+  {
+    this->Scene = scene;
+    this->Modified();
+  }
+  // Copied again for the same scene too (it may have been edited); each
+  // setter marks the pass modified only for a real change.
   if (scene)
   {
     this->SetModel(static_cast<int>(scene->GetScene().model));
     this->SetFrequency(static_cast<int>(scene->GetScene().frequency));
     this->SetBrdfFromScene();
   }
-  this->Modified();
 }
 
 void slLightingPass::SetBrdfFromScene()
@@ -593,11 +625,16 @@ void slLightingPass::MapTangents(const vtkRenderState* s)
   {
     vtkActor* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
     auto* mapper = actor ? vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper()) : nullptr;
-    if (mapper && hasTangentsWithHandedness(mapper) && !this->Internal->TangentMappers.count(mapper))
+    if (!mapper || !hasTangentsWithHandedness(mapper))
+    {
+      continue;
+    }
+    vtkWeakPointer<vtkMapper>& mapped = this->Internal->TangentMappers[mapper];
+    if (mapped != mapper)
     {
       // Once per mapper: mapping an attribute marks the mapper modified.
       mapper->MapDataArrayToVertexAttribute("slTangentMC", "Tangents", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
-      this->Internal->TangentMappers.insert(mapper);
+      mapped = mapper;
     }
   }
 }
@@ -609,9 +646,9 @@ void slLightingPass::MatchInterpolation(const vtkRenderState* s)
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
     vtkActor* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
-    if (!actor)
+    if (!isLitOpaqueActor(actor))
     {
-      continue;
+      continue; // drawn by VTK as without the pass, in its own interpolation
     }
     vtkProperty* property = actor->GetProperty();
     const bool flat = property->GetInterpolation() == VTK_FLAT;
@@ -635,20 +672,35 @@ void slLightingPass::Render(const vtkRenderState* s)
     return;
   }
   vtkRenderer* renderer = s->GetRenderer();
+  auto anyLightOn = [renderer] {
+    vtkLightCollection* lights = renderer->GetLights();
+    lights->InitTraversal();
+    while (vtkLight* light = lights->GetNextItem())
+    {
+      if (light->GetSwitch())
+      {
+        return true;
+      }
+    }
+    return false;
+  };
+  // With no light switched on VTK adds a headlight (AutomaticLightCreation,
+  // vtkOpenGLRenderer::UpdateLights), after the pass has read the lights:
+  // add it first, so that the renderer's lights light the picture as without
+  // the pass (a scene's lights leave the renderer's alone).
+  if (!this->Scene && !anyLightOn() && renderer->GetAutomaticLightCreation())
+  {
+    renderer->CreateLight();
+  }
   this->PrepareLights(renderer);
   this->MatchInterpolation(s);
   this->MapTangents(s);
 
-  // Without a light switched on, VTK's mapper passes no normals at all.
-  bool anyLightOn = false;
-  vtkLightCollection* lights = renderer->GetLights();
-  lights->InitTraversal();
-  while (vtkLight* light = lights->GetNextItem())
-  {
-    anyLightOn = anyLightOn || light->GetSwitch();
-  }
+  // Without a light switched on, VTK's mapper draws unlit and passes no
+  // normals: so does the pass with the renderer's lights, but the scene's
+  // lights need the normals.
   vtkSmartPointer<vtkLight> placeholder;
-  if (!anyLightOn)
+  if (this->Scene && !anyLightOn())
   {
     placeholder = vtkSmartPointer<vtkLight>::New();
     placeholder->SetLightTypeToHeadlight();
@@ -705,6 +757,34 @@ bool slLightingPass::PostReplaceShaderValues(std::string& vertexShader, std::str
     return true;
   }
 
+  // VTK lights lines and points only with point normals and smooth
+  // interpolation, and passes the view-coordinate position only to what it
+  // lights; the rest it draws in the ambient + diffuse colour, and so does
+  // the pass.
+  if (!contains(vertexShader, "vertexVCVSOutput"))
+  {
+    for (std::string* shader : { &vertexShader, &fragmentShader })
+    {
+      for (const char* tag : { kDeclarationTag, "//SL::Tangent::Dec", "//SL::Tangent::Impl", kTextureTag })
+      {
+        vtkShaderProgram::Substitute(*shader, tag, "", false);
+      }
+    }
+    vtkShaderProgram::Substitute(fragmentShader, kLightTag,
+      shaders::unlitFragmentImplementation(
+        contains(fragmentShader, "actortexture") && contains(fragmentShader, "tcoordVCVSOutput")),
+      false);
+    return true;
+  }
+
+  // vtkShadowMapPass scales VTK's own per-light terms, which the pass's
+  // lighting replaces: say once that the shadows are missing.
+  if (contains(fragmentShader, "uniform sampler2D shadowMap") && !this->Internal->WarnedShadows)
+  {
+    vtkWarningMacro(<< "shadows (vtkShadowMapPass) are not drawn: ShadeLab's lighting replaces VTK's");
+    this->Internal->WarnedShadows = true;
+  }
+
   auto frequency = static_cast<shaders::Frequency>(this->Frequency);
   const bool vertexNormals = contains(vertexShader, "out vec3 normalVCVSOutput");
   if (frequency != shaders::Flat && !vertexNormals)
@@ -731,7 +811,7 @@ bool slLightingPass::PostReplaceShaderValues(std::string& vertexShader, std::str
     variant.brdf.clear();
   }
   shaders::FragmentInputs inputs;
-  inputs.scalarColors = contains(fragmentShader, "vertexColorVSOutput") || contains(fragmentShader, "textureC");
+  inputs.scalarColors = drawsScalarColours(fragmentShader);
   inputs.texture = contains(fragmentShader, "actortexture") && contains(fragmentShader, "tcoordVCVSOutput");
   inputs.mapperFaceNormal = !vertexNormals && contains(fragmentShader, "normalVCVSOutput");
   // VTK maps normals itself only for 3-component tangents; 4-component
@@ -788,6 +868,18 @@ bool slLightingPass::SetShaderParameters(
   else
   {
     m = actor ? materialOf(actor->GetProperty()) : shadelab::toEvaluationMaterial(shadelab::SceneMaterial());
+    auto& scalarColours = this->Internal->ScalarColourPrograms[program];
+    if (scalarColours.first != program)
+    {
+      scalarColours = { program, drawsScalarColours(program->GetFragmentShader()->GetSource()) };
+    }
+    if (actor && scalarColours.second)
+    {
+      // As in VTK, the scalar colour (the shader's base colour) takes the
+      // place of the property's ambient and diffuse colours.
+      m.ambient = glm::vec3(static_cast<float>(actor->GetProperty()->GetAmbient()));
+      m.diffuse = glm::vec3(static_cast<float>(actor->GetProperty()->GetDiffuse()));
+    }
   }
   // Each light with this actor's k_a, k_d, k_s folded in (slFoldLight), as
   // the CPU kernel folds them; the shader shades with slUnitMaterial(slMat).
@@ -839,9 +931,24 @@ void slLightingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Frequency: " << shadelab::frequencyName(static_cast<shadelab::ShadingFrequency>(this->Frequency))
      << "\n";
   os << indent << "UseSceneMaterial: " << this->UseSceneMaterial << "\n";
-  os << indent << "Component: " << this->Component << " (light " << this->ComponentLight << ")\n";
+  os << indent << "Component: " << this->Component << "\n";
+  os << indent << "ComponentLight: " << this->ComponentLight << "\n";
   os << indent << "FalseColor: " << this->FalseColor << "\n";
   os << indent << "Brdf: " << (this->Internal->Brdf ? this->Internal->Brdf->path : "(none: the model)") << "\n";
+  for (int i = 0; i < this->GetNumberOfBrdfParameters(); ++i)
+  {
+    double value[3];
+    this->GetBrdfParameterValue(i, value);
+    os << indent.GetNextIndent() << this->GetBrdfParameterName(i) << ": " << value[0];
+    if (this->GetBrdfParameterKind(i) == BRDF_COLOR)
+    {
+      os << " " << value[1] << " " << value[2];
+    }
+    os << "\n";
+  }
+  os << indent << "BrdfError: " << this->Internal->BrdfError << "\n";
   os << indent << "Scene: " << (this->Scene ? "set" : "(none: the renderer's lights)") << "\n";
   os << indent << "DelegatePass: " << this->DelegatePass.GetPointer() << "\n";
+  os << indent << "NumberOfLightsUsed: " << this->GetNumberOfLightsUsed() << "\n";
+  os << indent << "NumberOfShaderBuilds: " << this->GetNumberOfShaderBuilds() << "\n";
 }

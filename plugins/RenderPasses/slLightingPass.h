@@ -12,7 +12,9 @@
  * the lighting core's slLighting.glsl, the same text the CPU filters compile
  * as C++: there is one copy of every formula.
  *
- * - Models: lambert, phong, blinn-phong and their energy-normalised variants.
+ * - Models: every row of shadelab/LightingTables.h (Lambert, Phong and
+ *   Blinn-Phong, their energy-normalised variants, the microfacet and the
+ *   anisotropic models); SetModel() takes an SL_MODEL_* value.
  * - Lights: directional, point, spot (cutoff, exponent, smooth edge) and
  *   ambient, up to GetMaximumNumberOfLights() at once, each with its own ambient, diffuse and
  *   specular colour and min(1, .) attenuation; material emission.
@@ -22,9 +24,15 @@
  *   own "Gouraud" does not: it lights every fragment); Phong lights every
  *   fragment with the interpolated normal.
  * - Lights come from the slScene when one is set (camera lights follow the
- *   camera), otherwise from the renderer's vtkLights. The material comes from
- *   the scene (UseSceneMaterial) or from each actor's vtkProperty. Point or
- *   cell scalar colours and the actor's texture multiply k_a and k_d.
+ *   camera), otherwise from the renderer's vtkLights, as VTK reads them:
+ *   switched-off lights are left out, and with none switched on VTK's
+ *   automatic headlight is created (AutomaticLightCreation) or, without it,
+ *   the actors are drawn unlit in their ambient + diffuse colour. The
+ *   material comes from the scene (UseSceneMaterial) or from each actor's
+ *   vtkProperty. Point or cell scalar colours take the place of the
+ *   property's ambient and diffuse colours, as in VTK (its intensities
+ *   stay), and multiply the scene's k_a and k_d; the actor's texture
+ *   multiplies k_a and k_d.
  * - Normal maps (Phong frequency): the property's normal texture
  *   (vtkProperty::SetNormalTexture, tangent space, OpenGL green-up) perturbs
  *   the normal using the mesh's point Tangents. 3-component tangents go
@@ -58,13 +66,22 @@
  * a view shows, false colour) is a uniform: changing it costs no shader rebuild.
  *
  * @warning The mapper supplies normals only when the renderer has at least
- * one light switched on; the pass adds a zero-intensity headlight for the
- * frame when there is none. To give the mapper what each frequency needs, the
- * pass sets an actor's interpolation to flat for Flat and away from flat for
- * Gouraud and Phong. Gouraud and Phong need point normals. Only the actor's
- * own texture (vtkActor::SetTexture) is used as base colour. Translucent
- * actors keep VTK's lighting; actors whose property has lighting off are
- * drawn unlit, as VTK draws them. A .brdf file's GLSL is compiled once on
+ * one light switched on; with a scene and no such vtkLight the pass adds a
+ * zero-intensity headlight for the frame. To give the mapper what each
+ * frequency needs, the pass sets the interpolation of each actor it lights
+ * to flat for Flat and away from flat for Gouraud and Phong (and leaves it
+ * so). Gouraud and Phong need point normals (a mesh without is shaded flat,
+ * with a warning). Only the actor's own texture (vtkActor::SetTexture) is
+ * used as base colour. Not lit by the pass, and drawn as VTK draws them:
+ * translucent actors (VTK's lighting), actors whose property has lighting
+ * off, lines and points that VTK leaves unlit (without point normals, or
+ * with flat interpolation: ambient + diffuse colour), volumes and other
+ * non-polydata props. Not supported: a backface property
+ * (vtkActor::SetBackfaceProperty; both sides take the front material),
+ * shadows (vtkShadowMapPass as the delegate: the picture has
+ * none, and the pass warns once) and other passes that rewrite VTK's
+ * lighting code, and VTK's PBR interpolation (lit with the pass's model and
+ * the property's ambient, diffuse and specular). A .brdf file's GLSL is compiled once on
  * its own (with ShadeLab's declarations) before it goes into VTK's shaders:
  * a compile error is one line, GetBrdfError(), and the meshes are drawn
  * with the built-in model instead; a clash with a name of VTK's own shader

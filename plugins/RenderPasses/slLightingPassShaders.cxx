@@ -260,13 +260,25 @@ std::string fragmentDeclarations(const Variant& variant, const FragmentInputs& i
   return out;
 }
 
+std::string unlitFragmentImplementation(bool texture)
+{
+  // VTK's own unlit colour (vtkOpenGLPolyDataMapper, no light complexity),
+  // then the actor's texture, which VTK multiplies into the whole colour.
+  return std::string("  gl_FragData[0] = vec4(ambientColor + diffuseColor, opacity);\n") +
+    (texture ? "  gl_FragData[0] = gl_FragData[0] * texture(actortexture, tcoordVCVSOutput);\n" : "");
+}
+
 std::string fragmentImplementation(Frequency frequency, const FragmentInputs& inputs)
 {
   const std::string T = tangentExpression(inputs.surfaceTangent);
   std::string out = "  {\n    vec3 slBase = vec3(1.0f);\n";
   if (inputs.scalarColors)
   {
-    out += "    slBase = diffuseIntensity > 0.0f ? diffuseColor / diffuseIntensity : vec3(1.0f);\n";
+    // VTK writes the scalar colour times each intensity into both colours;
+    // either gives it back (a property with k_d = 0 still shows its scalars
+    // in the ambient term).
+    out += "    slBase = diffuseIntensity > 0.0f ? diffuseColor / diffuseIntensity\n"
+           "           : (ambientIntensity > 0.0f ? ambientColor / ambientIntensity : vec3(1.0f));\n";
   }
   if (inputs.texture)
   {

@@ -91,6 +91,12 @@ std::string vertexImplementation(Frequency frequency, bool surfaceTangent);
 std::string fragmentDeclarations(const Variant& variant, const FragmentInputs& inputs);
 std::string fragmentImplementation(Frequency frequency, const FragmentInputs& inputs);
 
+/// The code that writes gl_FragData[0] where VTK does not light the
+/// primitive (lines and points without point normals, or with flat
+/// interpolation): VTK's unlit ambient + diffuse colour, times the actor's
+/// texture when @p texture.
+std::string unlitFragmentImplementation(bool texture);
+
 } // namespace slLightingPassShaders
 
 #endif

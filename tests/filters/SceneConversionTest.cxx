@@ -12,6 +12,7 @@
 #include <vtkImageData.h>
 #include <vtkLight.h>
 #include <vtkLightCollection.h>
+#include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkProperty.h>
@@ -216,6 +217,38 @@ TEST(SceneConversion, VTKLightsBackToScene)
   EXPECT_EQ(s.lights[2].type, shadelab::LightType::Directional);
   EXPECT_EQ(s.lights[2].space, shadelab::LightSpace::Camera);
   EXPECT_NE(std::string(scene->GetConversionNotes()).find("switched off"), std::string::npos);
+}
+
+TEST(SceneConversion, AVTKSceneLightsTransformMatrixPlacesIt)
+{
+  // A positional scene light at (0, 0, 2) shining at the origin, turned 90
+  // degrees about x by its TransformMatrix: VTK lights from (0, -2, 0)
+  // towards the origin, and so must the scene.
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPositional(true);
+  light->SetConeAngle(90.0);
+  light->SetPosition(0, 0, 2);
+  light->SetFocalPoint(0, 0, 0);
+  vtkNew<vtkMatrix4x4> turn; // (x, y, z) -> (x, -z, y)
+  turn->SetElement(1, 1, 0);
+  turn->SetElement(1, 2, -1);
+  turn->SetElement(2, 1, 1);
+  turn->SetElement(2, 2, 0);
+  light->SetTransformMatrix(turn);
+  vtkNew<vtkLightCollection> lights;
+  lights->AddItem(light);
+  vtkNew<slScene> scene;
+  scene->SetLightsFromVTK(lights);
+  const shadelab::Scene& s = scene->GetScene();
+  ASSERT_EQ(s.lights.size(), 2u) << "VTK's implicit ambient light and the point light";
+  const shadelab::SceneLight& l = s.lights[1];
+  EXPECT_EQ(l.type, shadelab::LightType::Point);
+  EXPECT_EQ(l.space, shadelab::LightSpace::World);
+  EXPECT_NEAR(l.position.x, 0.0f, 1e-6);
+  EXPECT_NEAR(l.position.y, -2.0f, 1e-6);
+  EXPECT_NEAR(l.position.z, 0.0f, 1e-6);
+  EXPECT_NEAR(glm::dot(glm::normalize(l.direction), glm::vec3(0, 1, 0)), 1.0, 1e-6);
 }
 
 TEST(SceneConversion, RoundTripThroughVTKKeepsWhatVTKCanHold)

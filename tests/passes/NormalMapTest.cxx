@@ -14,7 +14,10 @@
 #include <vtkPlaneSource.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
 #include <vtkPolyDataNormals.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
 #include <vtkProperty.h>
 #include <vtkTexture.h>
 
@@ -180,3 +183,31 @@ TEST_P(NormalMap, GPUDecodesAsTheCPUFilter)
 }
 
 INSTANTIATE_TEST_SUITE_P(TangentComponents, NormalMap, ::testing::Values(3, 4));
+
+TEST(NormalMap, ANewMapperWhereAFreedOneWasGetsItsTangents)
+{
+  // The pass maps the 4-component Tangents of each mapper once; a mapper
+  // made after another was freed (often at the same address) is a new one
+  // and needs its own mapping, or its normal map reads no tangents.
+  const double a = 0.4;
+  shadelab::Scene scene = lambertScene();
+  scene.lights[0].direction = glm::vec3(0.0f, -static_cast<float>(std::sin(a)), -static_cast<float>(std::cos(a)));
+  passtest::Stage stage = passtest::litStage(tangentPlane(4, -1.0f), scene, 100, 100);
+  stage.actor->GetProperty()->SetNormalTexture(tiltedNormalMap(a, true));
+  const float expected = static_cast<float>(std::cos(2.0 * a)); // w = -1: the normal tilts away
+  EXPECT_NEAR(stage.render().at(50, 50)[0], expected, 3.0f / 255.0f);
+
+  bool sameAddress = false;
+  for (int attempt = 0; attempt < 8 && !sameAddress; ++attempt)
+  {
+    const void* freed = stage.actor->GetMapper();
+    stage.actor->SetMapper(nullptr); // the actor held the only reference
+    stage.renderer->GetRenderWindow()->Render(); // nothing to draw
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(tangentPlane(4, -1.0f));
+    mapper->ScalarVisibilityOff();
+    stage.actor->SetMapper(mapper);
+    sameAddress = static_cast<const void*>(mapper.GetPointer()) == freed;
+    EXPECT_NEAR(stage.render().at(50, 50)[0], expected, 3.0f / 255.0f) << "attempt " << attempt;
+  }
+}

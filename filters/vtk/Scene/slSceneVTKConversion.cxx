@@ -340,8 +340,22 @@ void slScene::SetLightsFromVTK(vtkLightCollection* lights)
     l.diffuse = toVec3(light->GetDiffuseColor());
     l.specular = toVec3(light->GetSpecularColor());
     l.intensity = static_cast<float>(light->GetIntensity());
-    glm::vec3 position = toVec3(light->GetPosition());
-    glm::vec3 focal = toVec3(light->GetFocalPoint());
+    // A scene light's TransformMatrix (set by the user) places it in the
+    // world, as VTK lights it; a camera light's is the camera's, which VTK
+    // sets each frame, and the light stays in camera space here.
+    double p[3], f[3];
+    if (light->LightTypeIsSceneLight())
+    {
+      light->GetTransformedPosition(p);
+      light->GetTransformedFocalPoint(f);
+    }
+    else
+    {
+      light->GetPosition(p);
+      light->GetFocalPoint(f);
+    }
+    glm::vec3 position = toVec3(p);
+    glm::vec3 focal = toVec3(f);
     if (light->LightTypeIsHeadlight())
     {
       // A headlight sits at the camera and shines at the focal point.
