@@ -49,10 +49,24 @@ int modelNumber(const CommandLine& cl)
   return static_cast<int>(cl.has("model") ? parseModelOption("model", cl.get("model")) : ShadingModel::Phong);
 }
 
-/// The material numbers, --incidence, --kd, --ks and --cosine onto a lobe
-/// source; the numbers not given keep the source's defaults.
+/// --theta-resolution and --phi-resolution onto @p lobes (slBRDFLobeSource
+/// or slLobesOnMesh), each within the class's own range; not given, the
+/// class's default.
+template <typename Lobes>
+void applyResolutionOptions(const CommandLine& cl, Lobes* lobes)
+{
+  lobes->SetThetaResolution(cl.getIndex("theta-resolution", lobes->GetThetaResolution(),
+    lobes->GetThetaResolutionMinValue(), lobes->GetThetaResolutionMaxValue()));
+  lobes->SetPhiResolution(cl.getIndex(
+    "phi-resolution", lobes->GetPhiResolution(), lobes->GetPhiResolutionMinValue(), lobes->GetPhiResolutionMaxValue()));
+}
+
+/// The material numbers, --incidence, --kd, --ks, --cosine and the
+/// resolutions onto a lobe source; the numbers not given keep the source's
+/// defaults.
 void applyLobeOptions(const CommandLine& cl, slBRDFLobeSource* lobe)
 {
+  applyResolutionOptions(cl, lobe);
   applyMaterialOptionsByKey(cl, lobe);
   lobe->SetIncidenceAngle(cl.getNumber("incidence", 45.0, 0.0, 90.0));
   // Not given: the model's unit weight (slBRDFLobeSource's -1).
@@ -214,6 +228,27 @@ std::vector<OptionSpec> lobeOptions()
   specs.push_back({ "kd", "", "X", "k_d (single lobe; default 1 for " + diffuseOnly + ", else 0)" });
   specs.push_back({ "ks", "", "X", "k_s (single lobe; default 0 for " + diffuseOnly + ", else 1)" });
   specs.push_back({ "cosine", "", "", "multiply the lobe by cos(theta_o)" });
+  {
+    // Each class's own default and range: a sharp lobe (a large shininess)
+    // needs more rings than the default to show its peak.
+    vtkNew<slBRDFLobeSource> one;
+    vtkNew<slLobesOnMesh> many;
+    auto help = [](const char* what, int oneValue, int oneLow, int oneHigh, int manyValue, int manyLow,
+                  int manyHigh) {
+      std::ostringstream text;
+      text << what << " (single lobe: default " << oneValue << ", " << oneLow << " to " << oneHigh
+           << "; lobes on MESH: default " << manyValue << ", " << manyLow << " to " << manyHigh << ")";
+      return text.str();
+    };
+    specs.push_back({ "theta-resolution", "", "N",
+      help("rings of the lobe from the normal to the horizon, and the slice's fineness", one->GetThetaResolution(),
+        one->GetThetaResolutionMinValue(), one->GetThetaResolutionMaxValue(), many->GetThetaResolution(),
+        many->GetThetaResolutionMinValue(), many->GetThetaResolutionMaxValue()) });
+    specs.push_back({ "phi-resolution", "", "N",
+      help("segments of the lobe around the normal", one->GetPhiResolution(), one->GetPhiResolutionMinValue(),
+        one->GetPhiResolutionMaxValue(), many->GetPhiResolution(), many->GetPhiResolutionMinValue(),
+        many->GetPhiResolutionMaxValue()) });
+  }
   specs.push_back({ "slice", "", "FILE", "also write the polar slice in the plane of incidence (single lobe)" });
   specs.push_back({ "points", "", "N", "lobes on MESH: number of sampled points (default 16)" });
   specs.push_back({ "light", "l", "INDEX", "lobes on MESH: the light giving the incident direction (default: the first light that has one)" });
@@ -395,6 +430,7 @@ int runLobe(const std::vector<std::string>& args)
     lobes->SetLightIndex(light);
     lobes->SetScale(cl.getNumber("scale", 0.1, 0.0, 100.0));
     lobes->SetMultiplyByCosine(cl.has("cosine"));
+    applyResolutionOptions(cl, lobes.Get());
     runOnMesh(meshPath, [&] {
       vtkSmartPointer<vtkPolyData> mesh = loadMeshWithNormals(meshPath);
       lobes->SetInputData(mesh);

@@ -238,6 +238,8 @@ bool slLobeImageRenderer::Render()
     lobe->SetDiffuseWeight(p->GetDiffuseWeight());
     lobe->SetSpecularWeight(p->GetSpecularWeight());
     lobe->SetMultiplyByCosine(p->GetMultiplyByCosine());
+    lobe->SetThetaResolution(p->GetThetaResolution());
+    lobe->SetPhiResolution(p->GetPhiResolution());
     vtkSmartPointer<vtkTable> fileCurve;
     if (entry.Model < 0)
     {

@@ -65,7 +65,7 @@ public:
   ///@}
 
   /// The lobe parameters (the material's numbers, incidence angle, k_d, k_s, cosine
-  /// factor) are set on this source; Render() draws it once per model.
+  /// factor, resolutions) are set on this source; Render() draws it once per model.
   slBRDFLobeSource* GetLobeParameters();
 
   bool Render() override;

@@ -1,4 +1,5 @@
 """shadelab cosine / light / lobe / reference: help, outputs, one-line errors."""
+import math
 import os
 import subprocess
 import sys
@@ -117,6 +118,32 @@ class LightingCommandsTest(unittest.TestCase):
         self.assertGreater(len(radii), 100)
         self.assertAlmostEqual(radii.min(), 1.0 / 3.141592653589793, places=6)
         self.assertAlmostEqual(radii.max(), 1.0 / 3.141592653589793, places=6)
+
+    def test_lobe_resolution_shows_a_sharp_peak(self):
+        """Phong at n = 10^4, 30 degrees: radiance k_s cos^n(alpha), so the slice peaks at 1 / cos 30 at the
+        mirror direction. The default rings miss the peak; --theta-resolution 1024 finds it."""
+        import vtk
+        from vtk.util.numpy_support import vtk_to_numpy
+        peak = 1.0 / math.cos(math.radians(30.0))
+
+        def slice_peak(*options):
+            r = run("lobe", "--model", "phong", "--shininess", "10000", "--incidence", "30", *options,
+                    "-o", self.out("lobe.vtp"), "--slice", self.out("slice.vtp"))
+            self.assertEqual(r.returncode, 0, r.stderr)
+            reader = vtk.vtkXMLPolyDataReader()
+            reader.SetFileName(self.out("slice.vtp"))
+            reader.Update()
+            points = vtk_to_numpy(reader.GetOutput().GetPoints().GetData()).astype(float)
+            return ((points ** 2).sum(axis=1) ** 0.5).max(), reader.GetOutput().GetNumberOfPoints()
+
+        coarse, coarse_points = slice_peak()
+        fine, fine_points = slice_peak("--theta-resolution", "1024", "--phi-resolution", "16")
+        self.assertGreater(fine_points, 16 * coarse_points)
+        self.assertLess(coarse, 0.95 * peak)
+        self.assertAlmostEqual(fine / peak, 1.0, delta=0.01)
+        r = run("lobe", "--model", "phong", "--theta-resolution", "1025", "-o", self.out("x.vtp"))
+        self.assertEqual((r.returncode, r.stderr),
+                         (2, "shadelab lobe: option --theta-resolution: 1025 is out of range [1, 1024]\n"))
 
     def test_lobe_of_brdf_files_alone_refuses_model_options(self):
         """A .brdf file's f_r reads its own parameters: the built-in models' options would change nothing."""
