@@ -41,12 +41,9 @@ int runCosine(const std::vector<std::string>& args)
   }
   const std::vector<MeshJob> jobs = meshJobs(cl);
   checkFieldImageOptions(cl, jobs);
-  // -1, every light, is the default only: --light names one.
-  const int light = cl.has("light") ? cl.getIndex("light", 0, 0, 1000000) : -1;
   vtkNew<slCosineField> filter;
   vtkSmartPointer<slScene> scene = configureLitFilter(cl, filter);
-  checkLightOption(cl, light, scene);
-  filter->SetLightIndex(light);
+  filter->SetLightIndex(lightOption(cl, scene));
   filter->SetComputeCellArrays(!cl.has("no-cells"));
   return runMeshJobs("cosine", jobs, [&](const MeshJob& job) {
     filter->SetInputData(loadMeshWithNormals(job.input));

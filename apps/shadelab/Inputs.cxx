@@ -164,6 +164,13 @@ void checkLightOption(const CommandLine& cl, int light, slScene* scene)
   }
 }
 
+int lightOption(const CommandLine& cl, slScene* scene)
+{
+  const int light = cl.has("light") ? cl.getIndex("light", 0, 0, 1000000) : -1;
+  checkLightOption(cl, light, scene);
+  return light;
+}
+
 void parseSize(const std::string& text, int& width, int& height)
 {
   // Digits only, read without overflow (sscanf's %d wraps 4294967360 to 64).

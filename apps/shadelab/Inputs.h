@@ -110,6 +110,11 @@ void checkTangentsFor(ShadingModel model, vtkPolyData* mesh, const std::string& 
 /// the scene can tell.
 void checkLightOption(const CommandLine& cl, int light, slScene* scene);
 
+/// --light of a command whose filter takes -1 by default (every light, or
+/// the first with a direction): -1 when not given, else the index, checked
+/// by checkLightOption(). A given -1 is a UsageError: --light names one.
+int lightOption(const CommandLine& cl, slScene* scene);
+
 /// Parses "WxH", each in [kMinImageSize, kMaxImageSize] (SceneLimits.h, the
 /// range of a scene's imageSize and of a panel). Throws UsageError.
 void parseSize(const std::string& text, int& width, int& height);

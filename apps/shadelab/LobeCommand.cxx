@@ -87,7 +87,8 @@ void refuseGrazingIncidence(const CommandLine& cl)
     std::ostringstream text;
     text << "--incidence " << degrees
          << ": the light grazes the surface, where every built-in model's f_r is 0, so the lobe would be empty"
-            " (at most 89.9 degrees)";
+            " (below "
+         << std::acos(glsl::SL_MIN_COS_THETA) * 180.0 / glsl::SL_PI << " degrees)";
     throw UsageError(text.str());
   }
 }
@@ -424,10 +425,7 @@ int runLobe(const std::vector<std::string>& args)
     vtkNew<slLobesOnMesh> lobes;
     vtkSmartPointer<slScene> scene = configureLitFilter(cl, lobes);
     lobes->SetNumberOfLobes(static_cast<int>(cl.getNumber("points", 16, 1, 100000)));
-    // -1, the first light with a direction, is the default only: --light names one.
-    const int light = cl.has("light") ? cl.getIndex("light", 0, 0, 1000000) : -1;
-    checkLightOption(cl, light, scene);
-    lobes->SetLightIndex(light);
+    lobes->SetLightIndex(lightOption(cl, scene));
     lobes->SetScale(cl.getNumber("scale", 0.1, 0.0, 100.0));
     lobes->SetMultiplyByCosine(cl.has("cosine"));
     applyResolutionOptions(cl, lobes.Get());
