@@ -358,9 +358,9 @@ void LightPanel::editKey(size_t rowIndex)
     {
       value[i] = static_cast<float>(row.components[i]->value());
     }
-    if (key.kind == SceneKeyKind::Direction && !(glm::length(value) > 0.0f))
+    if (key.kind == SceneKeyKind::Direction && !directionProblem(value).empty())
     {
-      // No direction to travel along, and no scene file may hold it: keep the last one.
+      // No direction to travel along, and no scene may hold it: keep the last one.
       this->showLight(index);
       return;
     }

@@ -3,6 +3,7 @@
 
 #include "shadelab/CameraPlacement.h"
 #include "shadelab/Scene.h"
+#include "shadelab/SceneKeys.h"
 #include "shadelab/ValueLimits.h"
 #include "slCoreBoundary.h"
 #include "slImageReader.h"
@@ -368,7 +369,7 @@ void slScene::SetLightsFromVTK(vtkLightCollection* lights)
       l.space = shadelab::LightSpace::Camera;
     }
     l.direction = focal - position;
-    if (!(glm::length(l.direction) > 0.0f))
+    if (!shadelab::directionProblem(l.direction).empty())
     {
       l.direction = glm::vec3(0.0f, 0.0f, -1.0f);
       note(this->LightNotes, "VTK light " + std::to_string(index) + ": position equals focal point; pointing along -z");
