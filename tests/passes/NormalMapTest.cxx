@@ -210,4 +210,10 @@ TEST(NormalMap, ANewMapperWhereAFreedOneWasGetsItsTangents)
     sameAddress = static_cast<const void*>(mapper.GetPointer()) == freed;
     EXPECT_NEAR(stage.render().at(50, 50)[0], expected, 3.0f / 255.0f) << "attempt " << attempt;
   }
+  if (!sameAddress)
+  {
+    // AddressSanitizer quarantines freed memory, for one: then the case
+    // this test is about never arose, and passing would say nothing.
+    GTEST_SKIP() << "no new mapper was made at a freed one's address";
+  }
 }
