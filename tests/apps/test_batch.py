@@ -1,7 +1,7 @@
 """`shadelab normals|light|cosine MESH... -o FOLDER`: each mesh gives the file
 a run of its own would give, a failing mesh is one line and does not stop
 the others, and name clashes and misuse are refused before any work."""
-import filecmp
+import itertools
 import os
 import struct
 import subprocess
@@ -38,9 +38,12 @@ class BatchTest(unittest.TestCase):
         os.mkdir(os.path.join(self.work, "out"))
 
     def test_each_mesh_as_its_own_run_and_failures_do_not_stop_the_rest(self):
-        for command, options in COMMANDS.items():
-            with self.subTest(command=command):
-                out = os.path.join(self.work, command)
+        # Uncompressed too: then a difference is found at its byte, and the
+        # header says which array holds it.
+        for (command, options), compress in itertools.product(COMMANDS.items(), ("lz4", "none")):
+            with self.subTest(command=command, compress=compress):
+                options = [*options, "--compress", compress]
+                out = os.path.join(self.work, command + "-" + compress)
                 os.mkdir(out)
                 r = shadelab(command, SPOT, "bad.obj", "tet.off", "-o", out, *options, cwd=self.work)
                 self.assertEqual(r.returncode, 1)
@@ -50,8 +53,22 @@ class BatchTest(unittest.TestCase):
                 for mesh, name in ((SPOT, "spot"), ("tet.off", "tet")):
                     single = shadelab(command, mesh, "-o", name + ".vtp", *options, cwd=self.work)
                     self.assertEqual(single.returncode, 0, single.stderr)
-                    self.assertTrue(filecmp.cmp(os.path.join(self.work, name + ".vtp"), os.path.join(out, name + ".vtp"),
-                                                shallow=False), name)
+                    self.assertSameBytes(os.path.join(self.work, name + ".vtp"), os.path.join(out, name + ".vtp"))
+
+    def assertSameBytes(self, one, batch):
+        with open(one, "rb") as f:
+            a = f.read()
+        with open(batch, "rb") as f:
+            b = f.read()
+        if a == b:
+            return
+        at = next((i for i, (x, y) in enumerate(zip(a, b)) if x != y), min(len(a), len(b)))
+        header = a[:a.find(b"<AppendedData")].decode("latin-1")
+        appended = a.find(b"<AppendedData")
+        appended = a.find(b"_", appended) + 1 if appended >= 0 else -1
+        self.fail("%s differs from its single run's file (%d and %d bytes) at byte %d%s: %r against %r\n%s" % (
+            batch, len(b), len(a), at, " (appended data offset %d)" % (at - appended) if 0 <= appended <= at else "",
+            a[max(0, at - 8):at + 24], b[max(0, at - 8):at + 24], header))
 
     def test_format_names_the_outputs(self):
         r = shadelab("normals", SPOT, "tet.off", "-o", "out", "--format", "ply", cwd=self.work)
