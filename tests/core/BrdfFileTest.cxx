@@ -109,6 +109,21 @@ TEST(BrdfFile, TakesCommentsBlankLinesAndNoParameters)
   EXPECT_EQ(other.parameters[2].defaultValue, glm::vec3(0.0f, 1.0f, 1.0f));
 }
 
+TEST(BrdfFile, ParametersMayTakeAnyNameButBRDFsArguments)
+{
+  // L, V and N are free here: this BRDF names its arguments otherwise, and
+  // the L of another function, of a call or of a comment hides nothing.
+  const BrdfFile file = parseBrdfText("::begin parameters\nfloat L 0 1 0.5\ncolor N 0 0 1\nbool V 1\n"
+                                      "::end parameters\n::begin shader\n"
+                                      "float f(float L) { return L; }\n"
+                                      "vec3 BRDF(vec3 l, vec3 v, vec3 n, vec3 x, vec3 y); // vec3 BRDF(vec3 L) {\n"
+                                      "vec3 BRDF(vec3 l, vec3 v, vec3 n, vec3 x, vec3 y)\n"
+                                      "{ return N * f(L) * (V ? 1.0 : 0.0); }\n::end shader\n",
+    "free.brdf");
+  ASSERT_EQ(file.parameters.size(), 3u);
+  EXPECT_EQ(file.parameters[0].name, "L");
+}
+
 TEST(BrdfFile, RejectsBadFilesWithOneLine)
 {
   const std::pair<std::string, std::string> cases[] = {
@@ -152,6 +167,13 @@ TEST(BrdfFile, RejectsBadFilesWithOneLine)
     { withParameters("float a__b 0 1 0\n"), "bad.brdf:2: \"a__b\" is a name GLSL reserves (gl_ prefix or __)" },
     { withParameters("float uniform 0 1 0\n"), "bad.brdf:2: \"uniform\" is a GLSL keyword" },
     { withParameters("float a 0 1 0\nbool a 1\n"), "bad.brdf:3: a second parameter named \"a\" (the first is on line 2)" },
+    { withParameters("float a 0 1 0\ncolor N 0 0 1\n"),
+      "bad.brdf:3: parameter \"N\" has the name of an argument of BRDF, which hides it there (rename it)" },
+    { "::begin parameters\nfloat toLight 0 1 0\n::end parameters\n::begin shader\n"
+      "float f(float L) { return L; } // vec3 BRDF(vec3 V) {\n"
+      "vec3 BRDF(in vec3 toLight /* L */, vec3 V, vec3 N, vec3 X, const vec3 Y)\n{ return vec3(f(toLight.x)); }\n"
+      "::end shader\n",
+      "bad.brdf:2: parameter \"toLight\" has the name of an argument of BRDF, which hides it there (rename it)" },
     { "::begin parameters\n::end parameters\n::begin parameters\n",
       "bad.brdf:3: a second parameters block" },
     { std::string("analytic\n\x1b[31m\n"), "bad.brdf:2: control byte \\x1B in the text" },

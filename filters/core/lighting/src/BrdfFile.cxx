@@ -251,6 +251,88 @@ bool mentionsBrdfFunction(const std::string& shader)
   return false;
 }
 
+/// @p shader with its // and /* */ comments replaced by spaces (line
+/// breaks kept).
+std::string withoutComments(const std::string& shader)
+{
+  std::string out = shader;
+  for (size_t at = 0; at < out.size(); ++at)
+  {
+    if (out.compare(at, 2, "//") == 0)
+    {
+      for (; at < out.size() && out[at] != '\n'; ++at)
+      {
+        out[at] = ' ';
+      }
+    }
+    else if (out.compare(at, 2, "/*") == 0)
+    {
+      const size_t end = out.find("*/", at + 2);
+      const size_t stop = end == std::string::npos ? out.size() : end + 2;
+      for (; at < stop; ++at)
+      {
+        out[at] = out[at] == '\n' ? '\n' : ' ';
+      }
+      --at;
+    }
+  }
+  return out;
+}
+
+bool isNameChar(char c)
+{
+  return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+}
+
+/// The names of the arguments of the definition of BRDF in @p shader
+/// ("vec3 BRDF(vec3 L, ...) {"): the last name in each comma-separated part
+/// of its argument list. Empty when the shader has no such definition.
+std::vector<std::string> brdfArgumentNames(const std::string& shader)
+{
+  const std::string code = withoutComments(shader);
+  for (size_t at = code.find("BRDF"); at != std::string::npos; at = code.find("BRDF", at + 1))
+  {
+    if ((at > 0 && isNameChar(code[at - 1])) || (at + 4 < code.size() && isNameChar(code[at + 4])))
+    {
+      continue;
+    }
+    const size_t open = code.find_first_not_of(" \t\r\n", at + 4);
+    if (open == std::string::npos || code[open] != '(')
+    {
+      continue;
+    }
+    const size_t close = code.find(')', open);
+    const size_t body = close == std::string::npos ? close : code.find_first_not_of(" \t\r\n", close + 1);
+    if (body == std::string::npos || code[body] != '{')
+    {
+      continue; // a call or a declaration
+    }
+    std::vector<std::string> names;
+    std::string last, word;
+    for (size_t i = open + 1; i <= close; ++i)
+    {
+      const char c = code[i];
+      if (isNameChar(c))
+      {
+        word += c;
+        continue;
+      }
+      if (!word.empty())
+      {
+        last = word;
+        word.clear();
+      }
+      if ((c == ',' || c == ')') && !last.empty())
+      {
+        names.push_back(last);
+        last.clear();
+      }
+    }
+    return names;
+  }
+  return {};
+}
+
 std::string startsWith(const std::string& s, const std::string& prefix)
 {
   return s.compare(0, prefix.size(), prefix) == 0 ? s.substr(prefix.size()) : std::string();
@@ -405,6 +487,17 @@ BrdfFile parseBrdfText(const std::string& text, const std::string& path)
   {
     fail(path, file.shaderFirstLine - 1,
       "the shader block does not define vec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y)");
+  }
+  // GLSL lets an argument hide a uniform of the same name: the function
+  // would read the argument where the file means the parameter.
+  const std::vector<std::string> arguments = brdfArgumentNames(file.shader);
+  for (const BrdfParameter& p : file.parameters)
+  {
+    if (std::find(arguments.begin(), arguments.end(), p.name) != arguments.end())
+    {
+      fail(path, p.line,
+        "parameter " + quoted(p.name) + " has the name of an argument of BRDF, which hides it there (rename it)");
+    }
   }
   return file;
 }
