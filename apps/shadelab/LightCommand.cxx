@@ -10,10 +10,10 @@
 
 #include "slImageReader.h"
 #include "slRadianceFilter.h"
+#include "slSceneTexture.h"
 
 #include <vtkImageData.h>
 #include <vtkNew.h>
-#include <vtkPointData.h>
 #include <vtkPolyData.h>
 
 #include <iostream>
@@ -58,8 +58,8 @@ int runLight(const std::vector<std::string>& args)
   }
   vtkNew<slImageReader> texture;
   // Without --diffuse-texture or --diffuse-array, the scene's
-  // material.diffuseTexture, as render draws it.
-  vtkNew<vtkImageData> sceneTexture;
+  // material.diffuseTexture, as render draws it (and reference applies it).
+  vtkSmartPointer<vtkImageData> sceneTexture;
   if (cl.has("diffuse-texture"))
   {
     texture->SetFileName(cl.get("diffuse-texture").c_str());
@@ -68,15 +68,13 @@ int runLight(const std::vector<std::string>& args)
   }
   else if (!cl.has("diffuse-array"))
   {
-    slCallOrThrow(scene, [&] { return scene->ReadDiffuseTexture(sceneTexture); });
+    sceneTexture = slReadSceneTexture(scene);
   }
-  const bool useSceneTexture = sceneTexture->GetPointData()->GetScalars() != nullptr;
   return runMeshJobs("light", jobs, [&](const MeshJob& job) {
     vtkSmartPointer<vtkPolyData> mesh = loadMeshWithNormals(job.input);
-    if (useSceneTexture)
+    if (sceneTexture)
     {
-      // render draws a mesh without texture coordinates untextured.
-      filter->SetDiffuseTexture(mesh->GetPointData()->GetTCoords() ? sceneTexture.Get() : nullptr);
+      filter->SetDiffuseTexture(slSceneTextureFor(sceneTexture, mesh));
     }
     filter->SetInputData(mesh);
     runLitFilter(filter, job.input);

@@ -9,9 +9,11 @@
 
 #include "slRadianceReference.h"
 #include "slScene.h"
+#include "slSceneTexture.h"
 
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
+#include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
 
@@ -68,7 +70,8 @@ int runReference(const std::vector<std::string>& args)
                  "Monte Carlo estimate per point of L_o = L_e + integral of f_r L_i cos(theta), lit by an\n"
                  "environment map and/or the scene's lights as small spherical lights. Writes Radiance,\n"
                  "RadianceStdError, DiscreteRadiance and RadianceError (reference - discrete) and prints\n"
-                 "summary statistics of the error.\n"
+                 "summary statistics of the error. The scene's material.diffuseTexture colours k_a and k_d\n"
+                 "as in light (a mesh without texture coordinates is left untextured).\n"
                  "MESH: " << meshFormatsText() << "; point normals are computed if missing.\n\noptions:\n"
               << CommandLine::describe(specs);
     return 0;
@@ -106,8 +109,11 @@ int runReference(const std::vector<std::string>& args)
   filter->SetSeed(cl.getIndex("seed", 1, 0, 2147483647));
   filter->SetLightRadius(cl.getNumber("light-radius", 0.0, 0.0, 1e30));
   filter->SetDirectionalLightAngle(cl.getNumber("sun-angle", 0.5, 1e-4, 45.0));
+  const vtkSmartPointer<vtkImageData> texture = slReadSceneTexture(scene);
   runOnMesh(meshPath, [&] {
-    filter->SetInputData(loadMeshWithNormals(meshPath));
+    vtkSmartPointer<vtkPolyData> mesh = loadMeshWithNormals(meshPath);
+    filter->SetDiffuseTexture(slSceneTextureFor(texture, mesh));
+    filter->SetInputData(mesh);
     runLitFilter(filter, meshPath);
     writeFieldImageIfAsked(
       cl, filter->GetOutput(), scene, "Radiance,DiscreteRadiance,RadianceError,RadianceStdError", cl.get("output"));

@@ -7,6 +7,7 @@
 
 #include "shadelab/BrdfAssignment.h"
 #include "shadelab/Error.h"
+#include "shadelab/ValueLimits.h"
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>
@@ -166,7 +167,8 @@ void BrdfFilePanel::rebuild(const std::string& path)
         connect(row.check, &QCheckBox::toggled, this, [this, p](bool on) { this->setParameter(p, glm::vec3(on ? 1.0f : 0.0f)); });
         break;
       case BrdfParameter::Kind::Color:
-        row.colour = new ColorButton(this);
+        // A .brdf colour has no range of its own: the scene's colours' range.
+        row.colour = new ColorButton(0.0, shadelab::kMaxColourValue, this);
         this->Form->addRow(label, row.colour);
         connect(row.colour, &ColorButton::valueChanged, this, [this, p](const glm::vec3& c) { this->setParameter(p, c); });
         break;

@@ -6,9 +6,11 @@
 
 #include "slCosineField.h"
 #include "slRadianceFilter.h"
+#include "slSceneTexture.h"
 #include "slScene.h"
 #include "slUpdateOrThrow.h"
 
+#include <vtkImageData.h>
 #include <vtkPolyData.h>
 
 #include <QComboBox>
@@ -196,22 +198,26 @@ void FieldsPanel::showField()
   else
   {
     vtkSmartPointer<slLitFilter> filter;
-    if (entry.source == Source::Cosine)
-    {
-      auto cosine = vtkSmartPointer<slCosineField>::New();
-      cosine->SetLightIndex(this->Light->value()); // the box's range is the scene's lights
-      filter = cosine;
-    }
-    else
-    {
-      filter = vtkSmartPointer<slRadianceFilter>::New();
-    }
-    filter->SetInputData(mesh);
-    filter->SetScene(this->Document->vtkScene());
-    filter->SetCamera(this->View->camera());
-    filter->ZeroNormalsAreErrorsOff();
     try
     {
+      if (entry.source == Source::Cosine)
+      {
+        auto cosine = vtkSmartPointer<slCosineField>::New();
+        cosine->SetLightIndex(this->Light->value()); // the box's range is the scene's lights
+        filter = cosine;
+      }
+      else
+      {
+        // The scene's diffuse texture, as the view draws it and the
+        // reference applies it.
+        auto radiance = vtkSmartPointer<slRadianceFilter>::New();
+        radiance->SetDiffuseTexture(slSceneTextureFor(slReadSceneTexture(this->Document->vtkScene()), mesh));
+        filter = radiance;
+      }
+      filter->SetInputData(mesh);
+      filter->SetScene(this->Document->vtkScene());
+      filter->SetCamera(this->View->camera());
+      filter->ZeroNormalsAreErrorsOff();
       slUpdateOrThrow(filter);
     }
     catch (const shadelab::Error& e)

@@ -69,6 +69,7 @@ double finiteEnd(double end)
 LightPanel::LightPanel(ViewerDocument* document, SceneView* view, QWidget* parent)
   : QWidget(parent)
   , Document(document)
+  , View(view)
   , List(new QListWidget(this))
   , Add(new QPushButton(tr("Add"), this))
   , Remove(new QPushButton(tr("Remove"), this))
@@ -149,7 +150,7 @@ void LightPanel::addRow(size_t key)
       row.editor = row.number;
       break;
     case SceneKeyKind::Colour:
-      row.colour = new ColorButton(this->Editor);
+      row.colour = new ColorButton(k.lo, k.hi, this->Editor); // the key's range, above 1 too
       row.editor = row.colour;
       connect(row.colour, &ColorButton::valueChanged, this, [this, index] { this->editKey(index); });
       break;
@@ -341,7 +342,11 @@ void LightPanel::editKey(size_t rowIndex)
   }
   else if (row.space)
   {
-    parseLightSpaceName(row.space->currentText().toStdString(), l.*(key.space));
+    // The light stays where the view shows it: its position and direction
+    // are converted with the view's camera, not kept as numbers.
+    LightSpace space = l.*(key.space);
+    parseLightSpaceName(row.space->currentText().toStdString(), space);
+    l = lightInSpace(l, space, this->View->camera());
   }
   else if (row.number)
   {

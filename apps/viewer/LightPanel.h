@@ -12,11 +12,15 @@
  * as the tooltip, the key's range as the range of its spin boxes, and it is
  * live only for the light types that take the key. An edit writes that one
  * key of the selected light and nothing else, so values the panel shows
- * rounded are never written back rounded. Position and direction follow the
- * light widgets in the view while they are dragged. Every edit reaches the
- * view as uniforms (LightsChange); adding or removing a light, or changing
- * its type, selects another shader variant. No more lights can be added than
- * the lighting pass draws.
+ * rounded are never written back rounded; the one exception is the space:
+ * switching between world and camera space converts the position and
+ * direction with the view's camera (lightInSpace()), so the light stays
+ * where it is in the view. Colours take the key's range, above 1 too
+ * (ColorButton). Position and direction follow the light widgets in the
+ * view while they are dragged. Every edit reaches the view as uniforms
+ * (LightsChange); adding or removing a light, or changing its type, selects
+ * another shader variant. No more lights can be added than the lighting
+ * pass draws.
  */
 
 #include <QString>
@@ -84,6 +88,7 @@ private:
   void editType();
 
   ViewerDocument* Document;
+  SceneView* View; ///< its camera converts a light between world and camera space
   QListWidget* List;
   QPushButton* Add;
   QPushButton* Remove;

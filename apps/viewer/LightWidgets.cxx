@@ -27,22 +27,23 @@ glm::vec3 vec(const double v[3])
   return glm::vec3(static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]));
 }
 
-struct CameraFrame
-{
-  glm::vec3 eye, focal, up;
-};
-
-CameraFrame frameOf(vtkCamera* camera)
-{
-  return { vec(camera->GetPosition()), vec(camera->GetFocalPoint()), vec(camera->GetViewUp()) };
-}
-
 glm::vec3 unit(const glm::vec3& v)
 {
   const float length = glm::length(v);
   return length > 0.0f ? v / length : glm::vec3(0.0f, 0.0f, -1.0f);
 }
 } // namespace
+
+SceneLight lightInSpace(const SceneLight& light, LightSpace space, vtkCamera* camera)
+{
+  if (light.space == space)
+  {
+    return light;
+  }
+  const glm::vec3 eye = vec(camera->GetPosition()), focal = vec(camera->GetFocalPoint()), up = vec(camera->GetViewUp());
+  const SceneLight world = lightInWorldSpace(light, eye, focal, up);
+  return space == LightSpace::Camera ? lightInCameraSpace(world, eye, focal, up) : world;
+}
 
 LightWidgets::LightWidgets(ViewerDocument* document)
   : Document(document)
@@ -159,12 +160,12 @@ void LightWidgets::sync()
     this->build(); // build() calls sync() again with matching widgets
     return;
   }
-  const CameraFrame camera = frameOf(this->Renderer->GetActiveCamera());
+  vtkCamera* camera = this->Renderer->GetActiveCamera();
   const glm::vec3 centre = vec(this->Centre);
   for (size_t w = 0; w < this->Widgets.size(); ++w)
   {
     const SceneLight world =
-      lightInWorldSpace(scene.lights[static_cast<size_t>(this->LightOfWidget[w])], camera.eye, camera.focal, camera.up);
+      lightInSpace(scene.lights[static_cast<size_t>(this->LightOfWidget[w])], LightSpace::World, camera);
     const glm::vec3 d = unit(world.direction);
     glm::vec3 position = world.position, aim = centre;
     if (!lightTakes(world.type, kLightPosition))
@@ -203,8 +204,8 @@ void LightWidgets::onInteraction(vtkObject* caller, unsigned long event, void*)
   vtkLightRepresentation* rep = this->Widgets[w]->GetLightRepresentation();
   Scene scene = this->Document->scene();
   SceneLight& light = scene.lights[static_cast<size_t>(this->LightOfWidget[w])];
-  const CameraFrame camera = frameOf(this->Renderer->GetActiveCamera());
-  SceneLight world = lightInWorldSpace(light, camera.eye, camera.focal, camera.up);
+  vtkCamera* camera = this->Renderer->GetActiveCamera();
+  SceneLight world = lightInSpace(light, LightSpace::World, camera);
   const glm::vec3 position = vec(rep->GetLightPosition()), aim = vec(rep->GetFocalPoint());
   if (glm::length(aim - position) > 0.0f)
   {
@@ -219,7 +220,7 @@ void LightWidgets::onInteraction(vtkObject* caller, unsigned long event, void*)
     world.cutoffDegrees = static_cast<float>(std::min(90.0, std::max(0.5, rep->GetConeAngle())));
     world.edgeDegrees = std::min(world.edgeDegrees, world.cutoffDegrees);
   }
-  light = light.space == LightSpace::Camera ? lightInCameraSpace(world, camera.eye, camera.focal, camera.up) : world;
+  light = lightInSpace(world, light.space, camera);
   if (event == vtkCommand::EndInteractionEvent)
   {
     this->Dragging = false;

@@ -16,6 +16,8 @@
  * @sa vtkLightWidget vtkLightRepresentation shadelab::lightInCameraSpace
  */
 
+#include "shadelab/Scene.h"
+
 #include <vtkSmartPointer.h>
 
 #include <vector>
@@ -31,6 +33,12 @@ namespace shadelab
 namespace viewer
 {
 class ViewerDocument;
+
+/// @p light in @p space for the view's @p camera: the same light at the same
+/// place, its position and direction converted by shadelab::lightInWorldSpace()
+/// and shadelab::lightInCameraSpace() (the renderer's camera-light space). A
+/// light already in @p space is returned as it is.
+SceneLight lightInSpace(const SceneLight& light, LightSpace space, vtkCamera* camera);
 
 class LightWidgets
 {

@@ -36,7 +36,7 @@ MaterialPanel::MaterialPanel(ViewerDocument* document, QWidget* parent)
     row.index = index;
     if (key.vector)
     {
-      row.colour = new ColorButton(builtIn);
+      row.colour = new ColorButton(key.lo, key.hi, builtIn); // the key's range, above 1 too
       row.editor = row.colour;
       connect(row.colour, &ColorButton::valueChanged, this, [this, index](const glm::vec3& value) {
         Scene scene = this->Document->scene();

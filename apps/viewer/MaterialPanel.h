@@ -7,8 +7,9 @@
  *          SHADELAB_MATERIAL_PARAMETERS), of those the scene's model reads.
  *
  * Each row is built from its key: the key's name as the label, what it
- * means as the tooltip, a ColorButton for a colour, a NumberControl over the
- * key's range for a number. A row whose parameter the current model does
+ * means as the tooltip, a ColorButton over the key's range for a colour
+ * (values above 1 are shown and kept), a NumberControl over the key's range
+ * for a number. A row whose parameter the current model does
  * not read (its bit is not in the model row's `reads`) is hidden, so a new
  * material parameter or model needs no edit here. Every change goes to the
  * document at once as a MaterialChange, which the view turns into uniforms:

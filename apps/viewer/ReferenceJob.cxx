@@ -2,10 +2,12 @@
 
 #include "slRadianceReference.h"
 #include "slScene.h"
+#include "slSceneTexture.h"
 #include "slUpdateOrThrow.h"
 
 #include <vtkCamera.h>
 #include <vtkCommand.h>
+#include <vtkImageData.h>
 #include <vtkPolyData.h>
 
 #include <QMetaObject>
@@ -56,10 +58,14 @@ bool ReferenceJob::start(vtkPolyData* mesh, const Scene& scene, vtkCamera* camer
   this->Running = true;
   this->Cancelled = false;
   vtkSmartPointer<slRadianceReference> filter = this->Filter;
-  this->Thread = QThread::create([this, filter] {
+  this->Thread = QThread::create([this, filter, sceneCopy, input] {
     QString error;
     try
     {
+      // The scene's diffuse texture, as the view draws it and
+      // `shadelab light` and `shadelab reference` apply it; read here, off
+      // the GUI thread.
+      filter->SetDiffuseTexture(slSceneTextureFor(slReadSceneTexture(sceneCopy), input));
       slUpdateOrThrow(filter);
     }
     catch (const shadelab::Error& e)

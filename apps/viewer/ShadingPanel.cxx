@@ -3,6 +3,7 @@
 #include "ColorButton.h"
 #include "SceneView.h"
 #include "ViewerDocument.h"
+#include "shadelab/ValueLimits.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -22,7 +23,7 @@ ShadingPanel::ShadingPanel(ViewerDocument* document, SceneView* view, QWidget* p
   , Model(new QComboBox(this))
   , Frequency(new QComboBox(this))
   , Split(new QCheckBox(tr("flat | Gouraud | Phong side by side"), this))
-  , Background(new ColorButton(this))
+  , Background(new ColorButton(0.0, shadelab::kMaxColourValue, this)) // the scene key's range
   , Tangents(new QLabel(this))
   , ComputeTangents(new QPushButton(tr("Compute tangents"), this))
 {

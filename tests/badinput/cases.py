@@ -626,10 +626,12 @@ CASES = [
              'shadelab cosine: --fields: only with --image FILE (it chooses the arrays the image shows)\n'),
     cli_case("reference fields without image", ["reference", "m.off", "--fields", "Radiance", "-o", "out.vtp"],
              'shadelab reference: --fields: only with --image FILE (it chooses the arrays the image shows)\n'),
-    # The scene's material.diffuseTexture shades light's k_d as it does render's: a missing one is an error.
-    ("light scene texture missing", ["light", "q.obj", "--scene", "t.json", "-o", "out.vtp"],
-     {"q.obj": QUAD_OBJ, "t.json": b'{"material": {"diffuseTexture": "gone.png"}, "lights": [{"type": "directional"}]}'}, 1,
-     'shadelab light: gone.png: cannot read image: Could not open file "gone.png" (material.diffuseTexture of t.json)\n'),
+    # The scene's material.diffuseTexture shades light's and reference's k_d as it does render's: a missing one is
+    # an error.
+    *((command + " scene texture missing", [command, "q.obj", "--scene", "t.json", "-o", "out.vtp"],
+       {"q.obj": QUAD_OBJ, "t.json": b'{"material": {"diffuseTexture": "gone.png"}, "lights": [{"type": "directional"}]}'},
+       1, 'shadelab ' + command + ': gone.png: cannot read image: Could not open file "gone.png" (material.diffuseTexture of '
+       't.json)\n') for command in ("light", "reference")),
     cli_case("light diffuse array and texture", ["light", "m.off", "--diffuse-array", "Normals", "--diffuse-texture",
                                                  "t.png", "-o", "out.vtp"],
              'shadelab light: --diffuse-texture: give either --diffuse-array or --diffuse-texture, not both\n'),
@@ -808,11 +810,11 @@ CASES = [
 ]
 
 # A UTF-8 byte order mark: ShadeLab's OBJ parser skips it; a file that goes to vtkOBJReader (here for its
-# group) is refused unless the mark's line is blank or a comment, as VTK would skip the line. The other text
-# formats name the mark with their first keyword.
+# negative indices) is refused unless the mark's line is blank or a comment, as VTK would skip the line. The
+# other text formats name the mark with their first keyword.
 CASES += [
     mesh_case("obj byte order mark before a vtkOBJReader file", "a.obj",
-              b"\xef\xbb\xbfv 0 0 0\nv 1 0 0\nv 0 1 0\nv 5 5 5\ng a\nf 1 2 3\n",
+              b"\xef\xbb\xbfv 0 0 0\nv 1 0 0\nv 0 1 0\nv 5 5 5\nf -4 -3 -2\n",
               'line 1: "v" follows a UTF-8 byte order mark, which VTK\'s OBJ reader would read as part of it and skip '
               'the line; save the file without the mark'),
     mesh_case("off byte order mark", "a.off", b"\xef\xbb\xbf" + TETRA_OFF, 'line 1: expected "OFF", found "\\xEF\\xBB\\xBFOFF"'),

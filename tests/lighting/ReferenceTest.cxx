@@ -260,6 +260,48 @@ TEST(RadianceReference, BadEnvironmentMapsAndNoLight)
   }
 }
 
+TEST(RadianceReference, DiffuseTextureColoursKdAtTheTextureCoordinates)
+{
+  // Lambert under a uniform sky, cosine-weighted: every sample gives
+  // k_d * texel * L_sky exactly. Texture 2 x 1: red then blue; u = 0.25 and
+  // 0.75 are the texels' centres, so the bilinear lookup gives each alone.
+  const glm::vec3 red(0.8f, 0.2f, 0.1f), blue(0.1f, 0.3f, 0.9f), kd(0.5f), sky(1.5f);
+  vtkNew<vtkImageData> texture;
+  texture->SetDimensions(2, 1, 1);
+  vtkNew<vtkFloatArray> texels;
+  texels->SetNumberOfComponents(3);
+  texels->InsertNextTuple3(red.x, red.y, red.z);
+  texels->InsertNextTuple3(blue.x, blue.y, blue.z);
+  texture->GetPointData()->SetScalars(texels);
+  vtkSmartPointer<vtkPolyData> mesh = pointsWithNormals({ { 0, 0, 0, 0, 0, 1 }, { 1, 0, 0, 0, 0, 1 } });
+  vtkNew<slRadianceReference> filter;
+  filter->SetScene(lambertScene({}, kd));
+  filter->SetEnvironmentMap(constantSky(sky));
+  filter->SetStrategyToCosine();
+  filter->SetSamplesPerPoint(8);
+  filter->SetDiffuseTexture(texture);
+  // Without texture coordinates: the error slRadianceFilter gives, no output.
+  filter->SetInputData(mesh);
+  EXPECT_EQ(updateError(filter), "input mesh: a diffuse texture needs point texture coordinates, and the mesh has none");
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+
+  vtkNew<vtkFloatArray> uv;
+  uv->SetNumberOfComponents(2);
+  uv->InsertNextTuple2(0.25, 0.5);
+  uv->InsertNextTuple2(0.75, 0.5);
+  mesh->GetPointData()->SetTCoords(uv);
+  mesh->Modified();
+  vtkPolyData* out = reference(filter, mesh);
+  for (vtkIdType i = 0; i < 2; ++i)
+  {
+    const glm::vec3 texel = i == 0 ? red : blue;
+    for (int c = 0; c < 3; ++c)
+    {
+      EXPECT_NEAR(tuple3(out, "Radiance", i)[c], kd[c] * texel[c] * sky[c], 1e-5) << "point " << i;
+    }
+  }
+}
+
 TEST(RadianceReference, DegenerateMeshGivesNoNaN)
 {
   const double nan = std::numeric_limits<double>::quiet_NaN();

@@ -96,6 +96,70 @@ class LightingCommandsTest(unittest.TestCase):
                 for value, t in zip(point, texel):
                     self.assertAlmostEqual(value, 0.5 * t * cos, places=5, msg=mesh)
 
+    def test_reference_applies_the_scene_diffuse_texture_as_light_does(self):
+        """reference colours k_d with material.diffuseTexture as light does: a textured plane under a small sun has
+        light's Radiance within the reference's own error, a point at the centre of the red texels is
+        k_d * red * I cos / pi, and a mesh without texture coordinates stays untextured in both."""
+        import vtk
+        from vtk.util.numpy_support import vtk_to_numpy
+        red, blue = (0.8, 0.2, 0.2), (0.2, 0.2, 0.8)
+        image = vtk.vtkImageData()
+        image.SetDimensions(2, 2, 1)  # left column red, right column blue
+        image.AllocateScalars(vtk.VTK_UNSIGNED_CHAR, 3)
+        for i in range(4):
+            image.GetPointData().GetScalars().SetTuple3(i, *(round(255 * c) for c in (red if i % 2 == 0 else blue)))
+        writer = vtk.vtkPNGWriter()
+        writer.SetInputData(image)
+        writer.SetFileName(self.out("t.png"))
+        writer.Write()
+        # A 5 x 2 grid on z = 0 with u = x: u = 0.25 is the red texels' centre, 0.75 the blue's; the points in
+        # between mix them (bilinear, repeat wrapping).
+        xs, ys = (0, 0.25, 0.5, 0.75, 1), (0, 1)
+        vertices = "".join("v %g %g 0\n" % (x, y) for y in ys for x in xs)
+        quads = [(i + 1, i + 2, i + 7, i + 6) for i in range(4)]
+        with open(self.out("uv.obj"), "w") as f:
+            f.write(vertices + "".join("vt %g %g\n" % (x, y) for y in ys for x in xs) +
+                    "".join("f {0}/{0} {1}/{1} {2}/{2} {3}/{3}\n".format(*q) for q in quads))
+        with open(self.out("plain.obj"), "w") as f:
+            f.write(vertices + "".join("f %d %d %d %d\n" % q for q in quads))
+        k_d, intensity, sun = 0.9, 2.0, (0.3, 0.2, -1.0)
+        with open(self.out("s.json"), "w") as f:
+            f.write('{"shading": {"model": "lambert-normalized"}, "material": {"ambient": [0, 0, 0], '
+                    '"diffuse": [%g, %g, %g], "specular": [0, 0, 0], "diffuseTexture": "t.png"}, '
+                    '"lights": [{"type": "directional", "intensity": %g, "direction": [%g, %g, %g]}]}'
+                    % (k_d, k_d, k_d, intensity, *sun))
+        cos = 1.0 / math.sqrt(sum(c * c for c in sun))  # N = +z
+
+        def arrays(command, mesh, *options):
+            r = run(command, self.out(mesh), "--scene", self.out("s.json"), *options, "-o", self.out("r.vtp"))
+            self.assertEqual(r.returncode, 0, r.stderr)
+            reader = vtk.vtkXMLPolyDataReader()
+            reader.SetFileName(self.out("r.vtp"))
+            reader.Update()
+            data = reader.GetOutput().GetPointData()
+            return {name: vtk_to_numpy(data.GetArray(name)) for name in ("Radiance", "RadianceStdError")
+                    if data.GetArray(name) is not None}
+
+        for mesh in ("uv.obj", "plain.obj"):
+            light = arrays("light", mesh)["Radiance"]
+            reference = arrays("reference", mesh, "--sampling", "light", "--sun-angle", "0.25", "--samples", "64")
+            self.assertEqual(light.shape, (10, 3))
+            for point, (l, r, sigma) in enumerate(zip(light, reference["Radiance"], reference["RadianceStdError"])):
+                for c in range(3):
+                    self.assertLessEqual(abs(r[c] - l[c]), 0.005 * l[c] + 5 * sigma[c] + 1e-6,
+                                         (mesh, point, c, list(r), list(l)))
+            # The red texels' centre (u = 0.25): the analytic value, red-dominated; without UVs, untextured.
+            expected = red if mesh == "uv.obj" else (1.0, 1.0, 1.0)
+            for point in (1, 6):
+                r, sigma = reference["Radiance"][point], reference["RadianceStdError"][point]
+                for c in range(3):
+                    value = k_d * expected[c] * intensity * cos / math.pi
+                    self.assertLessEqual(abs(r[c] - value), 0.005 * value + 5 * sigma[c], (mesh, point, c))
+                if mesh == "uv.obj":
+                    self.assertGreater(r[0], 3 * max(r[1], r[2]), list(r))
+            if mesh == "uv.obj":
+                self.assertGreater(reference["Radiance"][3][2], 3 * reference["Radiance"][3][0])  # blue at u = 0.75
+
     def test_lobe_at_grazing_incidence(self):
         """Built-in models have f_r = 0 at 90 degrees (slBRDF's grazing limit): refused, not an empty lobe."""
         import vtk

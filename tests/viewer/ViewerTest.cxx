@@ -45,6 +45,7 @@
 #include <vtkPolyData.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
+#include <vtkPlaneSource.h>
 #include <vtkSphereSource.h>
 #include <vtkActor2DCollection.h>
 
@@ -288,6 +289,158 @@ private slots:
         QVERIFY(std::abs(ambient.pixels[i + c] - 255.0 * 0.5 * (0.2 + 0.2 * c)) <= 1.0);
       }
     }
+  }
+
+  void lightSpaceSwitchKeepsTheLightInPlace()
+  {
+    // Camera-light space by hand, from the view's camera: the focal point at
+    // the origin, the eye at (0, 0, 1), x to the right of the view, y up it,
+    // lengths in units of the eye's distance to the focal point.
+    vtkCamera* camera = this->Window->view()->camera();
+    double eye[3], focal[3], viewUp[3], back[3], right[3], up[3];
+    camera->GetPosition(eye);
+    camera->GetFocalPoint(focal);
+    camera->GetViewUp(viewUp);
+    vtkMath::Subtract(eye, focal, back);
+    const double distance = vtkMath::Normalize(back);
+    vtkMath::Cross(viewUp, back, right);
+    vtkMath::Normalize(right);
+    vtkMath::Cross(back, right, up);
+    const auto toCamera = [&](const glm::vec3& v, bool point) {
+      double d[3] = { v.x - (point ? focal[0] : 0.0), v.y - (point ? focal[1] : 0.0), v.z - (point ? focal[2] : 0.0) };
+      const double scale = point ? distance : 1.0;
+      return glm::dvec3(vtkMath::Dot(d, right), vtkMath::Dot(d, up), vtkMath::Dot(d, back)) / scale;
+    };
+    const auto toWorld = [&](const glm::vec3& v, bool point) {
+      const double scale = point ? distance : 1.0;
+      glm::dvec3 w(0.0);
+      for (int i = 0; i < 3; ++i)
+      {
+        w[i] = (point ? focal[i] : 0.0) + scale * (v.x * right[i] + v.y * up[i] + v.z * back[i]);
+      }
+      return w;
+    };
+    // The frame is VTK's view transform, the renderer's: it takes the
+    // focal point to (0, 0, -distance).
+    double f[4] = { focal[0], focal[1], focal[2], 1.0 };
+    camera->GetViewTransformMatrix()->MultiplyPoint(f, f);
+    QVERIFY(std::abs(f[0]) < 1e-9 && std::abs(f[1]) < 1e-9 && std::abs(f[2] + distance) < 1e-9 * distance);
+
+    LightPanel* panel = this->Window->lightPanel();
+    auto* space = qobject_cast<QComboBox*>(panel->editor("space"));
+    QVERIFY(space != nullptr);
+    const auto near = [](const glm::dvec3& expected, const glm::vec3& actual) {
+      return glm::length(expected - glm::dvec3(actual)) < 1e-4 * std::max(1.0, glm::length(expected));
+    };
+    const auto shows = [panel](const char* key, const glm::vec3& value) {
+      bool same = true;
+      for (int i = 0; i < 3; ++i)
+      {
+        same = same && std::abs(panel->componentBox(key, i)->value() - value[i]) <= 1e-4;
+      }
+      return same;
+    };
+
+    // The point light "bulb" at world (1, 1, 1) becomes a camera light at
+    // the same place: the camera-space numbers of that point, the same picture.
+    const Rgb before = this->grab();
+    panel->list()->setCurrentRow(2);
+    const SceneLight bulb = this->Window->document()->scene().lights[2];
+    QCOMPARE(bulb.space, LightSpace::World);
+    space->setCurrentText("camera");
+    const SceneLight bulbInCamera = this->Window->document()->scene().lights[2];
+    QCOMPARE(bulbInCamera.space, LightSpace::Camera);
+    QVERIFY(near(toCamera(bulb.position, true), bulbInCamera.position));
+    QVERIFY(near(toCamera(bulb.direction, false), bulbInCamera.direction));
+    QVERIFY(shows("position", bulbInCamera.position));
+    double differing = fractionDiffering(before, this->grab(), 1);
+    QVERIFY2(differing <= 0.0005, qPrintable(QString("%1 of pixels differ").arg(differing)));
+
+    // The camera spot "rim" becomes a world light where the camera puts it.
+    panel->list()->setCurrentRow(1);
+    const SceneLight rim = this->Window->document()->scene().lights[1];
+    QCOMPARE(rim.space, LightSpace::Camera);
+    space->setCurrentText("world");
+    const SceneLight rimInWorld = this->Window->document()->scene().lights[1];
+    QCOMPARE(rimInWorld.space, LightSpace::World);
+    QVERIFY(near(toWorld(rim.position, true), rimInWorld.position));
+    QVERIFY(near(toWorld(rim.direction, false), rimInWorld.direction));
+    QVERIFY(shows("direction", rimInWorld.direction));
+    differing = fractionDiffering(before, this->grab(), 1);
+    QVERIFY2(differing <= 0.0005, qPrintable(QString("%1 of pixels differ").arg(differing)));
+
+    // And back: the numbers the file gave, to float precision.
+    space->setCurrentText("camera");
+    QVERIFY(near(glm::dvec3(rim.position), this->Window->document()->scene().lights[1].position));
+
+    // Keeping the bulb's numbers instead would have moved it: the picture changes.
+    Scene kept = this->Window->document()->scene();
+    kept.lights[2] = bulb;
+    kept.lights[2].space = LightSpace::Camera;
+    this->Window->document()->setScene(kept, LightsChange);
+    QVERIFY(fractionDiffering(before, this->grab(), 1) > 0.01);
+  }
+
+  void coloursAboveOneKeepTheirValue()
+  {
+    // Colours may exceed 1 (the scene keys' range, up to kMaxColourValue).
+    QFile file(this->path("bright.json"));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({ "imageSize": [320, 240], "shading": { "model": "blinn-phong" },
+      "material": { "diffuse": [1.5, 0.75, 0.3], "emission": [0, 0, 0] },
+      "lights": [ { "name": "lamp", "type": "point", "position": [1, 1, 1],
+        "diffuse": [2, 2, 2], "specular": [3, 1.5, 0] } ] })");
+    file.close();
+    QString error;
+    QVERIFY2(this->Window->openFile(this->path("bright.json"), &error), qPrintable(error));
+    LightPanel* lights = this->Window->lightPanel();
+    MaterialPanel* material = this->Window->materialPanel();
+    QCOMPARE(lights->list()->currentRow(), 0);
+
+    // Each colour control takes its key's range and shows the brightness (the
+    // largest component) as the file gives it; the slider stops at 1.
+    for (const SceneKey<SceneLight>& key : lightKeys())
+    {
+      if (key.kind == SceneKeyKind::Colour)
+      {
+        QCOMPARE(lights->colourButton(key.name)->spinBox()->minimum(), key.lo);
+        QCOMPARE(lights->colourButton(key.name)->spinBox()->maximum(), key.hi);
+      }
+    }
+    for (const SceneKey<SceneMaterial>& key : materialKeys())
+    {
+      if (key.kind == SceneKeyKind::Colour)
+      {
+        QCOMPARE(material->colourControl(key.name)->spinBox()->maximum(), key.hi);
+      }
+    }
+    QVERIFY(lights->colourButton("diffuse")->spinBox()->maximum() > 1.0);
+    QCOMPARE(lights->colourButton("diffuse")->spinBox()->value(), 2.0);
+    QCOMPARE(lights->colourButton("specular")->spinBox()->value(), 3.0);
+    QCOMPARE(lights->colourButton("specular")->slider()->value(), lights->colourButton("specular")->slider()->maximum());
+    QCOMPARE(material->colourControl("diffuse")->spinBox()->value(), 1.5);
+
+    // Edit other values in both panels, then save: the colours are as the file gave them.
+    lights->numberBox("intensity")->setValue(0.5);
+    NumberControl* shininess = this->Window->materialPanel()->numberControl("shininess");
+    shininess->slider()->setValue(shininess->positionOf(64.0));
+    QVERIFY2(this->Window->saveScene(this->path("bright-saved.json"), &error), qPrintable(error));
+    vtkNew<slScene> saved;
+    const QByteArray savedPath = this->path("bright-saved.json").toLocal8Bit();
+    QVERIFY(saved->ReadFile(savedPath.constData()));
+    QCOMPARE(saved->GetScene().lights[0].intensity, 0.5f);
+    QVERIFY(saved->GetScene().lights[0].diffuse == glm::vec3(2.0f));
+    QVERIFY(saved->GetScene().lights[0].specular == glm::vec3(3.0f, 1.5f, 0.0f));
+    QVERIFY(saved->GetScene().material.diffuse == glm::vec3(1.5f, 0.75f, 0.3f));
+
+    // A brightness beyond the slider's end can be typed; the hue stays.
+    lights->colourButton("specular")->spinBox()->setValue(6.0);
+    QVERIFY(this->Window->document()->scene().lights[0].specular == glm::vec3(6.0f, 3.0f, 0.0f));
+    material->colourControl("diffuse")->spinBox()->setValue(3.0);
+    QVERIFY(this->Window->document()->scene().material.diffuse == glm::vec3(3.0f, 1.5f, 0.6f));
+    // The slider still sets a brightness in [0, 1]: half of 1.
+    lights->colourButton("diffuse")->slider()->setValue(500);
+    QVERIFY(this->Window->document()->scene().lights[0].diffuse == glm::vec3(0.5f));
   }
 
   void lightDirectionIsNeverZero()
@@ -807,6 +960,87 @@ private slots:
     QVERIFY(panel->reference()->GetPointData()->GetArray("RadianceError") != nullptr);
     QCOMPARE(panel->progressBar()->value(), 100);
     QCOMPARE(this->Window->view()->mode(), SceneView::FieldMode); // the reference is shown
+  }
+
+  void referenceJobAppliesTheSceneTexture()
+  {
+    // The scene's diffuse texture colours k_d in the job's reference, as the
+    // view draws it: an all-red (0.8, 0.2, 0.2) texture on a plane facing a
+    // small sun gives k_d * red * I / pi (normalised Lambert, N.L = 1).
+    QFile texture(this->path("red.ppm"));
+    QVERIFY(texture.open(QIODevice::WriteOnly));
+    texture.write(QByteArray("P6\n2 2\n255\n") + QByteArray("\xcc\x33\x33", 3).repeated(4));
+    texture.close();
+    Scene scene;
+    scene.model = ShadingModel::LambertNormalized;
+    scene.material.ambient = scene.material.specular = scene.material.emission = glm::vec3(0.0f);
+    scene.material.diffuse = glm::vec3(0.9f);
+    scene.material.diffuseTexture = this->path("red.ppm").toStdString();
+    SceneLight sun;
+    sun.type = LightType::Directional;
+    sun.direction = glm::vec3(0.0f, 0.0f, -1.0f);
+    sun.intensity = 2.0f;
+    scene.lights = { sun };
+    vtkNew<vtkPlaneSource> plane; // in z = 0, normal +z, texture coordinates 0..1
+    plane->SetResolution(2, 2);
+    plane->Update();
+    vtkNew<vtkCamera> camera;
+    ReferenceJob job;
+    QSignalSpy finished(&job, &ReferenceJob::finished);
+    ReferenceSettings settings;
+    settings.samplesPerPoint = 16;
+    settings.strategy = 3; // light sampling
+    QVERIFY(job.start(plane->GetOutput(), scene, camera, settings));
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 60000);
+    QCOMPARE(finished.at(0).at(0).toString(), QString());
+    vtkPolyData* out = job.result();
+    QVERIFY(out != nullptr);
+    const glm::vec3 red(0.8f, 0.2f, 0.2f);
+    for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+    {
+      double radiance[3], sigma[3];
+      out->GetPointData()->GetArray("Radiance")->GetTuple(i, radiance);
+      out->GetPointData()->GetArray("RadianceStdError")->GetTuple(i, sigma);
+      for (int c = 0; c < 3; ++c)
+      {
+        const double expected = 0.9 * red[c] * 2.0 / vtkMath::Pi();
+        QVERIFY2(std::abs(radiance[c] - expected) <= 0.005 * expected + 5.0 * sigma[c],
+          qPrintable(QString("point %1 channel %2: %3, expected %4").arg(i).arg(c).arg(radiance[c]).arg(expected)));
+      }
+    }
+  }
+
+  void fieldsFollowTheSceneTexture()
+  {
+    // The Diffuse field colours k_d with the scene's texture, as the view
+    // draws it: a grey k_d under a (0.8, 0.2, 0.2) texture gives red four
+    // times green at every lit point of the (textured) spot mesh.
+    QFile texture(this->path("red.ppm"));
+    QVERIFY(texture.open(QIODevice::WriteOnly));
+    texture.write(QByteArray("P6\n2 2\n255\n") + QByteArray("\xcc\x33\x33", 3).repeated(4));
+    texture.close();
+    Scene scene = this->Window->document()->scene();
+    scene.material.diffuse = glm::vec3(0.9f);
+    scene.material.diffuseTexture = this->path("red.ppm").toStdString();
+    this->Window->document()->setScene(scene, MaterialChange);
+    this->Window->fieldsPanel()->fieldBox()->setCurrentIndex(3); // Diffuse
+    SceneView* view = this->Window->view();
+    QCOMPARE(view->fieldName(), QString("Diffuse"));
+    vtkDataArray* diffuse = view->fieldMesh()->GetPointData()->GetArray("Diffuse");
+    QVERIFY(diffuse != nullptr);
+    vtkIdType lit = 0;
+    for (vtkIdType i = 0; i < diffuse->GetNumberOfTuples(); ++i)
+    {
+      double d[3];
+      diffuse->GetTuple(i, d);
+      if (d[1] > 1e-6)
+      {
+        ++lit;
+        QVERIFY2(std::abs(d[0] - 4.0 * d[1]) <= 1e-3 * d[0] && std::abs(d[2] - d[1]) <= 1e-3 * d[1],
+          qPrintable(QString("point %1: %2 %3 %4").arg(i).arg(d[0]).arg(d[1]).arg(d[2])));
+      }
+    }
+    QVERIFY(lit > diffuse->GetNumberOfTuples() / 4);
   }
 
   void screenshotsAsPNGAndEXR()

@@ -3,6 +3,7 @@
 #include "shadelab/LightingTables.h"
 #include "shadelab/RadianceEstimator.h"
 #include "slCoreBoundary.h"
+#include "slDiffuseColors.h"
 #include "slEnvironmentLoader.h"
 #include "slFiniteParameters.h"
 #include "slFloat3View.h"
@@ -23,9 +24,11 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <vector>
 
 vtkStandardNewMacro(slRadianceReference);
 vtkCxxSetObjectMacro(slRadianceReference, EnvironmentMap, vtkImageData);
+vtkCxxSetObjectMacro(slRadianceReference, DiffuseTexture, vtkImageData);
 
 namespace
 {
@@ -46,6 +49,18 @@ void addSummary(vtkFieldData* field, const char* name, const glm::dvec3& v)
   a->InsertNextTuple3(v.x, v.y, v.z);
   field->AddArray(a);
 }
+
+/// The material at a point of base colour @p base: k_a and k_d multiplied by
+/// it. f_r is k_d times a factor that does not read k_d plus the specular
+/// lobe (slBRDF()), so this colours the reference as slWithBaseColour()
+/// colours the discrete diffuse and ambient terms.
+shadelab::glsl::slMaterial withBaseColour(shadelab::glsl::slMaterial m, const float* base)
+{
+  const glm::vec3 b(base[0], base[1], base[2]);
+  m.ambient *= b;
+  m.diffuse *= b;
+  return m;
+}
 } // namespace
 
 slRadianceReference::slRadianceReference() = default;
@@ -54,6 +69,7 @@ slRadianceReference::~slRadianceReference()
 {
   this->SetEnvironmentFileName(nullptr);
   this->SetEnvironmentMap(nullptr);
+  this->SetDiffuseTexture(nullptr);
 }
 
 vtkMTimeType slRadianceReference::GetMTime()
@@ -62,6 +78,10 @@ vtkMTimeType slRadianceReference::GetMTime()
   if (this->EnvironmentMap && this->EnvironmentMap->GetMTime() > t)
   {
     t = this->EnvironmentMap->GetMTime();
+  }
+  if (this->DiffuseTexture && this->DiffuseTexture->GetMTime() > t)
+  {
+    t = this->DiffuseTexture->GetMTime();
   }
   return t;
 }
@@ -123,6 +143,18 @@ int slRadianceReference::RequestData(
   reference.samples = this->SamplesPerPoint;
   reference.seed = static_cast<std::uint64_t>(static_cast<std::uint32_t>(this->Seed));
 
+  std::vector<glm::vec3> base; // base colour per point: multiplies k_a and k_d
+  const bool haveBase = slRunCore(this, output, [&] {
+    if (this->DiffuseTexture)
+    {
+      diffuseFromTexture(input, this->DiffuseTexture, base);
+    }
+  });
+  if (!haveBase)
+  {
+    return 0;
+  }
+
   vtkDataArray* tangentArray = nullptr;
   if (!this->GetTangents(input, output, setup, tangentArray))
   {
@@ -143,6 +175,7 @@ int slRadianceReference::RequestData(
   in.points = points.data();
   in.normals = normals.data();
   in.tangents = tangents ? tangents->data() : nullptr;
+  in.baseColour = base.empty() ? nullptr : &base[0].x;
   in.lights = setup.lights;
   in.material = setup.material;
   in.model = static_cast<ShadingModel>(setup.model);
@@ -162,10 +195,16 @@ int slRadianceReference::RequestData(
   for (vtkIdType b = 0; b < batches; ++b)
   {
     vtkSMPTools::For(b * n / batches, (b + 1) * n / batches, [&](vtkIdType begin, vtkIdType end) {
+      // This range's own copy, whose material takes each point's base colour.
+      ReferenceSetup atPoint = reference;
       for (vtkIdType i = begin; i < end; ++i)
       {
+        if (in.baseColour)
+        {
+          atPoint.material = withBaseColour(reference.material, in.baseColour + 3 * i);
+        }
         const RadianceEstimate e =
-          estimateRadiance(reference, points[i], normals[i], tangents ? (*tangents)[i] : glm::vec3(0.0f), setup.eye,
+          estimateRadiance(atPoint, points[i], normals[i], tangents ? (*tangents)[i] : glm::vec3(0.0f), setup.eye,
             static_cast<std::uint64_t>(i));
         for (int c = 0; c < 3; ++c)
         {
@@ -215,6 +254,7 @@ void slRadianceReference::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EnvironmentFileName: " << (this->EnvironmentFileName ? this->EnvironmentFileName : "(none)") << "\n";
   os << indent << "EnvironmentMap: " << this->EnvironmentMap << "\n";
   os << indent << "EnvironmentScale: " << this->EnvironmentScale << "\n";
+  os << indent << "DiffuseTexture: " << this->DiffuseTexture << "\n";
   os << indent << "UseSceneLights: " << this->UseSceneLights << "\n";
   os << indent << "LightRadius: " << this->LightRadius << "\n";
   os << indent << "DirectionalLightAngle: " << this->DirectionalLightAngle << "\n";

@@ -20,6 +20,12 @@
  * its own random stream derived from Seed and its id, so output does not
  * depend on threads. Progress through UpdateProgress().
  *
+ * A diffuse texture (SetDiffuseTexture(), e.g. a scene's
+ * material.diffuseTexture through slReadSceneTexture()) is a base colour that
+ * multiplies k_a and k_d at each point, sampled at the point texture
+ * coordinates exactly as slRadianceFilter samples it: the reference's BRDF
+ * and the discrete radiance both use the coloured material.
+ *
  * Output point arrays (input arrays pass through): "Radiance" (the
  * reference), "RadianceStdError" (standard error of the mean, per channel),
  * "DiscreteRadiance" (the lighting equation with the scene's lights, as
@@ -32,7 +38,7 @@
  * part); the discrete radiance includes the scene's ambient terms, which then
  * show up in RadianceError. A light's single colour is its diffuse colour.
  *
- * @sa slRadianceFilter slLitFilter slImageReader
+ * @sa slRadianceFilter slLitFilter slImageReader slSceneTexture.h
  */
 
 #include "ShadeLabLightingModule.h"
@@ -99,6 +105,15 @@ public:
   ///@}
 
   ///@{
+  /// A texture (e.g. from slImageReader or slReadSceneTexture()) that
+  /// multiplies k_a and k_d, looked up at the point texture coordinates as
+  /// slRadianceFilter::SetDiffuseTexture() does; the input must have them.
+  /// Null (default): none.
+  virtual void SetDiffuseTexture(vtkImageData* image);
+  vtkGetObjectMacro(DiffuseTexture, vtkImageData);
+  ///@}
+
+  ///@{
   /// Whether the scene's lights light the reference (default on).
   vtkSetMacro(UseSceneLights, bool);
   vtkGetMacro(UseSceneLights, bool);
@@ -136,6 +151,7 @@ private:
   char* EnvironmentFileName = nullptr;
   vtkImageData* EnvironmentMap = nullptr;
   double EnvironmentScale = 1.0;
+  vtkImageData* DiffuseTexture = nullptr;
   bool UseSceneLights = true;
   double LightRadius = 0.0;
   double DirectionalLightAngle = 0.5;
