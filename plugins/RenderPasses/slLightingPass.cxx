@@ -31,6 +31,7 @@
 #include <vtkWeakPointer.h>
 
 #include <algorithm>
+#include <iterator>
 #include <map>
 #include <vector>
 
@@ -54,7 +55,6 @@ glm::vec3 toVec3(const double v[3])
   return glm::vec3(static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]));
 }
 
-/// Uniform names of light i, built once.
 /// The uniform names of light i's fields, in the order of
 /// SHADELAB_LIGHT_FIELDS ("slLights[2].position", ...), made once.
 struct LightUniformNames
@@ -65,6 +65,19 @@ struct LightUniformNames
     const std::string base = "slLights[" + std::to_string(i) + "].";
 #define SHADELAB_NAME(type, field, ...) fields.push_back(base + #field);
     SHADELAB_LIGHT_FIELDS(SHADELAB_NAME)
+#undef SHADELAB_NAME
+  }
+};
+
+/// The uniform names of a material's fields, in the order of
+/// SHADELAB_MATERIAL_PARAMETERS ("slMat.ambient", ...), made once.
+struct MaterialUniformNames
+{
+  std::vector<std::string> fields;
+  explicit MaterialUniformNames(const std::string& uniform)
+  {
+#define SHADELAB_NAME(type, field, ...) fields.push_back(uniform + "." #field);
+    SHADELAB_MATERIAL_PARAMETERS(SHADELAB_NAME)
 #undef SHADELAB_NAME
   }
 };
@@ -86,6 +99,16 @@ void setLightUniforms(vtkShaderProgram* program, const LightUniformNames& names,
   size_t f = 0;
 #define SHADELAB_UPLOAD(type, field, ...) setUniform(program, names.fields[f++], light.field);
   SHADELAB_LIGHT_FIELDS(SHADELAB_UPLOAD)
+#undef SHADELAB_UPLOAD
+}
+
+/// Every field of @p m as the uniforms named @p names.
+void setMaterialUniforms(
+  vtkShaderProgram* program, const MaterialUniformNames& names, const shadelab::glsl::slMaterial& m)
+{
+  size_t f = 0;
+#define SHADELAB_UPLOAD(type, field, ...) setUniform(program, names.fields[f++], m.field);
+  SHADELAB_MATERIAL_PARAMETERS(SHADELAB_UPLOAD)
 #undef SHADELAB_UPLOAD
 }
 
@@ -138,25 +161,89 @@ bool drawsScalarColours(const std::string& fragmentShader)
   return contains(fragmentShader, "vertexColorVSOutput") || contains(fragmentShader, "colortexture") ||
     contains(fragmentShader, "textureC");
 }
+
+/// What the pass needs to know of a built shader program, read from its
+/// fragment shader's source once (the source is fixed once compiled, and
+/// copying it for every actor of every frame would cost in scenes of many
+/// actors).
+struct ProgramFacts
+{
+  bool scalarColours = false; ///< drawsScalarColours()
+  bool backface = false;      ///< a Variant::backface program (slMatBack)
+};
+
+/// Values the pass keeps per object it does not own (mappers, shader
+/// programs), by address. An entry holds a weak pointer to its object: once
+/// the object is freed, the entry is not found, even by a new object at the
+/// same address. Entries of freed objects are dropped when an insertion
+/// finds the map past twice its size after the last sweep: a long-running
+/// program that makes and frees many actors keeps it within about twice the
+/// number of live objects, at an amortised constant cost per insertion.
+template <typename Object, typename Value>
+class WeakKeyedMap
+{
+public:
+  /// The value of @p object, or null if it has none (or is not the object
+  /// the entry at its address was made for).
+  const Value* Find(Object* object) const
+  {
+    const auto entry = this->Entries.find(object);
+    return entry != this->Entries.end() && entry->second.first == object ? &entry->second.second : nullptr;
+  }
+
+  /// Gives @p object the value @p value (in place of a freed object's).
+  const Value& Insert(Object* object, const Value& value)
+  {
+    if (this->Entries.size() > 2 * this->SizeAfterSweep)
+    {
+      for (auto entry = this->Entries.begin(); entry != this->Entries.end();)
+      {
+        entry = entry->second.first ? std::next(entry) : this->Entries.erase(entry);
+      }
+      this->SizeAfterSweep = this->Entries.size();
+    }
+    auto& entry = this->Entries[object];
+    entry = { object, value };
+    return entry.second;
+  }
+
+  size_t Size() const { return this->Entries.size(); }
+
+private:
+  std::map<Object*, std::pair<vtkWeakPointer<Object>, Value>> Entries;
+  size_t SizeAfterSweep = 0;
+};
 } // namespace
 
 struct slLightingPass::Internals
 {
   std::vector<shadelab::glsl::slLight> LightsVC; // view coordinates
   std::vector<LightUniformNames> Names;
+  const MaterialUniformNames FrontMaterialNames{ "slMat" };
+  const MaterialUniformNames BackMaterialNames{ "slMatBack" };
   bool Parallel = false;
   bool ReportedTooManyLights = false; // until the lights fit again
   bool WarnedNoNormals = false;
   bool WarnedNoTangents = false;
   bool WarnedShadows = false;
-  // Mappers given the slTangentMC attribute; weak, so that a new mapper at a
-  // freed one's address is not taken for it.
-  std::map<vtkMapper*, vtkWeakPointer<vtkMapper>> TangentMappers;
-  // Whether each shader program draws scalar colours (drawsScalarColours()),
-  // read from its source once: the source is fixed once compiled, and
-  // copying it for every actor of every frame would cost in scenes of many
-  // actors. Weak, as TangentMappers.
-  std::map<vtkShaderProgram*, std::pair<vtkWeakPointer<vtkShaderProgram>, bool>> ScalarColourPrograms;
+  // Mappers given the slTangentMC attribute (a new mapper at a freed one's
+  // address is not taken for it).
+  WeakKeyedMap<vtkMapper, bool> TangentMappers;
+  // What each shader program the pass sets is (ProgramFacts).
+  WeakKeyedMap<vtkShaderProgram, ProgramFacts> Programs;
+
+  const ProgramFacts& FactsOf(vtkShaderProgram* program)
+  {
+    if (const ProgramFacts* known = this->Programs.Find(program))
+    {
+      return *known;
+    }
+    const std::string& source = program->GetFragmentShader()->GetSource();
+    ProgramFacts facts;
+    facts.scalarColours = drawsScalarColours(source);
+    facts.backface = shaders::hasBackfaceMaterial(source);
+    return this->Programs.Insert(program, facts);
+  }
 
   // The .brdf file, if any: its GLSL as the shaders hold it, its parameter
   // values (uniforms), and what compiling its GLSL on its own gave.
@@ -629,12 +716,11 @@ void slLightingPass::MapTangents(const vtkRenderState* s)
     {
       continue;
     }
-    vtkWeakPointer<vtkMapper>& mapped = this->Internal->TangentMappers[mapper];
-    if (mapped != mapper)
+    if (!this->Internal->TangentMappers.Find(mapper))
     {
       // Once per mapper: mapping an attribute marks the mapper modified.
       mapper->MapDataArrayToVertexAttribute("slTangentMC", "Tangents", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
-      mapped = mapper;
+      this->Internal->TangentMappers.Insert(mapper, true);
     }
   }
 }
@@ -750,7 +836,7 @@ bool slLightingPass::PreReplaceShaderValues(
 }
 
 bool slLightingPass::PostReplaceShaderValues(std::string& vertexShader, std::string&,
-  std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+  std::string& fragmentShader, vtkAbstractMapper*, vtkProp* prop)
 {
   if (!contains(fragmentShader, kLightTag))
   {
@@ -803,6 +889,13 @@ bool slLightingPass::PostReplaceShaderValues(std::string& vertexShader, std::str
   variant.model = this->Model;
   variant.componentView = this->Component != TOTAL;
   variant.brdf = this->Internal->BrdfSource;
+  shaders::FragmentInputs inputs;
+  inputs.scalarColors = drawsScalarColours(fragmentShader);
+  // As VTK, which reads a backface property only where the property's own
+  // colours colour the surface (not under shown scalars). Actors without
+  // one get shaders without a trace of it.
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  variant.backface = actor && actor->GetBackfaceProperty() && !inputs.scalarColors;
   // A BRDF whose GLSL does not compile is reported once, in one line
   // (GetBrdfError()); the mesh is drawn with the model meanwhile, so that
   // VTK's compile of the whole shader does not fail as well.
@@ -810,8 +903,6 @@ bool slLightingPass::PostReplaceShaderValues(std::string& vertexShader, std::str
   {
     variant.brdf.clear();
   }
-  shaders::FragmentInputs inputs;
-  inputs.scalarColors = drawsScalarColours(fragmentShader);
   inputs.texture = contains(fragmentShader, "actortexture") && contains(fragmentShader, "tcoordVCVSOutput");
   inputs.mapperFaceNormal = !vertexNormals && contains(fragmentShader, "normalVCVSOutput");
   // VTK maps normals itself only for 3-component tangents; 4-component
@@ -844,10 +935,10 @@ bool slLightingPass::PostReplaceShaderValues(std::string& vertexShader, std::str
 
   vtkShaderProgram::Substitute(vertexShader, kDeclarationTag, shaders::vertexDeclarations(variant), false);
   vtkShaderProgram::Substitute(vertexShader, "//VTK::Light::Impl",
-    shaders::vertexImplementation(frequency, inputs.surfaceTangent) + "//VTK::Light::Impl", false);
+    shaders::vertexImplementation(variant, inputs.surfaceTangent) + "//VTK::Light::Impl", false);
   vtkShaderProgram::Substitute(
     fragmentShader, kDeclarationTag, shaders::fragmentDeclarations(variant, inputs), false);
-  vtkShaderProgram::Substitute(fragmentShader, kLightTag, shaders::fragmentImplementation(frequency, inputs), false);
+  vtkShaderProgram::Substitute(fragmentShader, kLightTag, shaders::fragmentImplementation(variant, inputs), false);
   vtkShaderProgram::Substitute(fragmentShader, kTextureTag, "", false);
   return true;
 }
@@ -859,21 +950,23 @@ bool slLightingPass::SetShaderParameters(
   {
     return true; // not one of our shaders, or everything was optimised away
   }
-  shadelab::glsl::slMaterial m;
+  Internals& in = *this->Internal;
   vtkActor* actor = vtkActor::SafeDownCast(prop);
-  if (this->UseSceneMaterial && this->Scene)
+  vtkProperty* backProperty = actor ? actor->GetBackfaceProperty() : nullptr;
+  const bool sceneMaterial = this->UseSceneMaterial && this->Scene;
+  // What the program is matters only for the property's material (scalar
+  // colours) and for an actor with a backface property (whether its shaders
+  // were built for one); for the others it is not looked up.
+  const ProgramFacts* facts = !sceneMaterial || backProperty ? &in.FactsOf(program) : nullptr;
+  shadelab::glsl::slMaterial m;
+  if (sceneMaterial)
   {
     m = shadelab::toEvaluationMaterial(this->Scene->GetScene().material);
   }
   else
   {
     m = actor ? materialOf(actor->GetProperty()) : shadelab::toEvaluationMaterial(shadelab::SceneMaterial());
-    auto& scalarColours = this->Internal->ScalarColourPrograms[program];
-    if (scalarColours.first != program)
-    {
-      scalarColours = { program, drawsScalarColours(program->GetFragmentShader()->GetSource()) };
-    }
-    if (actor && scalarColours.second)
+    if (actor && facts->scalarColours)
     {
       // As in VTK, the scalar colour (the shader's base colour) takes the
       // place of the property's ambient and diffuse colours.
@@ -884,12 +977,16 @@ bool slLightingPass::SetShaderParameters(
   // Each light with this actor's k_a, k_d, k_s folded in (slFoldLight), as
   // the CPU kernel folds them; the shader shades with slUnitMaterial(slMat).
   // A .brdf file's BRDF takes k_d's place: the lights are folded with k_d = 1.
-  const Internals& in = *this->Internal;
   const bool brdf = in.Brdf && in.BrdfError.empty();
-  shadelab::glsl::slMaterial folding = m;
+  auto folding = [brdf](shadelab::glsl::slMaterial k) {
+    if (brdf)
+    {
+      k.diffuse = glm::vec3(1.0f);
+    }
+    return k;
+  };
   if (brdf)
   {
-    folding.diffuse = glm::vec3(1.0f);
     for (size_t i = 0; i < in.Brdf->parameters.size(); ++i)
     {
       const shadelab::BrdfParameter& p = in.Brdf->parameters[i];
@@ -909,17 +1006,42 @@ bool slLightingPass::SetShaderParameters(
     }
   }
   const std::vector<shadelab::glsl::slLight>& lights = in.LightsVC;
-  for (size_t i = 0; i < lights.size(); ++i)
+  if (actor && facts && facts->backface)
   {
-    setLightUniforms(program, in.Names[i], shadelab::glsl::slFoldLight(lights[i], folding));
+    // Shaders with a backface material: k_a, k_d, k_s differ by side, so
+    // the lights carry only their intensity and the shader multiplies each
+    // side's coefficients into the sums (slLightAll). Both sides take the
+    // scene's material when it is used, and the front's when the backface
+    // property was taken away after the shaders were built (VTK rebuilds
+    // them only after a change to the actor's own property).
+    vtkProperty* backSide = backProperty ? backProperty : actor->GetProperty();
+    const shadelab::glsl::slMaterial front = folding(m);
+    const shadelab::glsl::slMaterial back = folding(sceneMaterial || !backProperty ? m : materialOf(backProperty));
+    const shadelab::glsl::slMaterial intensityOnly = shadelab::glsl::slUnitMaterial(front);
+    for (size_t i = 0; i < lights.size(); ++i)
+    {
+      setLightUniforms(program, in.Names[i], shadelab::glsl::slFoldLight(lights[i], intensityOnly));
+    }
+    setMaterialUniforms(program, in.FrontMaterialNames, front);
+    setMaterialUniforms(program, in.BackMaterialNames, back);
+    // VTK's colour code gives faces seen from behind this opacity, but VTK
+    // sets it only with the backface colours, which the pass's lighting
+    // leaves unused (so the compiler drops them).
+    program->SetUniformf("opacityUniformBF", static_cast<float>(backSide->GetOpacity()));
   }
-#define SHADELAB_UPLOAD(type, field, ...) setUniform(program, "slMat." #field, m.field);
-  SHADELAB_MATERIAL_PARAMETERS(SHADELAB_UPLOAD)
-#undef SHADELAB_UPLOAD
+  else
+  {
+    const shadelab::glsl::slMaterial folded = folding(m);
+    for (size_t i = 0; i < lights.size(); ++i)
+    {
+      setLightUniforms(program, in.Names[i], shadelab::glsl::slFoldLight(lights[i], folded));
+    }
+    setMaterialUniforms(program, in.FrontMaterialNames, m);
+  }
   program->SetUniformi("slComponent", this->Component);
   program->SetUniformi("slComponentLight", this->ComponentLight);
   program->SetUniformi("slFalseColor", this->FalseColor ? 1 : 0);
-  program->SetUniformi("slParallel", this->Internal->Parallel ? 1 : 0);
+  program->SetUniformi("slParallel", in.Parallel ? 1 : 0);
   program->SetUniformf("slNormalScale", actor ? static_cast<float>(actor->GetProperty()->GetNormalScale()) : 1.0f);
   return true;
 }
@@ -951,4 +1073,8 @@ void slLightingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DelegatePass: " << this->DelegatePass.GetPointer() << "\n";
   os << indent << "NumberOfLightsUsed: " << this->GetNumberOfLightsUsed() << "\n";
   os << indent << "NumberOfShaderBuilds: " << this->GetNumberOfShaderBuilds() << "\n";
+  // What the pass keeps per mapper and shader program it has seen (entries
+  // of freed ones are dropped as the records grow).
+  os << indent << "TrackedMappers: " << this->Internal->TangentMappers.Size() << "\n";
+  os << indent << "TrackedShaderPrograms: " << this->Internal->Programs.Size() << "\n";
 }

@@ -33,6 +33,17 @@
  *   property's ambient and diffuse colours, as in VTK (its intensities
  *   stay), and multiply the scene's k_a and k_d; the actor's texture
  *   multiplies k_a and k_d.
+ * - Backface property (vtkActor::SetBackfaceProperty), as in VTK: with the
+ *   actors' vtkProperty material, faces seen from behind take its ambient,
+ *   diffuse and specular colours and coefficients, its specular power and
+ *   its opacity, lit with the flipped normal (as faces seen from behind
+ *   always are); under shown scalars VTK leaves it unused, and so does the
+ *   pass. The scene's material is both sides'. Only actors with one get shaders
+ *   with a second material (lights uploaded without k_a, k_d, k_s, which
+ *   the shader multiplies in per side); other actors' shaders and uniforms
+ *   carry none of it. As in VTK, a backface property given or taken away
+ *   after the actor was drawn shows once the actor's shaders are rebuilt
+ *   (after a change to its vtkProperty, for instance).
  * - Normal maps (Phong frequency): the property's normal texture
  *   (vtkProperty::SetNormalTexture, tangent space, OpenGL green-up) perturbs
  *   the normal using the mesh's point Tangents. 3-component tangents go
@@ -76,10 +87,8 @@
  * translucent actors (VTK's lighting), actors whose property has lighting
  * off, lines and points that VTK leaves unlit (without point normals, or
  * with flat interpolation: ambient + diffuse colour), volumes and other
- * non-polydata props. Not supported: a backface property
- * (vtkActor::SetBackfaceProperty; both sides take the front material),
- * shadows (vtkShadowMapPass as the delegate: the picture has
- * none, and the pass warns once) and other passes that rewrite VTK's
+ * non-polydata props. Not supported: shadows (vtkShadowMapPass as the
+ * delegate: the picture has none, and the pass warns once) and other passes that rewrite VTK's
  * lighting code, and VTK's PBR interpolation (lit with the pass's model and
  * the property's ambient, diffuse and specular). A .brdf file's GLSL is compiled once on
  * its own (with ShadeLab's declarations) before it goes into VTK's shaders:

@@ -23,6 +23,16 @@ std::string lightTypeFunction(const std::vector<int>& types)
 
 const char* const kBrdfMarker = "// ---- BRDF of a .brdf file: its parameters, then its shader ----\n";
 
+const char* const kBackfaceDeclaration =
+  "uniform slMaterial slMatBack; // faces seen from behind: the actor's backface property\n";
+
+/// The GLSL material of the side a fragment shows: slMatBack for faces seen
+/// from behind in a Variant::backface variant, else slMat.
+std::string sideMaterial(const Variant& variant)
+{
+  return variant.backface ? "(gl_FrontFacing == false ? slMatBack : slMat)" : "slMat";
+}
+
 /// GLSL of one light shaded with a .brdf file's BRDF.
 std::string brdfFunctions()
 {
@@ -44,6 +54,11 @@ std::string brdfFunctions()
          "}\n";
 }
 } // namespace
+
+bool hasBackfaceMaterial(const std::string& fragmentShader)
+{
+  return fragmentShader.find(kBackfaceDeclaration) != std::string::npos;
+}
 
 std::string tangentExpression(bool surfaceTangent)
 {
@@ -86,7 +101,8 @@ std::string declarations(const Variant& variant)
     "// The light count and types are compiled in: the loop unrolls and type tests fold.\n"
     "const int slLightCount = " +
     std::to_string(lightTypes.size()) + ";\n" + lightTypeFunction(lightTypes) +
-    "uniform slMaterial slMat;\n"
+    "uniform slMaterial slMat;\n" +
+    std::string(variant.backface ? kBackfaceDeclaration : "") +
     "const int slModel = " + std::to_string(variant.model) + "; // compiled in: model tests fold\n"
     "// Compiled in: without a component view the shaders hold no code for one\n"
     "// (llvmpipe runs both sides of every branch, taken or not).\n"
@@ -105,12 +121,18 @@ std::string declarations(const Variant& variant)
     "}\n"
     "\n"
     "// All lights (or the chosen one) at P with normal N and tangent T (xyz,\n"
-    "// MikkTSpace handedness w; 0 without one). The lights arrive with k_a, k_d,\n"
-    "// k_s folded in (slFoldLight), so the base colour (scalars, texture)\n"
+    "// MikkTSpace handedness w; 0 without one) on a side of material m (slMat,\n"
+    "// or slMatBack seen from behind). " +
+    std::string(variant.backface
+        ? "The lights arrive without k_a, k_d, k_s, which differ\n"
+          "// by side: m's multiply the sums here. "
+        : "The lights arrive with k_a, k_d, k_s\n"
+          "// folded in (slFoldLight). ") +
+    "The base colour (scalars, texture)\n"
     "// multiplies the sum afterwards (slWithBaseColour).\n"
-    "slTerms slLightAll(vec3 P, vec3 N, vec4 T)\n"
+    "slTerms slLightAll(vec3 P, vec3 N, vec4 T, slMaterial m)\n"
     "{\n"
-    "  slMaterial unit = slUnitMaterial(slMat);\n"
+    "  slMaterial unit = slUnitMaterial(m);\n"
     "  vec3 n = slSafeNormalize(N);\n"
     "  vec3 v = slSafeNormalize(slEye(P) - P);\n" +
     std::string(brdf ? "  // The .brdf frame: the lighting core's tangent X (the frame built from\n"
@@ -128,7 +150,11 @@ std::string declarations(const Variant& variant)
     std::string(brdf ? "      t = slAddTerms(t, slShadeBrdf(light, unit, P, n, v, X, Y));\n"
                      : "      t = slAddTerms(t, slShadeLightUnit(light, unit, slModel, P, n, T.xyz, v));\n") +
     "    }\n"
-    "  }\n"
+    "  }\n" +
+    std::string(variant.backface ? "  t.ambient = t.ambient * m.ambient;\n"
+                                   "  t.diffuse = t.diffuse * m.diffuse;\n"
+                                   "  t.specular = t.specular * m.specular;\n"
+                                 : "") +
     "  return t;\n"
     "}\n"
     "\n"
@@ -150,7 +176,7 @@ std::string brdfCheckShader(const Variant& variant)
     "out vec4 slCheckOutput;\n"
     "void main()\n"
     "{\n"
-    "  slCheckOutput = vec4(slLightAll(vec3(0.0f), vec3(0.0f, 0.0f, 1.0f), vec4(0.0f)).diffuse, 1.0f);\n"
+    "  slCheckOutput = vec4(slLightAll(vec3(0.0f), vec3(0.0f, 0.0f, 1.0f), vec4(0.0f), slMat).diffuse, 1.0f);\n"
     "}\n";
 }
 
@@ -170,20 +196,21 @@ std::string vertexDeclarations(const Variant& variant)
   return std::string();
 }
 
-std::string vertexImplementation(Frequency frequency, bool surfaceTangent)
+std::string vertexImplementation(const Variant& variant, bool surfaceTangent)
 {
   const std::string T = tangentExpression(surfaceTangent);
-  switch (frequency)
+  switch (variant.frequency)
   {
     case Flat:
       return "  slFlatVertexVC = vertexVCVSOutput; // the provoking vertex lights the whole face\n";
     case Gouraud:
-      // True Gouraud: light once per vertex, for the front and the back side.
+      // True Gouraud: light once per vertex, for the front and the back side
+      // (the flipped normal, and the backface material if there is one).
       return "  {\n"
              "    vec3 slP = vertexVCVSOutput.xyz;\n"
              "    vec3 slN = normalVCVSOutput;\n"
-             "    slTerms slFront = slLightAll(slP, slN, " + T + ");\n"
-             "    slTerms slBack = slLightAll(slP, -slN, " + T + ");\n"
+             "    slTerms slFront = slLightAll(slP, slN, " + T + ", slMat);\n"
+             "    slTerms slBack = slLightAll(slP, -slN, " + T + ", " + (variant.backface ? "slMatBack" : "slMat") + ");\n"
              "    slAmbientVS = slFront.ambient;\n"
              "    slDiffuseVS = slFront.diffuse;\n"
              "    slSpecularVS = slFront.specular;\n"
@@ -248,7 +275,7 @@ std::string fragmentDeclarations(const Variant& variant, const FragmentInputs& i
          "  vec3 ambient = coloured.ambient;\n"
          "  vec3 diffuse = coloured.diffuse;\n"
          "  vec3 specular = coloured.specular;\n"
-         "  vec3 emission = slMat.emission;\n"
+         "  vec3 emission = slMat.emission; // one for both sides: a vtkProperty has none\n"
          "  if (!slComponentView) { return ambient + diffuse + specular + emission; }\n"
          "  if (slComponent == 1) { return slFalseColor == 1 ? slRamp(slLuminance(ambient)) : ambient; }\n"
          "  if (slComponent == 2) { return slFalseColor == 1 ? slRamp(slLuminance(diffuse)) : diffuse; }\n"
@@ -268,9 +295,11 @@ std::string unlitFragmentImplementation(bool texture)
     (texture ? "  gl_FragData[0] = gl_FragData[0] * texture(actortexture, tcoordVCVSOutput);\n" : "");
 }
 
-std::string fragmentImplementation(Frequency frequency, const FragmentInputs& inputs)
+std::string fragmentImplementation(const Variant& variant, const FragmentInputs& inputs)
 {
-  const std::string T = tangentExpression(inputs.surfaceTangent);
+  // The normals here already face the eye on faces seen from behind (VTK
+  // flips its own, the flat one is turned toward the eye).
+  const std::string tangentAndMaterial = tangentExpression(inputs.surfaceTangent) + ", " + sideMaterial(variant);
   std::string out = "  {\n    vec3 slBase = vec3(1.0f);\n";
   if (inputs.scalarColors)
   {
@@ -285,7 +314,7 @@ std::string fragmentImplementation(Frequency frequency, const FragmentInputs& in
     out += "    slBase = slBase * texture(actortexture, tcoordVCVSOutput).rgb;\n";
   }
   out += "    slTerms slT;\n    float slCos;\n";
-  switch (frequency)
+  switch (variant.frequency)
   {
     case Flat:
       if (inputs.mapperFaceNormal)
@@ -297,7 +326,7 @@ std::string fragmentImplementation(Frequency frequency, const FragmentInputs& in
         out += "    vec3 slN = cross(dFdx(vertexVC.xyz), dFdy(vertexVC.xyz));\n"
                "    if (dot(slN, slEye(vertexVC.xyz) - vertexVC.xyz) < 0.0f) { slN = -slN; }\n";
       }
-      out += "    slT = slLightAll(slFlatVertexVC.xyz, slN, " + T + ");\n"
+      out += "    slT = slLightAll(slFlatVertexVC.xyz, slN, " + tangentAndMaterial + ");\n"
              "    slCos = slComponentView && slComponent == 5 ? slChosenCosTheta(slFlatVertexVC.xyz, slN) : 0.0f;\n";
       break;
     case Gouraud:
@@ -315,7 +344,7 @@ std::string fragmentImplementation(Frequency frequency, const FragmentInputs& in
         out += "    normalVCVSOutput = slTangentToSurface(slDecodeNormal(texture(normalTex, tcoordVCVSOutput).rgb, 1.0f,"
                " slNormalScale), normalVCVSOutput, slTangentVC.xyz, slTangentVC.w);\n";
       }
-      out += "    slT = slLightAll(vertexVC.xyz, normalVCVSOutput, " + T + ");\n"
+      out += "    slT = slLightAll(vertexVC.xyz, normalVCVSOutput, " + tangentAndMaterial + ");\n"
              "    slCos = slComponentView && slComponent == 5 ? slChosenCosTheta(vertexVC.xyz, normalVCVSOutput) : 0.0f;\n";
       break;
   }

@@ -38,7 +38,16 @@ struct Variant
   /// A .brdf file's BRDF (brdfSource()) shading in place of the model's
   /// diffuse and specular factors; empty: the model's.
   std::string brdf;
+  /// Faces seen from behind take a material of their own, slMatBack (an
+  /// actor's backface property): the lights then arrive without k_a, k_d,
+  /// k_s, and each side's multiply the sums. Without one, nothing of this
+  /// is in the shaders.
+  bool backface = false;
 };
+
+/// Whether @p fragmentShader (of a built program) is a Variant::backface
+/// one, whose slMatBack and unfolded lights the pass has to set.
+bool hasBackfaceMaterial(const std::string& fragmentShader);
 
 /// The GLSL of a .brdf file's BRDF as the shaders hold it: its parameters'
 /// uniform declarations followed, line for line, by its shader text.
@@ -82,14 +91,14 @@ std::string tangentExpression(bool surfaceTangent);
 /// for the variant's lights and model.
 std::string declarations(const Variant& variant);
 
-/// Vertex-shader declarations and code for a frequency ("" if none needed).
+/// Vertex-shader declarations and code for the variant's frequency ("" if none needed).
 std::string vertexDeclarations(const Variant& variant);
 /// @p surfaceTangent: slTangentVC holds the mesh's tangents (Gouraud lights with them).
-std::string vertexImplementation(Frequency frequency, bool surfaceTangent);
+std::string vertexImplementation(const Variant& variant, bool surfaceTangent);
 
 /// Fragment-shader declarations and the code that writes gl_FragData[0].
 std::string fragmentDeclarations(const Variant& variant, const FragmentInputs& inputs);
-std::string fragmentImplementation(Frequency frequency, const FragmentInputs& inputs);
+std::string fragmentImplementation(const Variant& variant, const FragmentInputs& inputs);
 
 /// The code that writes gl_FragData[0] where VTK does not light the
 /// primitive (lines and points without point normals, or with flat

@@ -1,13 +1,15 @@
 """slLightingPass in a VTK user's own pipeline: each check predicts the pixel
 from the lighting equation (a flat quad facing a directional light: k_d N.L I
 255) or from what VTK itself draws, never from the pass's earlier output."""
+import math
+import re
 import unittest
 
 import shadelab
 from vtkmodules.vtkCommonCore import vtkFloatArray, vtkLookupTable, vtkUnsignedCharArray
 from vtkmodules.vtkFiltersSources import vtkLineSource, vtkPlaneSource
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow,
-                                         vtkWindowToImageFilter)
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkPolyDataMapper, vtkProperty, vtkRenderer,
+                                         vtkRenderWindow, vtkWindowToImageFilter)
 from vtkmodules.vtkRenderingOpenGL2 import (vtkCameraPass, vtkLightsPass, vtkOpaquePass, vtkRenderPassCollection,
                                             vtkRenderStepsPass, vtkSequencePass, vtkShadowMapPass)
 import vtkmodules.vtkInteractionStyle  # noqa: F401
@@ -96,6 +98,64 @@ def camera_pass_of(*steps):
 
 def expected(colour, factor):
     return [round(255.0 * c * factor) for c in colour]
+
+
+# A backface property unlike the front one (quad_actor: k_d = 0.8 of COLOUR,
+# no ambient, no specular) in every coefficient VTK reads from it.
+BACK_AMBIENT, BACK_AMBIENT_COLOUR = 0.2, (0.5, 0.0, 0.0)
+BACK_DIFFUSE, BACK_DIFFUSE_COLOUR = 0.6, (0.2, 0.6, 1.0)
+BACK_SPECULAR, BACK_SPECULAR_COLOUR, BACK_POWER = 0.4, (1.0, 1.0, 0.5), 8.0
+TILT = 0.5  # radians between the light and the normal of the side in view
+
+
+def backface_property():
+    back = vtkProperty()
+    back.SetAmbient(BACK_AMBIENT)
+    back.SetAmbientColor(*BACK_AMBIENT_COLOUR)
+    back.SetDiffuse(BACK_DIFFUSE)
+    back.SetDiffuseColor(*BACK_DIFFUSE_COLOUR)
+    back.SetSpecular(BACK_SPECULAR)
+    back.SetSpecularColor(*BACK_SPECULAR_COLOUR)
+    back.SetSpecularPower(BACK_POWER)
+    return back
+
+
+def phong_pixel(ambient, diffuse, specular, power):
+    """VTK's (and ShadeLab's Phong model's) equation at a point seen along its
+    normal, lit by the stage's directional light TILT off the normal: the
+    ambient colour (VTK's implicit white ambient light) plus
+    I (k_d C_d cos(TILT) + k_s C_s cos(TILT)^n), R.V being cos(TILT) too.
+    Each argument but power is a (coefficient, colour) pair."""
+    cos = math.cos(TILT)
+    return [round(255.0 * (ambient[0] * a + INTENSITY * (diffuse[0] * d * cos + specular[0] * s * cos ** power)))
+            for a, d, s in zip(ambient[1], diffuse[1], specular[1])]
+
+
+BACK_PIXEL = phong_pixel((BACK_AMBIENT, BACK_AMBIENT_COLOUR), (BACK_DIFFUSE, BACK_DIFFUSE_COLOUR),
+                         (BACK_SPECULAR, BACK_SPECULAR_COLOUR), BACK_POWER)
+# quad_actor's own material on the side in view.
+FRONT_PIXEL = phong_pixel((0.0, COLOUR), (KD, COLOUR), (0.0, COLOUR), 1.0)
+
+
+def look_at_side(stage, back):
+    """Looks at the quad's back (from -z) or front (from +z) along its normal,
+    in parallel projection (the same view direction at every point, so every
+    frequency gives one colour), with the light TILT off that side's normal."""
+    side = -1.0 if back else 1.0
+    camera = stage.renderer.GetActiveCamera()
+    camera.SetPosition(0, 0, 5 * side)
+    camera.SetFocalPoint(0, 0, 0)
+    camera.SetViewUp(0, 1, 0)
+    camera.ParallelProjectionOn()
+    camera.SetParallelScale(1.5)
+    stage.light.SetPosition(0, math.sin(TILT), math.cos(TILT) * side)
+    stage.light.SetFocalPoint(0, 0, 0)
+    stage.renderer.ResetCameraClippingRange()
+
+
+def tracked(lighting, what):
+    """The count PrintSelf reports as `what` (TrackedMappers, TrackedShaderPrograms)."""
+    return int(re.search(what + r": (\d+)", str(lighting)).group(1))
 
 
 class VTKUsageTest(unittest.TestCase):
@@ -257,6 +317,101 @@ class VTKUsageTest(unittest.TestCase):
         stage.renderer.SetPass(None)
         shadows.GetShadowMapBakerPass().ReleaseGraphicsResources(stage.window)
         shadows.ReleaseGraphicsResources(stage.window)
+
+    def test_backface_property_shades_faces_seen_from_behind_as_in_vtk(self):
+        # VTK: faces seen from behind take the backface property's colours,
+        # coefficients and specular power, lit with the flipped normal.
+        actor = quad_actor()
+        actor.SetBackfaceProperty(backface_property())
+        stage = Stage(actor)
+        look_at_side(stage, back=True)
+        self.assertPixel(stage.render(False), BACK_PIXEL)  # VTK's own pixel agrees with the equation
+        for frequency in ("flat", "gouraud", "phong"):
+            with self.subTest(frequency=frequency):
+                lighting = lighting_pass()
+                lighting.SetModelName("phong")
+                lighting.SetFrequencyName(frequency)
+                stage.renderer.SetPass(lighting)
+                stage.window.Render()
+                self.assertPixel(pixel(stage.window), BACK_PIXEL)
+                # The front keeps the front property.
+                look_at_side(stage, back=False)
+                stage.window.Render()
+                self.assertPixel(pixel(stage.window), FRONT_PIXEL)
+                look_at_side(stage, back=True)
+
+    def test_without_a_backface_property_the_back_takes_the_front_material(self):
+        stage = Stage(quad_actor())
+        look_at_side(stage, back=True)
+        self.assertPixel(stage.render(True), FRONT_PIXEL)
+        self.assertPixel(stage.render(False), FRONT_PIXEL)
+
+    def test_scalar_colours_leave_the_backface_property_unused_as_in_vtk(self):
+        # VTK reads the backface property only where the property's colours
+        # colour the surface: shown scalars colour both sides with the front
+        # property's coefficients.
+        actor = quad_actor()
+        data = actor.GetMapper().GetInput()
+        colours = vtkUnsignedCharArray()
+        colours.SetNumberOfComponents(3)
+        for _ in range(data.GetNumberOfPoints()):
+            colours.InsertNextTuple3(0, 200, 100)
+        data.GetPointData().SetScalars(colours)
+        actor.SetBackfaceProperty(backface_property())
+        stage = Stage(actor)
+        look_at_side(stage, back=True)
+        scalar = (0.0, 200.0 / 255.0, 100.0 / 255.0)
+        wanted = expected(scalar, KD * INTENSITY * math.cos(TILT))
+        self.assertPixel(stage.render(False), wanted)
+        self.assertPixel(stage.render(True), wanted)
+
+    def test_the_scene_material_shades_both_sides(self):
+        # UseSceneMaterial: one material for the whole scene, on both sides;
+        # a backface property changes nothing.
+        actor = quad_actor()
+        actor.SetBackfaceProperty(backface_property())
+        stage = Stage(actor)
+        look_at_side(stage, back=True)
+        scene = shadelab.slScene()
+        scene.SetLightsFromVTK(stage.renderer.GetLights())
+        material = vtkProperty()
+        material.SetAmbient(0.0)
+        material.SetDiffuse(0.5)
+        material.SetDiffuseColor(0.0, 1.0, 1.0)
+        material.SetSpecular(0.0)
+        scene.SetMaterialFromVTK(material)
+        self.assertTrue(scene.SetModelName("lambert"))
+        lighting = shadelab.slLightingPass()
+        lighting.SetScene(scene)
+        stage.renderer.SetPass(lighting)
+        stage.window.Render()
+        self.assertPixel(pixel(stage.window), expected((0.0, 1.0, 1.0), 0.5 * INTENSITY * math.cos(TILT)))
+
+    def test_records_of_freed_mappers_and_programs_are_dropped(self):
+        # The pass keeps a record per mapper with 4-component tangents and
+        # per shader program it sets. Making and freeing many of them (new
+        # actors in new windows, each window with its own shader programs)
+        # must not grow these records without bound: they stay within about
+        # twice the live ones (here 2 mappers and 1 program at a time).
+        lighting = lighting_pass()
+        for _ in range(30):
+            actors = [quad_actor() for _ in range(2)]
+            for actor in actors:
+                data = actor.GetMapper().GetInput()
+                tangents = vtkFloatArray()
+                tangents.SetName("Tangents")
+                tangents.SetNumberOfComponents(4)
+                for _ in range(data.GetNumberOfPoints()):
+                    tangents.InsertNextTuple4(1.0, 0.0, 0.0, 1.0)
+                data.GetPointData().AddArray(tangents)
+            stage = Stage(*actors)
+            stage.renderer.SetPass(lighting)
+            stage.window.Render()
+            self.assertPixel(pixel(stage.window), expected(COLOUR, KD * INTENSITY))
+            stage.window.Finalize()
+            del stage, actors
+        self.assertLessEqual(tracked(lighting, "TrackedMappers"), 2 * 2 + 1)
+        self.assertLessEqual(tracked(lighting, "TrackedShaderPrograms"), 2 * 1 + 1)
 
     def test_setters_modify_only_on_a_change(self):
         lighting = shadelab.slLightingPass()
