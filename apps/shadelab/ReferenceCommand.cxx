@@ -1,4 +1,5 @@
 // shadelab reference MESH [--scene S.json] [--envmap SKY.hdr] -o OUT.vtp
+#include "BaseColourOptions.h"
 #include "CommandLine.h"
 #include "Commands.h"
 #include "Inputs.h"
@@ -9,11 +10,9 @@
 
 #include "slRadianceReference.h"
 #include "slScene.h"
-#include "slSceneTexture.h"
 
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
-#include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
 
@@ -63,6 +62,10 @@ int runReference(const std::vector<std::string>& args)
   specs.push_back({ "seed", "", "N", "random seed (default 1)" });
   specs.push_back({ "light-radius", "", "X", "radius of point/spot lights (default 1% of the mesh diagonal)" });
   specs.push_back({ "sun-angle", "", "DEG", "angular radius of directional lights (default 0.5)" });
+  for (const OptionSpec& spec : baseColourOptions())
+  {
+    specs.push_back(spec);
+  }
   const CommandLine cl(args, specs);
   if (cl.has("help"))
   {
@@ -70,8 +73,9 @@ int runReference(const std::vector<std::string>& args)
                  "Monte Carlo estimate per point of L_o = L_e + integral of f_r L_i cos(theta), lit by an\n"
                  "environment map and/or the scene's lights as small spherical lights. Writes Radiance,\n"
                  "RadianceStdError, DiscreteRadiance and RadianceError (reference - discrete) and prints\n"
-                 "summary statistics of the error. The scene's material.diffuseTexture colours k_a and k_d\n"
-                 "as in light (a mesh without texture coordinates is left untextured).\n"
+                 "summary statistics of the error. The base colour that multiplies k_a and k_d is chosen as\n"
+                 "in light: --diffuse-array, --diffuse-texture, or the scene's material.diffuseTexture (which\n"
+                 "leaves a mesh without texture coordinates untextured).\n"
                  "MESH: " << meshFormatsText() << "; point normals are computed if missing.\n\noptions:\n"
               << CommandLine::describe(specs);
     return 0;
@@ -96,6 +100,7 @@ int runReference(const std::vector<std::string>& args)
   {
     throw UsageError("--light-radius: 0 is no sphere; give a radius above 0 (or leave it out for 1% of the mesh diagonal)");
   }
+  checkBaseColourOptions(cl);
   vtkNew<slRadianceReference> filter;
   vtkSmartPointer<slScene> scene = configureLitFilter(cl, filter);
   if (cl.has("envmap"))
@@ -109,10 +114,11 @@ int runReference(const std::vector<std::string>& args)
   filter->SetSeed(cl.getIndex("seed", 1, 0, 2147483647));
   filter->SetLightRadius(cl.getNumber("light-radius", 0.0, 0.0, 1e30));
   filter->SetDirectionalLightAngle(cl.getNumber("sun-angle", 0.5, 1e-4, 45.0));
-  const vtkSmartPointer<vtkImageData> texture = slReadSceneTexture(scene);
+  // As light takes it, so that DiscreteRadiance is light's Radiance.
+  const BaseColour base(cl, scene);
   runOnMesh(meshPath, [&] {
     vtkSmartPointer<vtkPolyData> mesh = loadMeshWithNormals(meshPath);
-    filter->SetDiffuseTexture(slSceneTextureFor(texture, mesh));
+    base.applyTo(filter, mesh);
     filter->SetInputData(mesh);
     runLitFilter(filter, meshPath);
     writeFieldImageIfAsked(

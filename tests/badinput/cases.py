@@ -632,9 +632,16 @@ CASES = [
        {"q.obj": QUAD_OBJ, "t.json": b'{"material": {"diffuseTexture": "gone.png"}, "lights": [{"type": "directional"}]}'},
        1, 'shadelab ' + command + ': gone.png: cannot read image: Could not open file "gone.png" (material.diffuseTexture of '
        't.json)\n') for command in ("light", "reference")),
-    cli_case("light diffuse array and texture", ["light", "m.off", "--diffuse-array", "Normals", "--diffuse-texture",
-                                                 "t.png", "-o", "out.vtp"],
-             'shadelab light: --diffuse-texture: give either --diffuse-array or --diffuse-texture, not both\n'),
+    # light and reference take --diffuse-array and --diffuse-texture the same way, with the same errors.
+    *(cli_case(command + " diffuse array and texture", [command, "m.off", "--diffuse-array", "Normals",
+                                                        "--diffuse-texture", "t.png", "-o", "out.vtp"],
+               'shadelab ' + command + ': --diffuse-texture: give either --diffuse-array or --diffuse-texture, not both\n')
+      for command in ("light", "reference")),
+    *((command + " diffuse array missing", [command, "q.obj", "--diffuse-array", "Colour", "-o", "out.vtp"],
+       {"q.obj": QUAD_OBJ}, 1, 'shadelab ' + command + ': q.obj: no point array "Colour" for the diffuse colour\n')
+      for command in ("light", "reference")),
+    ("reference diffuse texture missing", ["reference", "q.obj", "--diffuse-texture", "nothere.png", "-o", "out.vtp"],
+     {"q.obj": QUAD_OBJ}, 1, 'shadelab reference: nothere.png: cannot read image: Could not open file "nothere.png"\n'),
     cli_case("reference envmap scale without envmap", ["reference", "m.off", "--envmap-scale", "2", "-o", "out.vtp"],
              'shadelab reference: --envmap-scale: only with --envmap FILE\n'),
     cli_case("reference light radius without lights", ["reference", "m.off", "--envmap", "sky.hdr", "--no-lights",
@@ -739,8 +746,9 @@ CASES = [
     # hung the image reader (tests/apps/test_cli.py, under limits); /dev/null shows the check.
     ("scene is a device", ["cosine", "m.off", "--scene", "/dev/null", "-o", "out.vtp"], {"m.off": TETRA_OFF}, 1,
      "shadelab cosine: /dev/null: is not a regular file (a device, pipe or socket)\n"),
-    ("texture is a device", ["light", "q.obj", "--diffuse-texture", "/dev/null", "-o", "out.vtp"], {"q.obj": QUAD_OBJ},
-     1, "shadelab light: /dev/null: is not a regular file (a device, pipe or socket)\n"),
+    *((command + " texture is a device", [command, "q.obj", "--diffuse-texture", "/dev/null", "-o", "out.vtp"],
+       {"q.obj": QUAD_OBJ}, 1, "shadelab " + command + ": /dev/null: is not a regular file (a device, pipe or socket)\n")
+      for command in ("light", "reference")),
     ("envmap is a device", ["reference", "m.off", "--envmap", "/dev/null", "--samples", "1", "-o", "out.vtp"],
      {"m.off": TETRA_OFF}, 1, "shadelab reference: /dev/null: is not a regular file (a device, pipe or socket)\n"),
     ("brdf is a device", ["lobe", "--brdf", "/dev/null", "-o", "out.png"], {}, 1,

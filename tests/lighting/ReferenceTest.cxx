@@ -4,12 +4,14 @@
 #include "LightingTestMeshes.h"
 
 #include "../filters/TestFolder.h"
+#include "slImageWriter.h"
 #include "slRadianceReference.h"
 #include "VTKErrors.h"
 
 #include <vtkCallbackCommand.h>
 #include <vtkFieldData.h>
 #include <vtkImageData.h>
+#include <vtkUnsignedCharArray.h>
 
 #include <gtest/gtest.h>
 
@@ -300,6 +302,98 @@ TEST(RadianceReference, DiffuseTextureColoursKdAtTheTextureCoordinates)
       EXPECT_NEAR(tuple3(out, "Radiance", i)[c], kd[c] * texel[c] * sky[c], 1e-5) << "point " << i;
     }
   }
+}
+
+TEST(RadianceReference, DiffuseColorArrayAndTextureFileColourKdInTheFiltersOrder)
+{
+  // Lambert under a uniform sky, cosine-weighted: every sample gives
+  // k_d * base * L_sky exactly, whatever gives the base colour. Two points,
+  // at the centres (u = 0.25, 0.75) of a 2 x 1 PNG's texels.
+  const glm::vec3 kd(0.5f, 0.8f, 0.6f), sky(1.5f);
+  const unsigned char texels[2][3] = { { 204, 51, 25 }, { 25, 76, 229 } };
+  const glm::vec3 fromFile[2] = { glm::vec3(texels[0][0], texels[0][1], texels[0][2]) / 255.0f,
+    glm::vec3(texels[1][0], texels[1][1], texels[1][2]) / 255.0f };
+  const glm::vec3 fromArray[2] = { glm::vec3(0.9f, 0.4f, 0.2f), glm::vec3(0.3f, 0.6f, 1.0f) };
+  const glm::vec3 green(0.1f, 0.7f, 0.2f); // the one texel of the image given with SetDiffuseTexture()
+
+  TestFolder folder;
+  const std::string png = folder.path("t.png");
+  {
+    vtkNew<vtkImageData> image;
+    image->SetDimensions(2, 1, 1);
+    vtkNew<vtkUnsignedCharArray> bytes;
+    bytes->SetNumberOfComponents(3);
+    bytes->InsertNextTypedTuple(texels[0]);
+    bytes->InsertNextTypedTuple(texels[1]);
+    image->GetPointData()->SetScalars(bytes);
+    vtkNew<slImageWriter> writer;
+    writer->SetInputData(image);
+    writer->SetFileName(png.c_str());
+    ASSERT_EQ(callError(writer, [&] { return writer->Write(); }), "");
+  }
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(1, 1, 1);
+  vtkNew<vtkFloatArray> pixel;
+  pixel->SetNumberOfComponents(3);
+  pixel->InsertNextTuple3(green.x, green.y, green.z);
+  image->GetPointData()->SetScalars(pixel);
+
+  vtkSmartPointer<vtkPolyData> mesh = pointsWithNormals({ { 0, 0, 0, 0, 0, 1 }, { 1, 0, 0, 0, 0, 1 } });
+  vtkNew<vtkFloatArray> uv;
+  uv->SetNumberOfComponents(2);
+  uv->InsertNextTuple2(0.25, 0.5);
+  uv->InsertNextTuple2(0.75, 0.5);
+  mesh->GetPointData()->SetTCoords(uv);
+  vtkNew<vtkFloatArray> base;
+  base->SetName("Base");
+  base->SetNumberOfComponents(3);
+  for (const glm::vec3& b : fromArray)
+  {
+    base->InsertNextTuple3(b.x, b.y, b.z);
+  }
+  mesh->GetPointData()->AddArray(base);
+
+  vtkNew<slRadianceReference> filter;
+  filter->SetScene(lambertScene({}, kd));
+  filter->SetEnvironmentMap(constantSky(sky));
+  filter->SetStrategyToCosine();
+  filter->SetSamplesPerPoint(8);
+  auto expectBase = [&](const glm::vec3 (&expected)[2], const char* what) {
+    vtkPolyData* out = reference(filter, mesh);
+    ASSERT_EQ(out->GetNumberOfPoints(), 2) << what;
+    for (vtkIdType i = 0; i < 2; ++i)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        EXPECT_NEAR(tuple3(out, "Radiance", i)[c], kd[c] * expected[i][c] * sky[c], 1e-5)
+          << what << ", point " << i << ", channel " << c;
+      }
+    }
+  };
+  const glm::vec3 fromImage[2] = { green, green };
+
+  // slRadianceFilter's order: the array, then the file, then the image.
+  filter->SetDiffuseColorArrayName("Base");
+  filter->SetDiffuseTextureFileName(png.c_str());
+  filter->SetDiffuseTexture(image);
+  expectBase(fromArray, "array, file and image");
+  filter->SetDiffuseColorArrayName("");
+  expectBase(fromFile, "file and image");
+  filter->SetDiffuseTextureFileName(nullptr);
+  expectBase(fromImage, "image");
+
+  // slRadianceFilter's errors, and no output.
+  auto expectError = [&](const std::string& message) {
+    filter->SetInputData(mesh);
+    const std::string error = updateError(filter);
+    EXPECT_EQ(error.substr(0, message.size()), message) << error;
+    EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+  };
+  filter->SetDiffuseColorArrayName("Nope");
+  expectError("input mesh: no point array \"Nope\" for the diffuse colour");
+  filter->SetDiffuseColorArrayName(nullptr);
+  filter->SetDiffuseTextureFileName("/nonexistent/t.png");
+  expectError("/nonexistent/t.png: cannot read image");
 }
 
 TEST(RadianceReference, DegenerateMeshGivesNoNaN)

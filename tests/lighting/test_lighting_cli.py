@@ -96,69 +96,130 @@ class LightingCommandsTest(unittest.TestCase):
                 for value, t in zip(point, texel):
                     self.assertAlmostEqual(value, 0.5 * t * cos, places=5, msg=mesh)
 
-    def test_reference_applies_the_scene_diffuse_texture_as_light_does(self):
-        """reference colours k_d with material.diffuseTexture as light does: a textured plane under a small sun has
-        light's Radiance within the reference's own error, a point at the centre of the red texels is
-        k_d * red * I cos / pi, and a mesh without texture coordinates stays untextured in both."""
+    # A plane under a small sun for comparing reference with light: a 5 x 2 grid on z = 0 with u = x, and a 2 x 2
+    # texture whose left column is red and right column blue, so that u = 0.25 is the red texels' centre, 0.75 the
+    # blue's and the points in between mix them (bilinear, repeat wrapping).
+    RED, BLUE = (0.8, 0.2, 0.2), (0.2, 0.2, 0.8)
+    K_D, INTENSITY, SUN = 0.9, 2.0, (0.3, 0.2, -1.0)
+    XS, YS = (0, 0.25, 0.5, 0.75, 1), (0, 1)
+    QUADS = [(i + 1, i + 2, i + 7, i + 6) for i in range(4)]
+
+    def write_textured_plane(self):
+        """t.png; uv.obj and plain.obj (the grid with and without texture coordinates); s.json (the sun, Lambert,
+        k_d = K_D, material.diffuseTexture t.png) and plain.json (the same without the texture)."""
         import vtk
-        from vtk.util.numpy_support import vtk_to_numpy
-        red, blue = (0.8, 0.2, 0.2), (0.2, 0.2, 0.8)
         image = vtk.vtkImageData()
-        image.SetDimensions(2, 2, 1)  # left column red, right column blue
+        image.SetDimensions(2, 2, 1)
         image.AllocateScalars(vtk.VTK_UNSIGNED_CHAR, 3)
         for i in range(4):
-            image.GetPointData().GetScalars().SetTuple3(i, *(round(255 * c) for c in (red if i % 2 == 0 else blue)))
+            image.GetPointData().GetScalars().SetTuple3(
+                i, *(round(255 * c) for c in (self.RED if i % 2 == 0 else self.BLUE)))
         writer = vtk.vtkPNGWriter()
         writer.SetInputData(image)
         writer.SetFileName(self.out("t.png"))
         writer.Write()
-        # A 5 x 2 grid on z = 0 with u = x: u = 0.25 is the red texels' centre, 0.75 the blue's; the points in
-        # between mix them (bilinear, repeat wrapping).
-        xs, ys = (0, 0.25, 0.5, 0.75, 1), (0, 1)
-        vertices = "".join("v %g %g 0\n" % (x, y) for y in ys for x in xs)
-        quads = [(i + 1, i + 2, i + 7, i + 6) for i in range(4)]
+        vertices = "".join("v %g %g 0\n" % (x, y) for y in self.YS for x in self.XS)
         with open(self.out("uv.obj"), "w") as f:
-            f.write(vertices + "".join("vt %g %g\n" % (x, y) for y in ys for x in xs) +
-                    "".join("f {0}/{0} {1}/{1} {2}/{2} {3}/{3}\n".format(*q) for q in quads))
+            f.write(vertices + "".join("vt %g %g\n" % (x, y) for y in self.YS for x in self.XS) +
+                    "".join("f {0}/{0} {1}/{1} {2}/{2} {3}/{3}\n".format(*q) for q in self.QUADS))
         with open(self.out("plain.obj"), "w") as f:
-            f.write(vertices + "".join("f %d %d %d %d\n" % q for q in quads))
-        k_d, intensity, sun = 0.9, 2.0, (0.3, 0.2, -1.0)
-        with open(self.out("s.json"), "w") as f:
-            f.write('{"shading": {"model": "lambert-normalized"}, "material": {"ambient": [0, 0, 0], '
-                    '"diffuse": [%g, %g, %g], "specular": [0, 0, 0], "diffuseTexture": "t.png"}, '
-                    '"lights": [{"type": "directional", "intensity": %g, "direction": [%g, %g, %g]}]}'
-                    % (k_d, k_d, k_d, intensity, *sun))
-        cos = 1.0 / math.sqrt(sum(c * c for c in sun))  # N = +z
+            f.write(vertices + "".join("f %d %d %d %d\n" % q for q in self.QUADS))
+        for name, texture in (("s.json", ', "diffuseTexture": "t.png"'), ("plain.json", "")):
+            with open(self.out(name), "w") as f:
+                f.write('{"shading": {"model": "lambert-normalized"}, "material": {"ambient": [0, 0, 0], '
+                        '"diffuse": [%g, %g, %g], "specular": [0, 0, 0]%s}, '
+                        '"lights": [{"type": "directional", "intensity": %g, "direction": [%g, %g, %g]}]}'
+                        % (self.K_D, self.K_D, self.K_D, texture, self.INTENSITY, *self.SUN))
 
-        def arrays(command, mesh, *options):
-            r = run(command, self.out(mesh), "--scene", self.out("s.json"), *options, "-o", self.out("r.vtp"))
-            self.assertEqual(r.returncode, 0, r.stderr)
-            reader = vtk.vtkXMLPolyDataReader()
-            reader.SetFileName(self.out("r.vtp"))
-            reader.Update()
-            data = reader.GetOutput().GetPointData()
-            return {name: vtk_to_numpy(data.GetArray(name)) for name in ("Radiance", "RadianceStdError")
-                    if data.GetArray(name) is not None}
+    def sun_cos(self):
+        return 1.0 / math.sqrt(sum(c * c for c in self.SUN))  # N = +z
 
+    def lit_arrays(self, command, mesh, scene, *options):
+        """Radiance (and RadianceStdError) of @command on @mesh under @scene; reference samples the small sun."""
+        import vtk
+        from vtk.util.numpy_support import vtk_to_numpy
+        if command == "reference":
+            options += ("--sampling", "light", "--sun-angle", "0.25", "--samples", "64")
+        r = run(command, self.out(mesh), "--scene", self.out(scene), *options, "-o", self.out("r.vtp"))
+        self.assertEqual(r.returncode, 0, r.stderr)
+        reader = vtk.vtkXMLPolyDataReader()
+        reader.SetFileName(self.out("r.vtp"))
+        reader.Update()
+        data = reader.GetOutput().GetPointData()
+        return {name: vtk_to_numpy(data.GetArray(name)) for name in ("Radiance", "RadianceStdError")
+                if data.GetArray(name) is not None}
+
+    def assert_reference_is_light(self, mesh, scene, *options):
+        """reference's Radiance is light's within 0.5 % + 5 sigma at every point, with the same @options; returns
+        reference's arrays."""
+        light = self.lit_arrays("light", mesh, scene, *options)["Radiance"]
+        reference = self.lit_arrays("reference", mesh, scene, *options)
+        self.assertEqual(light.shape, (10, 3))
+        for point, (l, r, sigma) in enumerate(zip(light, reference["Radiance"], reference["RadianceStdError"])):
+            for c in range(3):
+                self.assertLessEqual(abs(r[c] - l[c]), 0.005 * l[c] + 5 * sigma[c] + 1e-6,
+                                     (mesh, options, point, c, list(r), list(l)))
+        return reference
+
+    def assert_base_colour_at(self, reference, point, base):
+        """reference's Radiance at @point is k_d * @base * I cos / pi within 0.5 % + 5 sigma."""
+        r, sigma = reference["Radiance"][point], reference["RadianceStdError"][point]
+        for c in range(3):
+            value = self.K_D * base[c] * self.INTENSITY * self.sun_cos() / math.pi
+            self.assertLessEqual(abs(r[c] - value), 0.005 * value + 5 * sigma[c], (point, c, list(r), value))
+
+    def test_reference_applies_the_scene_diffuse_texture_as_light_does(self):
+        """reference colours k_d with material.diffuseTexture as light does: a textured plane under a small sun has
+        light's Radiance within the reference's own error, a point at the centre of the red texels is
+        k_d * red * I cos / pi, and a mesh without texture coordinates stays untextured in both."""
+        self.write_textured_plane()
         for mesh in ("uv.obj", "plain.obj"):
-            light = arrays("light", mesh)["Radiance"]
-            reference = arrays("reference", mesh, "--sampling", "light", "--sun-angle", "0.25", "--samples", "64")
-            self.assertEqual(light.shape, (10, 3))
-            for point, (l, r, sigma) in enumerate(zip(light, reference["Radiance"], reference["RadianceStdError"])):
-                for c in range(3):
-                    self.assertLessEqual(abs(r[c] - l[c]), 0.005 * l[c] + 5 * sigma[c] + 1e-6,
-                                         (mesh, point, c, list(r), list(l)))
+            reference = self.assert_reference_is_light(mesh, "s.json")
             # The red texels' centre (u = 0.25): the analytic value, red-dominated; without UVs, untextured.
-            expected = red if mesh == "uv.obj" else (1.0, 1.0, 1.0)
+            expected = self.RED if mesh == "uv.obj" else (1.0, 1.0, 1.0)
             for point in (1, 6):
-                r, sigma = reference["Radiance"][point], reference["RadianceStdError"][point]
-                for c in range(3):
-                    value = k_d * expected[c] * intensity * cos / math.pi
-                    self.assertLessEqual(abs(r[c] - value), 0.005 * value + 5 * sigma[c], (mesh, point, c))
+                self.assert_base_colour_at(reference, point, expected)
                 if mesh == "uv.obj":
+                    r = reference["Radiance"][point]
                     self.assertGreater(r[0], 3 * max(r[1], r[2]), list(r))
             if mesh == "uv.obj":
                 self.assertGreater(reference["Radiance"][3][2], 3 * reference["Radiance"][3][0])  # blue at u = 0.75
+
+    def test_reference_takes_diffuse_array_and_texture_as_light_does(self):
+        """reference takes --diffuse-texture FILE and --diffuse-array NAME as light does: the same Radiance within
+        the reference's own error at every point, and k_d * base colour * I cos / pi where the base colour is known.
+        Each option replaces the scene's texture (plain.json has none; s.json's is not read for the array)."""
+        import vtk
+        self.write_textured_plane()
+        reference = self.assert_reference_is_light("uv.obj", "plain.json", "--diffuse-texture", self.out("t.png"))
+        for point in (1, 6):
+            self.assert_base_colour_at(reference, point, self.RED)
+        for point in (3, 8):
+            self.assert_base_colour_at(reference, point, self.BLUE)
+
+        # The grid as VTP with a per-point RGB array that changes along x.
+        base = [(0.2 + 0.6 * x, 0.8 - 0.6 * x, 0.5) for y in self.YS for x in self.XS]
+        points, colours, polys = vtk.vtkPoints(), vtk.vtkFloatArray(), vtk.vtkCellArray()
+        colours.SetName("Base")
+        colours.SetNumberOfComponents(3)
+        for y in self.YS:
+            for x in self.XS:
+                points.InsertNextPoint(x, y, 0)
+        for b in base:
+            colours.InsertNextTuple3(*b)
+        for q in self.QUADS:
+            polys.InsertNextCell(4, [i - 1 for i in q])
+        grid = vtk.vtkPolyData()
+        grid.SetPoints(points)
+        grid.SetPolys(polys)
+        grid.GetPointData().AddArray(colours)
+        writer = vtk.vtkXMLPolyDataWriter()
+        writer.SetInputData(grid)
+        writer.SetFileName(self.out("base.vtp"))
+        self.assertEqual(writer.Write(), 1)
+        reference = self.assert_reference_is_light("base.vtp", "s.json", "--diffuse-array", "Base")
+        for point in range(10):
+            self.assert_base_colour_at(reference, point, base[point])
 
     def test_lobe_at_grazing_incidence(self):
         """Built-in models have f_r = 0 at 90 degrees (slBRDF's grazing limit): refused, not an empty lobe."""

@@ -8,8 +8,9 @@
   PrintSelf, and the values the setter keeps when the property is pushed
   out of range; nothing is read from the headers;
 - every property a user sees has a tooltip (Documentation);
-- the diffuse colour array is chosen from the input's RGB and RGBA point
-  arrays, and stays empty (no array) unless chosen;
+- the diffuse colour array of ShadeLab Radiance and of the Monte Carlo
+  reference is chosen from the input's RGB and RGBA point arrays, stays
+  empty (no array) unless chosen, and colours the lighting equation;
 - a state file saved with the filters and the ShadeLab Render View loads
   back with the same property values and the same result;
 - a Python trace of building the pipeline replays to the same result.
@@ -182,20 +183,31 @@ def with_colours():
     return rgba
 
 
+# The filters that take a diffuse colour array, the properties that make them quick, and the array
+# that holds the discrete lighting equation (the reference's own estimate has no ambient term).
+COLOURED_FILTERS = (
+    (pvs.ShadeLabRadiance, {}, "Radiance"),
+    (pvs.ShadeLabMonteCarloReference, dict(SamplesPerPoint=1), "DiscreteRadiance"),
+)
+
+
 class ArraySelection(unittest.TestCase):
     def test_diffuse_colour_arrays_offered_and_applied(self):
         source = with_colours()
         source.UpdatePipeline()  # the list is of the arrays the input has
-        radiance = pvs.ShadeLabRadiance(Input=source)
-        prop = radiance.GetProperty("DiffuseColorArrayName")
-        # No array until one is chosen: the default is the empty choice, not the first array.
-        self.assertEqual(radiance.DiffuseColorArray, "")
-        # Every point array of the input (ParaView 5.11's domain cannot ask for 3 or 4 components),
-        # and the empty choice; no cell array.
-        points = servermanager.Fetch(source).GetPointData()
-        arrays = [points.GetArrayName(i) for i in range(points.GetNumberOfArrays())]
-        self.assertIn("Rgba", arrays)
-        self.assertEqual(sorted(prop.Available), sorted([""] + arrays))
+        for make, quick, _ in COLOURED_FILTERS:
+            with self.subTest(filter=make.__name__):
+                radiance = make(Input=source, **quick)
+                prop = radiance.GetProperty("DiffuseColorArrayName")
+                # No array until one is chosen: the default is the empty choice, not the first array.
+                self.assertEqual(radiance.DiffuseColorArray, "")
+                self.assertEqual(radiance.DiffuseTexture, "")
+                # Every point array of the input (ParaView 5.11's domain cannot ask for 3 or 4
+                # components), and the empty choice; no cell array.
+                points = servermanager.Fetch(source).GetPointData()
+                arrays = [points.GetArrayName(i) for i in range(points.GetNumberOfArrays())]
+                self.assertIn("Rgba", arrays)
+                self.assertEqual(sorted(prop.Available), sorted([""] + arrays))
 
     def test_chosen_array_multiplies_the_diffuse_colour(self):
         source = with_colours()
@@ -203,16 +215,18 @@ class ArraySelection(unittest.TestCase):
         # red is half the plain one's, its green a quarter, its blue the same.
         settings = dict(OverrideMaterial=1, AmbientColor=[0.2, 0.2, 0.2], DiffuseColor=[0, 0, 0],
                         SpecularColor=[0, 0, 0], EmissionColor=[0, 0, 0])
-        plain = pvs.ShadeLabRadiance(Input=source, **settings)
-        coloured = pvs.ShadeLabRadiance(Input=source, DiffuseColorArray="Rgb", **settings)
-        a = servermanager.Fetch(plain).GetPointData().GetArray("Radiance")
-        b = servermanager.Fetch(coloured).GetPointData().GetArray("Radiance")
-        self.assertAlmostEqual(b.GetRange(0)[0], 0.5 * a.GetRange(0)[0], places=6)
-        self.assertAlmostEqual(b.GetRange(1)[0], 0.25 * a.GetRange(1)[0], places=6)
-        self.assertAlmostEqual(b.GetRange(2)[0], a.GetRange(2)[0], places=6)
-        # A one-component array is offered but is no colour: the filter reports it, no output.
-        grey = pvs.ShadeLabRadiance(Input=source, DiffuseColorArray="Grey")
-        self.assertEqual(servermanager.Fetch(grey).GetNumberOfPoints(), 0)
+        for make, quick, name in COLOURED_FILTERS:
+            with self.subTest(filter=make.__name__):
+                plain = make(Input=source, **quick, **settings)
+                coloured = make(Input=source, DiffuseColorArray="Rgb", **quick, **settings)
+                a = servermanager.Fetch(plain).GetPointData().GetArray(name)
+                b = servermanager.Fetch(coloured).GetPointData().GetArray(name)
+                self.assertAlmostEqual(b.GetRange(0)[0], 0.5 * a.GetRange(0)[0], places=6)
+                self.assertAlmostEqual(b.GetRange(1)[0], 0.25 * a.GetRange(1)[0], places=6)
+                self.assertAlmostEqual(b.GetRange(2)[0], a.GetRange(2)[0], places=6)
+                # A one-component array is offered but is no colour: the filter reports it, no output.
+                grey = make(Input=source, DiffuseColorArray="Grey", **quick)
+                self.assertEqual(servermanager.Fetch(grey).GetNumberOfPoints(), 0)
 
 
 def radiance_of(proxy):

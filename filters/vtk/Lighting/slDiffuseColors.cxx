@@ -1,7 +1,11 @@
 #include "slDiffuseColors.h"
 
+#include "slImageReader.h"
+#include "slUpdateOrThrow.h"
+
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
+#include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkUnsignedCharArray.h>
@@ -109,6 +113,29 @@ void diffuseFromTexture(vtkPolyData* mesh, vtkImageData* texture, std::vector<gl
       }
     }
     out[static_cast<size_t>(i)] = sum;
+  }
+}
+
+void baseColourPerPoint(vtkPolyData* mesh, const char* arrayName, const char* textureFileName,
+  vtkImageData* texture, std::vector<glm::vec3>& out)
+{
+  out.clear();
+  if (arrayName && *arrayName)
+  {
+    diffuseFromArray(mesh, arrayName, out);
+  }
+  else if (textureFileName && *textureFileName)
+  {
+    // Read at each call: ParaView's properties are plain values, so the file
+    // name is how a ParaView user gives a texture.
+    vtkNew<slImageReader> reader;
+    reader->SetFileName(textureFileName);
+    slUpdateOrThrow(reader);
+    diffuseFromTexture(mesh, reader->GetOutput(), out);
+  }
+  else if (texture)
+  {
+    diffuseFromTexture(mesh, texture, out);
   }
 }
 

@@ -4,17 +4,14 @@
 
 #include "slDiffuseColors.h"
 #include "slFloat3View.h"
-#include "slImageReader.h"
 #include "slLightingSetup.h"
 #include "slParallelFillArray.h"
 #include "slRadianceKernel.h"
-#include "slUpdateOrThrow.h"
 
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
-#include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
@@ -70,21 +67,8 @@ int slRadianceFilter::RequestData(vtkInformation*, vtkInformationVector** inputV
   }
   std::vector<glm::vec3> base; // base colour per point: multiplies k_a and k_d
   const bool haveBase = slRunCore(this, output, [&] {
-    if (this->DiffuseColorArrayName && *this->DiffuseColorArrayName)
-    {
-      diffuseFromArray(input, this->DiffuseColorArrayName, base);
-    }
-    else if (this->DiffuseTextureFileName && *this->DiffuseTextureFileName)
-    {
-      vtkNew<slImageReader> reader;
-      reader->SetFileName(this->DiffuseTextureFileName);
-      slUpdateOrThrow(reader);
-      diffuseFromTexture(input, reader->GetOutput(), base);
-    }
-    else if (this->DiffuseTexture)
-    {
-      diffuseFromTexture(input, this->DiffuseTexture, base);
-    }
+    baseColourPerPoint(
+      input, this->DiffuseColorArrayName, this->DiffuseTextureFileName, this->DiffuseTexture, base);
   });
   if (!haveBase)
   {

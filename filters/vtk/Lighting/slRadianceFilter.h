@@ -18,7 +18,10 @@
  * k_d at each point, exactly as scalar colours and the actor's texture do in
  * slLightingPass (with k_a = k_d = 1 it stands in for k_d). Colours are used
  * as VTK and the pass use them: 8-bit values v mean v / 255 (no sRGB
- * decoding), float values as they are. The array wins if both are set.
+ * decoding), float values as they are. The array wins over the texture
+ * file (SetDiffuseTextureFileName()), which wins over the texture;
+ * slRadianceReference takes the same three the same way (one shared
+ * function, so the two filters cannot disagree on which colour applies).
  *
  * Input arrays are passed through. The loop over points runs in parallel with
  * vtkSMPTools.

@@ -69,7 +69,9 @@ slRadianceReference::~slRadianceReference()
 {
   this->SetEnvironmentFileName(nullptr);
   this->SetEnvironmentMap(nullptr);
+  this->SetDiffuseColorArrayName(nullptr);
   this->SetDiffuseTexture(nullptr);
+  this->SetDiffuseTextureFileName(nullptr);
 }
 
 vtkMTimeType slRadianceReference::GetMTime()
@@ -145,10 +147,8 @@ int slRadianceReference::RequestData(
 
   std::vector<glm::vec3> base; // base colour per point: multiplies k_a and k_d
   const bool haveBase = slRunCore(this, output, [&] {
-    if (this->DiffuseTexture)
-    {
-      diffuseFromTexture(input, this->DiffuseTexture, base);
-    }
+    baseColourPerPoint(
+      input, this->DiffuseColorArrayName, this->DiffuseTextureFileName, this->DiffuseTexture, base);
   });
   if (!haveBase)
   {
@@ -254,7 +254,11 @@ void slRadianceReference::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EnvironmentFileName: " << (this->EnvironmentFileName ? this->EnvironmentFileName : "(none)") << "\n";
   os << indent << "EnvironmentMap: " << this->EnvironmentMap << "\n";
   os << indent << "EnvironmentScale: " << this->EnvironmentScale << "\n";
+  os << indent << "DiffuseColorArrayName: " << (this->DiffuseColorArrayName ? this->DiffuseColorArrayName : "(none)")
+     << "\n";
   os << indent << "DiffuseTexture: " << this->DiffuseTexture << "\n";
+  os << indent << "DiffuseTextureFileName: "
+     << (this->DiffuseTextureFileName ? this->DiffuseTextureFileName : "(none)") << "\n";
   os << indent << "UseSceneLights: " << this->UseSceneLights << "\n";
   os << indent << "LightRadius: " << this->LightRadius << "\n";
   os << indent << "DirectionalLightAngle: " << this->DirectionalLightAngle << "\n";

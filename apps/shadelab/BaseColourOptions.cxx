@@ -1,0 +1,88 @@
+#include "BaseColourOptions.h"
+
+#include "slImageReader.h"
+#include "slRadianceFilter.h"
+#include "slRadianceReference.h"
+#include "slSceneTexture.h"
+#include "slUpdateOrThrow.h"
+
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+
+namespace shadelab
+{
+namespace app
+{
+
+namespace
+{
+/// Both filters take the base colour through the same setters.
+template <class Filter>
+void applyBaseColour(const BaseColour& base, Filter* filter, vtkPolyData* mesh)
+{
+  filter->SetDiffuseColorArrayName(base.arrayName().c_str());
+  filter->SetDiffuseTexture(base.textureFor(mesh));
+}
+} // namespace
+
+std::vector<OptionSpec> baseColourOptions()
+{
+  return {
+    { "diffuse-array", "", "NAME",
+      "an RGB(A) point array of MESH: a base colour multiplying k_a and k_d (as in render)" },
+    { "diffuse-texture", "", "FILE",
+      "an image: a base colour multiplying k_a and k_d at the texture coordinates (default: the scene's "
+      "material.diffuseTexture)" },
+  };
+}
+
+void checkBaseColourOptions(const CommandLine& cl)
+{
+  if (cl.has("diffuse-array") && cl.has("diffuse-texture"))
+  {
+    // The filters would take the array and never read the texture.
+    throw UsageError("--diffuse-texture: give either --diffuse-array or --diffuse-texture, not both");
+  }
+}
+
+BaseColour::BaseColour(const CommandLine& cl, slScene* scene)
+{
+  checkBaseColourOptions(cl);
+  if (cl.has("diffuse-array"))
+  {
+    this->ArrayName = cl.get("diffuse-array");
+  }
+  else if (cl.has("diffuse-texture"))
+  {
+    // Read once for every mesh, and before any: an unreadable file stops the
+    // command with nothing written.
+    vtkNew<slImageReader> reader;
+    reader->SetFileName(cl.get("diffuse-texture").c_str());
+    slUpdateOrThrow(reader);
+    this->Texture = reader->GetOutput();
+  }
+  else
+  {
+    this->Texture = slReadSceneTexture(scene);
+    this->SceneTexture = true;
+  }
+}
+
+vtkImageData* BaseColour::textureFor(vtkPolyData* mesh) const
+{
+  return this->SceneTexture ? slSceneTextureFor(this->Texture, mesh) : this->Texture.Get();
+}
+
+void BaseColour::applyTo(slRadianceFilter* filter, vtkPolyData* mesh) const
+{
+  applyBaseColour(*this, filter, mesh);
+}
+
+void BaseColour::applyTo(slRadianceReference* filter, vtkPolyData* mesh) const
+{
+  applyBaseColour(*this, filter, mesh);
+}
+
+} // namespace app
+} // namespace shadelab
