@@ -31,10 +31,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <ostream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -147,6 +151,77 @@ void expectIdentical(vtkPolyData* ours, vtkPolyData* theirs, const std::string& 
   EXPECT_EQ(ours->GetNumberOfVerts() + ours->GetNumberOfLines() + ours->GetNumberOfStrips(), 0) << what;
 }
 
+/// One cell or field data array: its name, class and every value.
+struct ArrayValues
+{
+  std::string name, type;
+  std::vector<double> numbers;
+  std::vector<std::string> strings;
+  bool operator==(const ArrayValues& o) const
+  {
+    // Bit for bit, as the points are compared.
+    return name == o.name && type == o.type && strings == o.strings && numbers.size() == o.numbers.size() &&
+      std::equal(numbers.begin(), numbers.end(), o.numbers.begin(),
+        [](double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; });
+  }
+};
+std::ostream& operator<<(std::ostream& out, const ArrayValues& a)
+{
+  out << a.name << " (" << a.type << "):";
+  for (double v : a.numbers)
+  {
+    out << " " << v;
+  }
+  for (const std::string& v : a.strings)
+  {
+    out << " \"" << v << "\"";
+  }
+  return out;
+}
+
+/// Every array of @p data, in order.
+std::vector<ArrayValues> arraysOf(vtkFieldData* data)
+{
+  std::vector<ArrayValues> arrays;
+  for (int a = 0; a < data->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* array = data->GetAbstractArray(a);
+    ArrayValues values{ array->GetName() ? array->GetName() : "", array->GetClassName(), {}, {} };
+    auto* strings = vtkStringArray::SafeDownCast(array);
+    auto* numbers = vtkDataArray::SafeDownCast(array);
+    for (vtkIdType k = 0; k < array->GetNumberOfValues(); ++k)
+    {
+      if (strings)
+      {
+        values.strings.push_back(strings->GetValue(k));
+      }
+      else if (numbers)
+      {
+        values.numbers.push_back(numbers->GetComponent(k / numbers->GetNumberOfComponents(),
+          static_cast<int>(k % numbers->GetNumberOfComponents())));
+      }
+    }
+    arrays.push_back(values);
+  }
+  return arrays;
+}
+
+/// The cell and field data of @p ours, read by slMeshReader, equal
+/// vtkOBJReader's in @p theirs (names, classes, order, values), but for
+/// "GroupIds" where VTK gives every face 0: ShadeLab's parser leaves it out.
+void expectSameCellAndFieldData(vtkPolyData* ours, vtkPolyData* theirs, const std::string& what)
+{
+  std::vector<ArrayValues> cells = arraysOf(theirs->GetCellData());
+  cells.erase(std::remove_if(cells.begin(), cells.end(),
+                [](const ArrayValues& a) {
+                  return a.name == "GroupIds" &&
+                    std::all_of(a.numbers.begin(), a.numbers.end(), [](double v) { return v == 0; });
+                }),
+    cells.end());
+  EXPECT_EQ(arraysOf(ours->GetCellData()), cells) << what;
+  EXPECT_EQ(arraysOf(ours->GetFieldData()), arraysOf(theirs->GetFieldData())) << what;
+}
+
 /// A sphere with normals and texture coordinates @p uv(point id).
 vtkSmartPointer<vtkPolyData> texturedSphere(int resolution, std::array<double, 2> (*uv)(double))
 {
@@ -190,6 +265,36 @@ const std::map<std::string, std::string>& objFiles()
                                                   "vt 1 1\nf 1/1 2/2 3/3\nf 1 2 4\n" },
     { "faces with and without vn", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvn 0 0 1\nvn 0 0 1\nvn 0 0 1\nvn 0 1 0\n"
                                    "f 1//1 2//2 3//3\nf 1 2 4\n" },
+    // Objects, smoothing groups, groups and materials, as exporters write
+    // them: the groups' and materials' arrays as vtkOBJReader gives them.
+    { "Blender-style header", "# Blender v2.93.0 OBJ File: ''\n# www.blender.org\nmtllib untitled.mtl\no Plane\n"
+                              "v -1.000000 0.000000 1.000000\nv 1.000000 0.000000 1.000000\n"
+                              "v -1.000000 0.000000 -1.000000\nv 1.000000 0.000000 -1.000000\n"
+                              "vt 1.000000 0.000000\nvt 0.000000 1.000000\nvt 0.000000 0.000000\n"
+                              "vt 1.000000 1.000000\nvn 0.0000 1.0000 0.0000\nusemtl Material\ns off\n"
+                              "f 2/1/1 3/2/1 1/3/1\nf 2/1/1 4/4/1 3/2/1\n" },
+    { "objects, smoothing groups and libraries anywhere",
+      "mtllib a.mtl b.mtl\no first\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\ns 1\nf 1 2 3\no second object\ns off\n"
+      "f 1 3 4\nmtllib\n" },
+    { "several groups", "g\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\ng first\nf 1 2 3\ng second part\ng\nf 1 3 4\n"
+                        "f 2 3 4\ng last\n" },
+    { "a face before the first group", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\ng a\nf 1 3 2\n" },
+    { "one group", "v 0 0 0\nv 1 0 0\nv 1 1 0\ng a\nf 1 2 3\nf 1 3 2\n" },
+    { "material with vt", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+                          "usemtl wood\nf 1/1 2/2 3/3\nusemtl wood\nf 1/1 3/3 4/4\n" },
+    { "material with vt by corner", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0.5 0.5\n"
+                                    "f 1/1 2/2 3/3\nusemtl wood extra words\nf 1/4 3/3 4/1\nf 1 2 4\n" },
+    { "material with vn", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nvn 0 0 -1\nmtllib m.mtl\nusemtl steel\n"
+                          "f 1//1 2//1 3//1\nf 1//2 3//2 4//2\n" },
+    { "material with neither", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nusemtl steel\nf 1 2 3\nf 1 3 2\n" },
+    { "material named NO_MATERIAL", "v 0 0 0\nv 1 0 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nusemtl NO_MATERIAL\n"
+                                    "f 1/1 2/2 3/3\n" },
+    { "materials without vt", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nvn 0 0 1\nvn 0 0 1\nvn 0 0 1\n"
+                              "f 1//1 2//2 3//3\nusemtl a\nf 1//1 3//3 4//4\nusemtl b\nusemtl c\nf 1 2 4\nf 1 2 3\n"
+                              "usemtl a\nf 2 3 4\nusemtl d\n" },
+    { "mixed", "# mixed\nmtllib x.mtl\no thing\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\n"
+               "vt 1 1\nvt 0 1\nvn 0 0 1\nvn 0 0 1\nvn 0 0 1\nvn 0 0 1\ng top\nusemtl paint\ns 1\n"
+               "f 1/1/1 2/2/2 3/3/3\ng side\nf 1/1 3/3 4/4\nf 1 2 4\no other\ng\nusemtl paint\nf 2//2 3//3 4//4\n" },
   };
   return files;
 }
@@ -203,10 +308,12 @@ TEST(MeshFormats, OBJAsVTKReadsItWithCornersMerged)
     const std::string path = folder.path("m.obj");
     folder.write("m.obj", file.second);
     slMeshArrays arrays;
-    EXPECT_TRUE(slParseOBJ(file.second.data(), file.second.size(), true, arrays, 2)) << file.first;
+    slOBJAttributes attributes;
+    EXPECT_TRUE(slParseOBJ(file.second.data(), file.second.size(), true, arrays, attributes, 2)) << file.first;
     vtkSmartPointer<vtkPolyData> ours = readShadeLab(path);
     vtkSmartPointer<vtkPolyData> theirs = readVTK<vtkOBJReader>(path);
     const Merged a = merged(ours), b = merged(theirs);
+    expectSameCellAndFieldData(ours, theirs, file.first);
     // Merging leaves nothing to merge, and gives VTK's points merged.
     EXPECT_EQ(static_cast<size_t>(ours->GetNumberOfPoints()), a.rows.size()) << file.first;
     EXPECT_EQ(a.rows, b.rows) << file.first;
@@ -220,6 +327,7 @@ TEST(MeshFormats, OBJAsVTKReadsItWithCornersMerged)
     unmerged->MergeDuplicatePointsOff();
     unmerged->Update();
     expectIdentical(unmerged->GetOutput(), theirs, file.first + ", unmerged");
+    expectSameCellAndFieldData(unmerged->GetOutput(), theirs, file.first + ", unmerged");
   }
 }
 
@@ -227,7 +335,19 @@ TEST(MeshFormats, OBJOutsideTheCommonFormGoesToVTK)
 {
   const TestFolder folder;
   const std::map<std::string, std::string> declined = {
-    { "group", "v 0 0 0\nv 1 0 0\nv 0 1 0\ng part\nf 1 2 3\n" },
+    // vtkOBJReader gives a texture coordinate array per material, in the
+    // order of its hash table.
+    { "materials with vt", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl a\nf 1/1 2/2 3/3\n"
+                           "usemtl b\nf 1/1 3/3 2/2\n" },
+    // ... named "Normals", which its normals then replace.
+    { "material named Normals", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl Normals\n"
+                                "f 1/1 2/2 3/3\n" },
+    // ... "MaterialIds" for the faces only, which slMeshReader refuses.
+    { "material and a line", "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\nl 1 2\n" },
+    { "material without a name", "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl \nf 1 2 3\n" },
+    { "material name of 100 bytes", "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl " + std::string(100, 'm') + "\nf 1 2 3\n" },
+    { "form feed in a material name", "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\fb\nf 1 2 3\n" },
+    { "vertical tab after a group", "v 0 0 0\nv 1 0 0\nv 0 1 0\ng\va\nf 1 2 3\ng\nf 1 3 2\n" },
     { "negative index", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n" },
     { "vertex colours", "v 0 0 0 1 0 0\nv 1 0 0 1 0 0\nv 0 1 0 1 0 0\nf 1 2 3\n" },
     { "line naming a normal", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nl 1//1 2\n" },
@@ -236,11 +356,15 @@ TEST(MeshFormats, OBJOutsideTheCommonFormGoesToVTK)
   for (const auto& file : declined)
   {
     slMeshArrays arrays;
-    EXPECT_FALSE(slParseOBJ(file.second.data(), file.second.size(), true, arrays, 1)) << file.first;
+    slOBJAttributes attributes;
+    EXPECT_FALSE(slParseOBJ(file.second.data(), file.second.size(), true, arrays, attributes, 1)) << file.first;
   }
-  // Declined, it reads as before: through vtkOBJReader.
-  folder.write("g.obj", declined.at("group"));
-  EXPECT_EQ(readShadeLab(folder.path("g.obj"))->GetNumberOfPolys(), 1);
+  // Declined, it reads as before: through vtkOBJReader, with its array of
+  // texture coordinates per material.
+  folder.write("m.obj", declined.at("materials with vt"));
+  vtkSmartPointer<vtkPolyData> read = readShadeLab(folder.path("m.obj"));
+  EXPECT_EQ(read->GetNumberOfPolys(), 2);
+  EXPECT_EQ(read->GetPointData()->GetNumberOfArrays(), 2);
 }
 
 TEST(MeshFormats, PLYAsVTKReadsIt)
@@ -298,7 +422,8 @@ TEST(MeshFormats, WrittenOBJAndPLYReadBackBitForBit)
     ASSERT_EQ(callError(writer, [&] { return writer->Write(); }), "");
     const std::string bytes = contents(folder.path(name));
     slMeshArrays arrays;
-    EXPECT_TRUE(std::string(name) == "m.obj" ? slParseOBJ(bytes.data(), bytes.size(), false, arrays, 1)
+    slOBJAttributes attributes;
+    EXPECT_TRUE(std::string(name) == "m.obj" ? slParseOBJ(bytes.data(), bytes.size(), false, arrays, attributes, 1)
                                              : slParsePLY(bytes.data(), bytes.size(), arrays));
     vtkNew<slMeshReader> reader;
     reader->SetFileName(folder.path(name).c_str());
@@ -387,7 +512,8 @@ TEST(MeshFormats, OBJIsWrittenInOrderPieceByPiece)
   }
   // The joined text reads back to the mesh, line for line.
   slMeshArrays back;
-  ASSERT_TRUE(slParseOBJ(text.data(), text.size(), false, back, 1));
+  slOBJAttributes attributes;
+  ASSERT_TRUE(slParseOBJ(text.data(), text.size(), false, back, attributes, 1));
   EXPECT_EQ(back.points, storage.points);
   EXPECT_EQ(back.normals, storage.normals);
   EXPECT_EQ(back.offsets, storage.offsets);
@@ -458,7 +584,8 @@ void expectSameOnMoreThreads(const std::string& text, const slMeshArrays& one, c
   for (int threads : { 2, 4 })
   {
     slMeshArrays many;
-    ASSERT_TRUE(slParseOBJ(text.data(), text.size(), false, many, threads)) << what;
+    slOBJAttributes attributes;
+    ASSERT_TRUE(slParseOBJ(text.data(), text.size(), false, many, attributes, threads)) << what;
     EXPECT_EQ(many.points, one.points) << what << ", " << threads << " threads";
     EXPECT_EQ(many.normals, one.normals) << what << ", " << threads << " threads";
     EXPECT_EQ(many.offsets, one.offsets) << what << ", " << threads << " threads";
@@ -492,7 +619,8 @@ TEST(MeshFormats, OBJLinesPointsAndFacesOfSeveralFormsReadAlikeOnAnyThreadCount)
   {
     ASSERT_GT(c.text.size(), size_t(1) << 20);
     slMeshArrays one;
-    ASSERT_TRUE(slParseOBJ(c.text.data(), c.text.size(), false, one, 1)) << c.what;
+    slOBJAttributes attributes;
+    ASSERT_TRUE(slParseOBJ(c.text.data(), c.text.size(), false, one, attributes, 1)) << c.what;
     // The v list's points, lines and vertex cells naming them after the faces.
     ASSERT_EQ(one.points.size(), size_t(3 * n * n)) << c.what;
     EXPECT_EQ(one.normals.size(), c.normals ? one.points.size() : 0u) << c.what;
@@ -520,7 +648,8 @@ TEST(MeshFormats, OBJCornersNamingOtherNormalsReadAlikeOnAnyThreadCount)
   {
     ASSERT_GT(text.size(), size_t(1) << 20);
     slMeshArrays one;
-    ASSERT_TRUE(slParseOBJ(text.data(), text.size(), false, one, 1)) << what;
+    slOBJAttributes attributes;
+    ASSERT_TRUE(slParseOBJ(text.data(), text.size(), false, one, attributes, 1)) << what;
     const bool odd = std::string(what) != "same everywhere";
     const size_t corners = 3 * static_cast<size_t>(faceCount + (odd ? 1 : 0));
     // vtkOBJReader's points: the v list when every corner names one index,
@@ -539,6 +668,104 @@ TEST(MeshFormats, OBJCornersNamingOtherNormalsReadAlikeOnAnyThreadCount)
     }
     expectSameOnMoreThreads(text, one, what);
   }
+}
+
+TEST(MeshFormats, OBJGroupsAndMaterialsReadAlikeOnAnyThreadCount)
+{
+  // Over 1 MiB, so that 2 and 4 threads parse it in stretches, which then
+  // begin and end between "g" and "usemtl" lines and the faces they apply
+  // to: a group every 1000 faces (the first before the first face), a
+  // material every 1500 faces, of three names in turn, and halfway a face of
+  // plain "v" corners (vtkOBJReader's material NO_MATERIAL from there on).
+  const int n = 150;
+  std::string points, faces;
+  const int faceCount = objGrid(n, points, faces);
+  std::istringstream lines(faces);
+  std::string text = "mtllib grid.mtl\no grid\n" + points, line;
+  for (int face = 0; std::getline(lines, line); ++face)
+  {
+    if (face % 1000 == 0)
+    {
+      text += "g part " + std::to_string(face / 1000) + "\n";
+    }
+    if (face % 1500 == 700)
+    {
+      text += std::string("usemtl ") + "abc"[(face / 1500) % 3] + "\n";
+    }
+    if (face == faceCount / 2)
+    {
+      text += "f 1 2 152\n";
+    }
+    text += line + "\ns 1\n";
+  }
+  text += "mtllib more.mtl\n";
+  ASSERT_GT(text.size(), size_t(1) << 20);
+  slMeshArrays one;
+  slOBJAttributes attributes;
+  ASSERT_TRUE(slParseOBJ(text.data(), text.size(), false, one, attributes, 1));
+  ASSERT_EQ(attributes.groupIds.size(), size_t(faceCount + 1));
+  ASSERT_EQ(attributes.materialIds.size(), size_t(faceCount + 1));
+  // A face's group: the "g" lines before it, less the one before the first
+  // face; its material: id 0 before the first "usemtl" line, then a, b, c
+  // numbered in order of appearance.
+  for (const int face : { 0, 999, 1000, 2500, 10999 })
+  {
+    EXPECT_EQ(attributes.groupIds[static_cast<size_t>(face)], static_cast<float>(face / 1000)) << face;
+  }
+  for (const auto& [face, id] : std::map<int, std::int32_t>{ { 0, 0 }, { 699, 0 }, { 700, 0 }, { 2199, 0 },
+         { 2200, 1 }, { 3700, 2 }, { 5200, 0 }, { 6700, 1 } })
+  {
+    EXPECT_EQ(attributes.materialIds[static_cast<size_t>(face)], id) << face;
+  }
+  EXPECT_EQ(std::vector<std::string>(attributes.materialNames.begin(), attributes.materialNames.begin() + 4),
+    std::vector<std::string>({ "a", "b", "c", "NO_MATERIAL" }));
+  EXPECT_EQ(attributes.materialLibraries, std::vector<std::string>({ "grid.mtl", "more.mtl" }));
+  for (int threads : { 2, 4 })
+  {
+    slMeshArrays many;
+    slOBJAttributes more;
+    ASSERT_TRUE(slParseOBJ(text.data(), text.size(), false, many, more, threads));
+    EXPECT_EQ(more.groupIds, attributes.groupIds) << threads << " threads";
+    EXPECT_EQ(more.materialIds, attributes.materialIds) << threads << " threads";
+    EXPECT_EQ(more.materialNames, attributes.materialNames) << threads << " threads";
+    EXPECT_EQ(more.materialLibraries, attributes.materialLibraries) << threads << " threads";
+    EXPECT_EQ(many.connectivity, one.connectivity) << threads << " threads";
+  }
+  // Every value as vtkOBJReader gives it.
+  const TestFolder folder;
+  folder.write("grid.obj", text);
+  expectSameCellAndFieldData(readShadeLab(folder.path("grid.obj")), readVTK<vtkOBJReader>(folder.path("grid.obj")),
+    "grid");
+}
+
+TEST(MeshFormats, OBJGroupsOfLinesAndPointsAreTheOnesVTKsReaderIsGiven)
+{
+  // vtkOBJReader 9.1 gives the faces only a group; slMeshReader gives the
+  // lines and vertex cells, which VTK orders first, the group -1, whichever
+  // parser reads the file.
+  const std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\ng a\nf 1 2 3\nl 1 2\ng b\nf 1 2 4\np 3\nl 2 3\n";
+  slMeshArrays arrays;
+  slOBJAttributes attributes;
+  ASSERT_TRUE(slParseOBJ(text.data(), text.size(), true, arrays, attributes, 1));
+  const TestFolder folder;
+  folder.write("g.obj", text);
+  vtkSmartPointer<vtkPolyData> theirs = readVTK<vtkOBJReader>(folder.path("g.obj"));
+  vtkDataArray* faceGroups = theirs->GetCellData()->GetArray("GroupIds");
+  ASSERT_NE(faceGroups, nullptr);
+  ASSERT_EQ(faceGroups->GetNumberOfTuples(), 2);
+  std::vector<double> expected(3, -1.0);
+  expected.push_back(faceGroups->GetTuple1(0));
+  expected.push_back(faceGroups->GetTuple1(1));
+  vtkSmartPointer<vtkPolyData> ours = readShadeLab(folder.path("g.obj"));
+  vtkDataArray* groups = ours->GetCellData()->GetArray("GroupIds");
+  ASSERT_NE(groups, nullptr);
+  std::vector<double> got;
+  for (vtkIdType c = 0; c < groups->GetNumberOfTuples(); ++c)
+  {
+    got.push_back(groups->GetTuple1(c));
+  }
+  EXPECT_EQ(got, expected);
+  EXPECT_EQ(expected, std::vector<double>({ -1, -1, -1, 0, 1 }));
 }
 
 TEST(MeshFormats, LegacyVTKIdAndStringArraysReadAsVTKReadsThem)

@@ -3,7 +3,8 @@
 // ShadeLab filter and VTK writer may follow (finite points, cells naming
 // existing points, polygons of 3 points or more, arrays as long as the mesh).
 // For OBJ and PLY, bytes that ShadeLab's own parser takes must also read to
-// exactly what VTK's reader gives, where VTK 9.1 keeps every element.
+// exactly what VTK's reader gives, where VTK 9.1 keeps every element: for
+// OBJ also the groups' and materials' arrays.
 #include "FuzzInputFile.h"
 #include "FuzzToolOutput.h"
 
@@ -16,16 +17,23 @@
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkFloatArray.h>
 #include <vtkIdList.h>
+#include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkOBJReader.h>
 #include <vtkPLYReader.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkStringArray.h>
 
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
 
 namespace
 {
@@ -81,6 +89,81 @@ bool same(vtkPolyData* mesh, const slMeshArrays& arrays)
   return true;
 }
 
+/// True if the arrays of @p data are exactly those named @p names, in order.
+bool named(vtkFieldData* data, const std::vector<std::string>& names)
+{
+  if (data->GetNumberOfArrays() != static_cast<int>(names.size()))
+  {
+    return false;
+  }
+  for (int a = 0; a < data->GetNumberOfArrays(); ++a)
+  {
+    const char* name = data->GetAbstractArray(a)->GetName();
+    if (!name || names[static_cast<size_t>(a)] != name)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// True if the @p Array named @p name in @p data holds exactly @p values.
+template <typename Array, typename T>
+bool holds(vtkFieldData* data, const char* name, const std::vector<T>& values)
+{
+  Array* array = Array::SafeDownCast(data->GetAbstractArray(name));
+  if (!array || array->GetNumberOfComponents() != 1 ||
+    array->GetNumberOfValues() != static_cast<vtkIdType>(values.size()))
+  {
+    return false;
+  }
+  for (size_t k = 0; k < values.size(); ++k)
+  {
+    if (!(array->GetValue(static_cast<vtkIdType>(k)) == values[k]))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// True if @p mesh, read by vtkOBJReader, has exactly the arrays besides
+/// points, normals and texture coordinates that @p attributes describe:
+/// the texture coordinates' name; the cell arrays "MaterialIds" (with
+/// materials) and "GroupIds" (0 for every face where @p attributes has
+/// none); the field data "MaterialNames" and "MaterialLibraries".
+bool sameAttributes(vtkPolyData* mesh, const slOBJAttributes& attributes)
+{
+  vtkDataArray* tcoords = mesh->GetPointData()->GetTCoords();
+  const int pointArrays = (tcoords ? 1 : 0) + (mesh->GetPointData()->GetNormals() ? 1 : 0);
+  if (mesh->GetPointData()->GetNumberOfArrays() != pointArrays ||
+    (tcoords && (!tcoords->GetName() || attributes.tcoordsName != tcoords->GetName())))
+  {
+    return false;
+  }
+  const bool materials = !attributes.materialIds.empty();
+  std::vector<std::string> cellArrays{ "GroupIds" }, fieldArrays;
+  if (materials)
+  {
+    cellArrays.insert(cellArrays.begin(), "MaterialIds");
+    fieldArrays.emplace_back("MaterialNames");
+    if (!attributes.materialLibraries.empty())
+    {
+      fieldArrays.emplace_back("MaterialLibraries");
+    }
+  }
+  const std::vector<float> groups = !attributes.groupIds.empty()
+    ? attributes.groupIds
+    : std::vector<float>(static_cast<size_t>(mesh->GetNumberOfPolys()), 0.0f);
+  return named(mesh->GetCellData(), cellArrays) && named(mesh->GetFieldData(), fieldArrays) &&
+    holds<vtkFloatArray>(mesh->GetCellData(), "GroupIds", groups) &&
+    (!materials ||
+      (holds<vtkIntArray>(mesh->GetCellData(), "MaterialIds", attributes.materialIds) &&
+        holds<vtkStringArray>(mesh->GetFieldData(), "MaterialNames", attributes.materialNames) &&
+        (attributes.materialLibraries.empty() ||
+          holds<vtkStringArray>(mesh->GetFieldData(), "MaterialLibraries", attributes.materialLibraries))));
+}
+
 /// True if vtkOBJReader 9.1 kept every element of a file that gave
 /// @p arrays: it drops the faces without vn beside faces with one, and the
 /// "l" and "p" elements when it makes a point per corner (where ShadeLab's
@@ -98,12 +181,19 @@ void compareWithVTK(const std::string& path, const uint8_t* data, size_t size)
   const std::string ext = SL_FUZZ_EXTENSION;
   const char* text = reinterpret_cast<const char*>(data);
   slMeshArrays arrays;
-  if (ext == ".obj" && slParseOBJ(text, size, false, arrays, 1))
+  slOBJAttributes attributes;
+  if (ext == ".obj" && slParseOBJ(text, size, false, arrays, attributes, 1))
   {
+    // ShadeLab's parser skips a UTF-8 byte order mark, which vtkOBJReader
+    // reads as part of the first keyword (dropping that line): it reads
+    // the text after the mark.
+    const bool mark = size >= 3 && std::memcmp(text, "\xEF\xBB\xBF", 3) == 0;
+    const std::string vtkPath = mark ? fuzzInputFile(data + 3, size - 3, SL_FUZZ_EXTENSION) : path;
     vtkNew<vtkOBJReader> reader;
-    reader->SetFileName(path.c_str());
+    reader->SetFileName(vtkPath.c_str());
     reader->Update();
-    if (keptEveryElement(reader->GetOutput(), arrays) && !same(reader->GetOutput(), arrays))
+    if (keptEveryElement(reader->GetOutput(), arrays) &&
+      (!same(reader->GetOutput(), arrays) || !sameAttributes(reader->GetOutput(), attributes)))
     {
       std::abort();
     }

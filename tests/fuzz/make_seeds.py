@@ -67,6 +67,15 @@ def mesh_seeds():
     with open(os.path.join(d, "full.obj"), "w") as f:
         f.write("# comment\no quad\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
                 "vn 0 0 1\ng top\nusemtl red\nf 1/1/1 2/2/1 3/3/1 4/4/1\nl 1 3\np 2\nf 1//1 3//1 \\\n 4//1\n")
+    # As Blender writes it, and groups and materials as ShadeLab's parser takes them.
+    with open(os.path.join(d, "blender.obj"), "w") as f:
+        f.write("# Blender v2.93.0 OBJ File: ''\n# www.blender.org\nmtllib untitled.mtl\no Plane\n"
+                "v -1 0 1\nv 1 0 1\nv -1 0 -1\nv 1 0 -1\nvt 1 0\nvt 0 1\nvt 0 0\nvt 1 1\nvn 0 1 0\n"
+                "usemtl Material\ns off\nf 2/1/1 3/2/1 1/3/1\nf 2/1/1 4/4/1 3/2/1\n")
+    with open(os.path.join(d, "groups.obj"), "w") as f:
+        f.write("mtllib a.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nvn 0 0 1\nvn 0 0 1\nvn 0 0 1\n"
+                "f 1 2 3\ng a\nusemtl red\nf 1//1 3//3 4//4\ng\ng b c\nusemtl green\ns 1\nf 2 3 4\n"
+                "usemtl red\no more\nf 1 2 4\n")
     d = folder("fuzz_mesh_off")
     with open(os.path.join(d, "tetra.off"), "w") as f:
         f.write("OFF\n# tetrahedron\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n")

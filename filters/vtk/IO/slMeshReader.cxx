@@ -22,9 +22,12 @@
 #include <vtkCompositeDataIterator.h>
 #include <vtkCompositeDataSet.h>
 #include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkFloatArray.h>
 #include <vtkGLTFReader.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
+#include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkOBJReader.h>
 #include <vtkObjectFactory.h>
@@ -36,12 +39,15 @@
 #include <vtkSMPTools.h>
 #include <vtkSTLReader.h>
 #include <vtkSmartPointer.h>
+#include <vtkStringArray.h>
 #include <vtkXMLPolyDataReader.h>
 
 #include <cmath>
 #include <fstream>
 #include <memory>
 #include <new>
+#include <string>
+#include <vector>
 
 vtkStandardNewMacro(slMeshReader);
 
@@ -150,6 +156,47 @@ void completeOBJGroupIds(vtkPolyData* mesh)
   mesh->GetCellData()->AddArray(complete);
 }
 
+/// A one-component VTK array named @p name holding @p values.
+template <typename Array, typename T>
+vtkSmartPointer<Array> namedArray(const char* name, const std::vector<T>& values)
+{
+  auto array = vtkSmartPointer<Array>::New();
+  array->SetName(name);
+  slSetNumberOfTuplesOrThrow(array, static_cast<vtkIdType>(values.size()));
+  for (std::size_t k = 0; k < values.size(); ++k)
+  {
+    array->SetValue(static_cast<vtkIdType>(k), values[k]);
+  }
+  return array;
+}
+
+/// Adds to @p mesh, read by ShadeLab's OBJ parser, what vtkOBJReader 9.1
+/// makes of groups and materials, as it names and orders them: the texture
+/// coordinates' name, the cell arrays "MaterialIds" and "GroupIds" (the
+/// latter, as for VTK's reader, completed for the lines and vertex cells),
+/// the field data "MaterialNames" and "MaterialLibraries".
+void addOBJAttributes(const slOBJAttributes& attributes, vtkPolyData* mesh)
+{
+  if (vtkDataArray* tcoords = mesh->GetPointData()->GetTCoords())
+  {
+    tcoords->SetName(attributes.tcoordsName.c_str());
+  }
+  if (!attributes.materialIds.empty())
+  {
+    mesh->GetCellData()->AddArray(namedArray<vtkIntArray>("MaterialIds", attributes.materialIds));
+    mesh->GetFieldData()->AddArray(namedArray<vtkStringArray>("MaterialNames", attributes.materialNames));
+    if (!attributes.materialLibraries.empty())
+    {
+      mesh->GetFieldData()->AddArray(namedArray<vtkStringArray>("MaterialLibraries", attributes.materialLibraries));
+    }
+  }
+  if (!attributes.groupIds.empty())
+  {
+    mesh->GetCellData()->AddArray(namedArray<vtkFloatArray>("GroupIds", attributes.groupIds));
+    completeOBJGroupIds(mesh);
+  }
+}
+
 /// All polygonal leaves of a composite dataset (glTF meshes and primitives)
 /// appended into one polydata; null when it has none.
 vtkSmartPointer<vtkPolyData> appendLeaves(vtkCompositeDataSet* composite)
@@ -201,8 +248,9 @@ bool readOwnFormat(const char* fileName, const std::string& ext, bool merge, vtk
       return false;
     }
     slMeshArrays arrays;
+    slOBJAttributes attributes;
     const bool parsed = ext == ".obj"
-      ? slParseOBJ(bytes.get(), length, merge, arrays, vtkSMPTools::GetEstimatedNumberOfThreads())
+      ? slParseOBJ(bytes.get(), length, merge, arrays, attributes, vtkSMPTools::GetEstimatedNumberOfThreads())
       : slParsePLY(bytes.get(), length, arrays);
     if (!parsed)
     {
@@ -211,6 +259,10 @@ bool readOwnFormat(const char* fileName, const std::string& ext, bool merge, vtk
     bytes.reset();
     // vtkOBJReader adds texture coordinates before normals.
     slToPolyData(arrays, ext == ".obj", mesh);
+    if (ext == ".obj")
+    {
+      addOBJAttributes(attributes, mesh);
+    }
     return true;
   }
   catch (const std::bad_alloc&)

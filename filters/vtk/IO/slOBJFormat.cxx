@@ -13,6 +13,8 @@
 #include <mutex>
 #include <system_error>
 #include <thread>
+#include <unordered_map>
+#include <utility>
 
 namespace
 {
@@ -127,6 +129,26 @@ bool element(Cursor& c, int& form, std::vector<std::int64_t>& corners, std::int6
   return count >= 1;
 }
 
+/// The first word of the rest of the line (empty if none), as vtkOBJReader
+/// reads a "usemtl" or "mtllib" name (sscanf "%s", a stream's >>). False if
+/// the rest holds a control byte other than a tab, which VTK would take for
+/// white space where this parser does not.
+bool firstWord(Cursor& c, std::string& word)
+{
+  if (std::find_if(c.at, c.end, [](char b) { return static_cast<unsigned char>(b) < 0x20 && b != '\t'; }) != c.end)
+  {
+    return false;
+  }
+  c.skipBlanks();
+  const char* start = c.at;
+  while (c.at < c.end && *c.at != ' ' && *c.at != '\t')
+  {
+    ++c.at;
+  }
+  word.assign(start, c.at);
+  return true;
+}
+
 void append(std::string& out, double value, bool isDouble)
 {
   char buffer[40];
@@ -176,6 +198,14 @@ struct Chunk
   int everyFace = VTN;          // the Form bits every face has
   int kept = 0;                 // which of t (bit 1) and n (bit 2) are filled, once spelt out
   bool ok = true;
+  // What vtkOBJReader makes of groups and materials: the place of each "g"
+  // and "usemtl" line as the number of faces before it in this stretch, the
+  // "mtllib" lines' names, and the first face of plain "v" corners (VTK's
+  // material "NO_MATERIAL").
+  std::vector<std::int64_t> groups;
+  std::vector<std::pair<std::int64_t, std::string>> materials;
+  std::vector<std::string> libraries;
+  std::int64_t firstPlainFace = -1;
   // Every face so far has one form, and every corner names its v index for
   // vt and vn too (the common case, "f 1//1 2//2 3//3"): t and n are then
   // left empty, which saves writing, joining and faulting in 8 bytes per
@@ -300,6 +330,10 @@ void parseLines(const char* begin, const char* end, Chunk& chunk)
       chunk.form = sameForm ? here : Mixed;
       chunk.given = keep;
       chunk.everyFace &= here;
+      if (here == V && chunk.firstPlainFace < 0)
+      {
+        chunk.firstPlainFace = static_cast<std::int64_t>(chunk.faceCorners.size());
+      }
       chunk.faceCorners.push_back(count);
     }
     else if (length == 1 && (keyword[0] == 'l' || keyword[0] == 'p'))
@@ -317,6 +351,27 @@ void parseLines(const char* begin, const char* end, Chunk& chunk)
         chunk.lineTexture = std::max(chunk.lineTexture, corners[k + 1]);
       }
       (line ? chunk.lineSizes : chunk.vertexSizes).push_back(count);
+    }
+    else if (length == 1 && (keyword[0] == 'o' || keyword[0] == 's'))
+    {
+      // Object names and smoothing groups: vtkOBJReader ignores them.
+    }
+    else if (length == 1 && keyword[0] == 'g')
+    {
+      chunk.groups.push_back(static_cast<std::int64_t>(chunk.faceCorners.size())); // the names do not matter
+    }
+    else if (length == 6 && std::memcmp(keyword, "usemtl", 6) == 0)
+    {
+      // vtkOBJReader copies the name into a char[100].
+      std::string name;
+      ok = firstWord(c, name) && !name.empty() && name.size() <= 99;
+      chunk.materials.emplace_back(static_cast<std::int64_t>(chunk.faceCorners.size()), std::move(name));
+    }
+    else if (length == 6 && std::memcmp(keyword, "mtllib", 6) == 0)
+    {
+      std::string name;
+      ok = firstWord(c, name);
+      chunk.libraries.push_back(std::move(name));
     }
     else
     {
@@ -347,9 +402,162 @@ std::vector<T> joined(std::vector<Chunk>& chunks, std::vector<T> Chunk::*member)
   }
   return out;
 }
+
+/// vtkOBJReader's "GroupIds" from the places of the "g" lines (faces before
+/// each, in order): it counts them from -1 and raises the count to 0 at the
+/// first face, so a face has the number of "g" lines before it, less one if
+/// one comes before the first face. Empty when every face has 0. False if
+/// VTK's int count would overflow.
+bool groupIds(const std::vector<std::int64_t>& places, std::int64_t faces, std::vector<float>& ids)
+{
+  ids.clear();
+  if (places.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+  {
+    return false;
+  }
+  if (faces == 0)
+  {
+    return true; // declined later
+  }
+  const std::size_t first = !places.empty() && places[0] == 0 ? 1 : 0;
+  if (std::upper_bound(places.begin(), places.end(), faces - 1) - places.begin() == static_cast<std::ptrdiff_t>(first))
+  {
+    return true; // no "g" line between faces: all 0
+  }
+  ids.resize(static_cast<std::size_t>(faces));
+  std::size_t before = 0; // "g" lines before face f
+  for (std::int64_t f = 0; f < faces; ++f)
+  {
+    while (before < places.size() && places[before] <= f)
+    {
+      ++before;
+    }
+    // As VTK converts its int count.
+    ids[static_cast<std::size_t>(f)] = static_cast<float>(static_cast<int>(before - first));
+  }
+  return true;
+}
+
+/// vtkOBJReader 9.1's name for the material it gives, once, to the first
+/// face of plain "v" corners.
+const std::string noMaterial = "NO_MATERIAL";
+
+/// vtkOBJReader's "MaterialIds", "MaterialNames" and "MaterialLibraries"
+/// from @p starts, the places (faces before each) and names of the "usemtl"
+/// lines and of the first face of plain "v" corners, in file order: each
+/// starts its material at its place (the last of one place wins), the faces
+/// before the first have id 0, and ids number the names in order of first
+/// appearance. There are materials unless no name or only NO_MATERIAL
+/// appears.
+void materialIds(const std::vector<std::pair<std::int64_t, const std::string*>>& starts, std::int64_t faces,
+  std::vector<std::string> libraries, slOBJAttributes& attributes)
+{
+  std::unordered_map<std::string, std::int32_t> idOf;
+  std::vector<std::string> names;
+  std::vector<std::pair<std::int64_t, std::int32_t>> idFrom; // (first face, id), by face
+  for (const auto& start : starts)
+  {
+    const auto known = idOf.emplace(*start.second, static_cast<std::int32_t>(names.size()));
+    if (known.second)
+    {
+      names.push_back(*start.second);
+    }
+    if (!idFrom.empty() && idFrom.back().first == start.first)
+    {
+      idFrom.back().second = known.first->second;
+    }
+    else
+    {
+      idFrom.emplace_back(start.first, known.first->second);
+    }
+  }
+  if (names.empty() || (names.size() == 1 && names[0] == noMaterial))
+  {
+    return;
+  }
+  attributes.materialIds.assign(static_cast<std::size_t>(faces), 0);
+  for (std::size_t k = 0; k < idFrom.size(); ++k)
+  {
+    const std::int64_t end = k + 1 < idFrom.size() ? std::min(idFrom[k + 1].first, faces) : faces;
+    std::fill(attributes.materialIds.begin() + std::min(idFrom[k].first, faces),
+      attributes.materialIds.begin() + end, idFrom[k].second);
+  }
+  attributes.materialNames = std::move(names);
+  attributes.materialLibraries = std::move(libraries);
+}
+
+/// Fills @p attributes from the stretches' "g", "usemtl" and "mtllib" lines
+/// and first faces of plain "v" corners, given whether faces have texture
+/// coordinates (@p textured). False where vtkOBJReader 9.1 gives what this
+/// parser does not: texture coordinates of several materials (an array per
+/// material, in its hash table's order) or named "Normals" (which VTK's
+/// normals then replace); materials beside "l" and "p" elements (VTK's
+/// "MaterialIds" then has a value per face only, and slMeshReader refuses
+/// the file).
+bool attributesOf(const std::vector<Chunk>& chunks, bool textured, slOBJAttributes& attributes)
+{
+  bool elements = false; // "l" or "p"
+  std::vector<std::int64_t> groups;
+  std::vector<std::pair<std::int64_t, const std::string*>> starts;
+  std::vector<std::string> libraries;
+  const std::string* tcoordsName = nullptr;
+  bool plainFaceSeen = false;
+  std::int64_t faces = 0; // before the stretch
+  for (const Chunk& c : chunks)
+  {
+    for (std::int64_t place : c.groups)
+    {
+      groups.push_back(faces + place);
+    }
+    // The file's first face of plain "v" corners starts its material after
+    // the "usemtl" lines before it.
+    const std::int64_t plainFace = plainFaceSeen ? -1 : c.firstPlainFace;
+    plainFaceSeen = plainFaceSeen || plainFace >= 0;
+    bool plainFaceNoted = plainFace < 0;
+    const auto notePlainFace = [&] {
+      starts.emplace_back(faces + plainFace, &noMaterial);
+      plainFaceNoted = true;
+    };
+    for (const auto& m : c.materials)
+    {
+      if (!plainFaceNoted && m.first > plainFace)
+      {
+        notePlainFace();
+      }
+      starts.emplace_back(faces + m.first, &m.second);
+      if (textured && tcoordsName && *tcoordsName != m.second)
+      {
+        return false;
+      }
+      tcoordsName = &m.second;
+    }
+    if (!plainFaceNoted)
+    {
+      notePlainFace();
+    }
+    libraries.insert(libraries.end(), c.libraries.begin(), c.libraries.end());
+    elements = elements || !c.lineSizes.empty() || !c.vertexSizes.empty();
+    faces += static_cast<std::int64_t>(c.faceCorners.size());
+  }
+  if (textured && tcoordsName)
+  {
+    if (*tcoordsName == "Normals")
+    {
+      return false;
+    }
+    attributes.tcoordsName = *tcoordsName;
+  }
+  if (!groupIds(groups, faces, attributes.groupIds))
+  {
+    return false;
+  }
+  materialIds(starts, faces, std::move(libraries), attributes);
+  return attributes.materialIds.empty() || !elements;
+}
 } // namespace
 
-bool slParseOBJ(const char* text, std::size_t size, bool merge, slMeshArrays& mesh, int threads)
+bool slParseOBJ(
+  const char* text, std::size_t size, bool merge, slMeshArrays& mesh, slOBJAttributes& attributes, int threads)
 {
   // A UTF-8 byte order mark (some Windows editors write one) is not part of
   // the first line's keyword.
@@ -427,6 +635,11 @@ bool slParseOBJ(const char* text, std::size_t size, bool merge, slMeshArrays& me
     lineTexture = std::max(lineTexture, c.lineTexture);
   }
   const bool hasT = (given & VT) != 0, hasN = (given & VN) != 0;
+  attributes = slOBJAttributes();
+  if (!attributesOf(chunks, hasT, attributes))
+  {
+    return false;
+  }
   // t and n are kept per corner only if some corner names another index,
   // or some faces have no vt (t then tells the corners with one from them).
   const bool sameIndex = std::all_of(chunks.begin(), chunks.end(), [](const Chunk& c) { return c.sameIndex; }) &&
