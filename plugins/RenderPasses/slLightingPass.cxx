@@ -11,6 +11,7 @@
 #include "shadelab/Scene.h"
 
 #include <vtkActor.h>
+#include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkLight.h>
 #include <vtkLightCollection.h>
@@ -25,6 +26,7 @@
 #include <vtkProperty.h>
 #include <vtkRenderState.h>
 #include <vtkRenderStepsPass.h>
+#include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkShader.h>
 #include <vtkShaderProgram.h>
@@ -162,6 +164,22 @@ bool drawsScalarColours(const std::string& fragmentShader)
     contains(fragmentShader, "textureC");
 }
 
+/// Whether VTK's fragment shader @p fragmentShader samples the actor's
+/// texture (vtkActor::SetTexture) at the mesh's texture coordinates.
+bool hasActorTexture(const std::string& fragmentShader)
+{
+  return contains(fragmentShader, "actortexture") && contains(fragmentShader, "tcoordVCVSOutput");
+}
+
+/// Whether @p prop's texture colours only faces seen from the front
+/// (vtkProperty::ShowTexturesOnBackfaceOff()). A change to it modifies the
+/// property, which rebuilds the actor's shaders, so it can be compiled in.
+bool textureFrontOnly(vtkProp* prop)
+{
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  return actor && !actor->GetProperty()->GetShowTexturesOnBackface();
+}
+
 /// What the pass needs to know of a built shader program, read from its
 /// fragment shader's source once (the source is fixed once compiled, and
 /// copying it for every actor of every frame would cost in scenes of many
@@ -173,12 +191,13 @@ struct ProgramFacts
 };
 
 /// Values the pass keeps per object it does not own (mappers, shader
-/// programs), by address. An entry holds a weak pointer to its object: once
-/// the object is freed, the entry is not found, even by a new object at the
-/// same address. Entries of freed objects are dropped when an insertion
-/// finds the map past twice its size after the last sweep: a long-running
-/// program that makes and frees many actors keeps it within about twice the
-/// number of live objects, at an amortised constant cost per insertion.
+/// programs, properties, renderers), by address. An entry holds a weak
+/// pointer to its object: once the object is freed, the entry is not found,
+/// even by a new object at the same address. Entries of freed objects are
+/// dropped when an insertion finds the map past twice its size after the
+/// last sweep: a long-running program that makes and frees many actors
+/// keeps it within about twice the number of live objects, at an amortised
+/// constant cost per insertion.
 template <typename Object, typename Value>
 class WeakKeyedMap
 {
@@ -207,11 +226,107 @@ public:
     return entry.second;
   }
 
+  /// Calls @p f(object, value) for every entry whose object is alive.
+  template <typename Function>
+  void ForEachLive(Function f) const
+  {
+    for (const auto& entry : this->Entries)
+    {
+      if (Object* object = entry.second.first.GetPointer())
+      {
+        f(object, entry.second.second);
+      }
+    }
+  }
+
+  void Clear()
+  {
+    this->Entries.clear();
+    this->SizeAfterSweep = 0;
+  }
+
   size_t Size() const { return this->Entries.size(); }
 
 private:
   std::map<Object*, std::pair<vtkWeakPointer<Object>, Value>> Entries;
   size_t SizeAfterSweep = 0;
+};
+
+/// A property's interpolation as the pass found it (the user's) and as the
+/// pass set it (MatchInterpolation), to give the user's back.
+struct InterpolationChange
+{
+  int found = VTK_PHONG;
+  int set = VTK_PHONG;
+};
+
+/// The interpolation a property of interpolation @p given needs for the
+/// pass's @p frequency: VTK's mapper supplies face normals under flat
+/// interpolation and interpolated point normals under any other, so flat
+/// for FLAT, and for GOURAUD and PHONG the user's own unless it is flat
+/// (then Phong).
+int interpolationFor(int frequency, int given)
+{
+  if (frequency == slLightingPass::FLAT)
+  {
+    return VTK_FLAT;
+  }
+  return given == VTK_FLAT ? VTK_PHONG : given;
+}
+
+/// The properties whose interpolation the pass changed.
+using InterpolationChanges = WeakKeyedMap<vtkProperty, InterpolationChange>;
+
+/// Gives each property of @p changes still alive the interpolation the pass
+/// found, where it still has the one the pass set: a value the user gave
+/// since stays.
+void restoreInterpolations(const InterpolationChanges& changes)
+{
+  changes.ForEachLive([](vtkProperty* property, const InterpolationChange& change) {
+    if (property->GetInterpolation() == change.set)
+    {
+      property->SetInterpolation(change.found);
+    }
+  });
+}
+
+/// restoreInterpolations(@p changes) once @p window has drawn its frame.
+/// During a frame a mapper stamps its shaders after it has read the
+/// property: a change made then (by a pass freed in a mapper, which holds
+/// the last passes it drew with until it draws again) would never rebuild
+/// them, and the picture would keep the old interpolation.
+void restoreAfterFrame(vtkRenderWindow* window, InterpolationChanges changes)
+{
+  struct Pending
+  {
+    InterpolationChanges changes;
+    vtkCommand* command;
+  };
+  vtkNew<vtkCallbackCommand> command;
+  command->SetClientData(new Pending{ std::move(changes), command.GetPointer() });
+  command->SetClientDataDeleteCallback([](void* pending) { delete static_cast<Pending*>(pending); });
+  command->SetCallback([](vtkObject* caller, unsigned long, void* data, void*) {
+    auto* pending = static_cast<Pending*>(data);
+    restoreInterpolations(pending->changes);
+    caller->RemoveObserver(pending->command); // VTK keeps the command alive until it returns
+  });
+  window->AddObserver(vtkCommand::EndEvent, command);
+}
+
+/// A renderer the pass has drawn, watched for a change of its pass.
+struct DrawnRenderer
+{
+  /// The renderer's pass when the pass last drew it (the pass itself, or a
+  /// pass around it), by address: only a change of it counts.
+  const vtkRenderPass* top = nullptr;
+  unsigned long observer = 0; ///< the tag of the pass's ModifiedEvent observer
+  bool givenBack = false;     ///< the interpolations were given back on a change of its pass
+  /// Whether a change of the renderer's pass is taken for the pass's
+  /// removal. Off once the pass draws the renderer again, after one, under
+  /// another pass: a program that changes the passes around this one every
+  /// frame must not have the interpolations given back and set again (and
+  /// VTK's shaders rebuilt) every frame.
+  bool changeRemoves = true;
 };
 } // namespace
 
@@ -231,6 +346,11 @@ struct slLightingPass::Internals
   WeakKeyedMap<vtkMapper, bool> TangentMappers;
   // What each shader program the pass sets is (ProgramFacts).
   WeakKeyedMap<vtkShaderProgram, ProgramFacts> Programs;
+  // The properties whose interpolation the pass changed, with the user's
+  // (weak: the pass keeps no property alive).
+  InterpolationChanges Interpolations;
+  // The renderers the pass has drawn (WatchRenderer).
+  WeakKeyedMap<vtkRenderer, DrawnRenderer> Renderers;
 
   const ProgramFacts& FactsOf(vtkShaderProgram* program)
   {
@@ -280,7 +400,26 @@ slLightingPass::slLightingPass()
   this->ShaderStageTime.Modified();
 }
 
-slLightingPass::~slLightingPass() = default;
+slLightingPass::~slLightingPass()
+{
+  // VTK's mappers hold the passes they last drew with until they draw again,
+  // so the pass is often freed in the middle of a frame, inside a mapper:
+  // the interpolations are then given back once the frame is drawn.
+  vtkRenderWindow* drawing = nullptr;
+  this->Internal->Renderers.ForEachLive([&drawing](vtkRenderer* renderer, const DrawnRenderer& drawn) {
+    renderer->RemoveObserver(drawn.observer);
+    vtkRenderWindow* window = renderer->GetRenderWindow();
+    drawing = window && window->CheckInRenderStatus() ? window : drawing;
+  });
+  if (drawing)
+  {
+    restoreAfterFrame(drawing, std::move(this->Internal->Interpolations));
+  }
+  else
+  {
+    this->RestoreInterpolations();
+  }
+}
 
 int slLightingPass::GetMaximumNumberOfLights()
 {
@@ -728,7 +867,9 @@ void slLightingPass::MapTangents(const vtkRenderState* s)
 void slLightingPass::MatchInterpolation(const vtkRenderState* s)
 {
   // VTK's mapper supplies per-face normals under flat interpolation and
-  // interpolated point normals otherwise: make it supply what we need.
+  // interpolated point normals otherwise: make it supply what we need
+  // (interpolationFor), and remember the user's value to give it back.
+  InterpolationChanges& changes = this->Internal->Interpolations;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
     vtkActor* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
@@ -737,16 +878,68 @@ void slLightingPass::MatchInterpolation(const vtkRenderState* s)
       continue; // drawn by VTK as without the pass, in its own interpolation
     }
     vtkProperty* property = actor->GetProperty();
-    const bool flat = property->GetInterpolation() == VTK_FLAT;
-    if (this->Frequency == FLAT && !flat)
+    const int current = property->GetInterpolation();
+    const InterpolationChange* change = changes.Find(property);
+    // A value other than the one the pass set is the user's, and the one
+    // to give back from now on.
+    const bool userChanged = change && change->set != current;
+    const int given = change && !userChanged ? change->found : current;
+    const int wanted = interpolationFor(this->Frequency, given);
+    // Only on a change: a property's modification time rebuilds the
+    // actor's shaders, so the pass never sets it frame after frame.
+    if (wanted != current || userChanged)
     {
-      property->SetInterpolationToFlat();
-    }
-    else if (this->Frequency != FLAT && flat)
-    {
-      property->SetInterpolationToPhong();
+      property->SetInterpolation(wanted);
+      changes.Insert(property, { given, wanted });
     }
   }
+}
+
+void slLightingPass::RestoreInterpolations()
+{
+  restoreInterpolations(this->Internal->Interpolations);
+  this->Internal->Interpolations.Clear();
+}
+
+void slLightingPass::WatchRenderer(vtkRenderer* renderer)
+{
+  WeakKeyedMap<vtkRenderer, DrawnRenderer>& renderers = this->Internal->Renderers;
+  const DrawnRenderer* known = renderers.Find(renderer);
+  if (known && known->top == renderer->GetPass() && !known->givenBack)
+  {
+    return; // every frame but the first in a renderer
+  }
+  DrawnRenderer drawn = known ? *known : DrawnRenderer();
+  if (!known)
+  {
+    // vtkRenderer::SetPass() tells no pass, but modifies the renderer.
+    drawn.observer = renderer->AddObserver(vtkCommand::ModifiedEvent, this, &slLightingPass::RendererModified);
+  }
+  // Drawn again after a change of the renderer's pass gave the
+  // interpolations back: under the pass it had before, the pass was taken
+  // out and put back; under another, that change was one around the pass,
+  // not its removal, and such changes are not taken for one again.
+  drawn.changeRemoves = drawn.changeRemoves && (!drawn.givenBack || renderer->GetPass() == drawn.top);
+  drawn.givenBack = false;
+  drawn.top = renderer->GetPass();
+  renderers.Insert(renderer, drawn);
+}
+
+void slLightingPass::RendererModified(vtkObject* caller, unsigned long, void*)
+{
+  auto* renderer = static_cast<vtkRenderer*>(caller);
+  const DrawnRenderer* drawn = this->Internal->Renderers.Find(renderer);
+  if (!drawn || drawn->givenBack || !drawn->changeRemoves || renderer->GetPass() == drawn->top)
+  {
+    return; // modified for anything but a new pass
+  }
+  // The renderer's pass changed (vtkRenderer::SetPass): the pass is no
+  // longer drawn there, alone or inside the old one. Given back now, before
+  // VTK draws a frame without the pass.
+  DrawnRenderer givenBack = *drawn;
+  givenBack.givenBack = true;
+  this->Internal->Renderers.Insert(renderer, givenBack);
+  this->RestoreInterpolations();
 }
 
 void slLightingPass::Render(const vtkRenderState* s)
@@ -779,6 +972,7 @@ void slLightingPass::Render(const vtkRenderState* s)
     renderer->CreateLight();
   }
   this->PrepareLights(renderer);
+  this->WatchRenderer(renderer);
   this->MatchInterpolation(s);
   this->MapTangents(s);
 
@@ -807,6 +1001,11 @@ void slLightingPass::Render(const vtkRenderState* s)
 
 void slLightingPass::ReleaseGraphicsResources(vtkWindow* window)
 {
+  // VTK calls this when the renderer leaves its window (RemoveRenderer,
+  // SetRenderWindow) and when the window is finalised, not while frames are
+  // drawn: the actors' shaders go with the resources, and a next frame
+  // through the pass sets the interpolation again before anything is drawn.
+  this->RestoreInterpolations();
   if (this->DelegatePass)
   {
     this->DelegatePass->ReleaseGraphicsResources(window);
@@ -857,9 +1056,7 @@ bool slLightingPass::PostReplaceShaderValues(std::string& vertexShader, std::str
       }
     }
     vtkShaderProgram::Substitute(fragmentShader, kLightTag,
-      shaders::unlitFragmentImplementation(
-        contains(fragmentShader, "actortexture") && contains(fragmentShader, "tcoordVCVSOutput")),
-      false);
+      shaders::unlitFragmentImplementation(hasActorTexture(fragmentShader), textureFrontOnly(prop)), false);
     return true;
   }
 
@@ -903,7 +1100,8 @@ bool slLightingPass::PostReplaceShaderValues(std::string& vertexShader, std::str
   {
     variant.brdf.clear();
   }
-  inputs.texture = contains(fragmentShader, "actortexture") && contains(fragmentShader, "tcoordVCVSOutput");
+  inputs.texture = hasActorTexture(fragmentShader);
+  variant.textureFrontOnly = inputs.texture && textureFrontOnly(prop);
   inputs.mapperFaceNormal = !vertexNormals && contains(fragmentShader, "normalVCVSOutput");
   // VTK maps normals itself only for 3-component tangents; 4-component
   // (MikkTSpace) ones reach the shader as slTangentMC, mapped in Render().
@@ -1077,4 +1275,6 @@ void slLightingPass::PrintSelf(ostream& os, vtkIndent indent)
   // of freed ones are dropped as the records grow).
   os << indent << "TrackedMappers: " << this->Internal->TangentMappers.Size() << "\n";
   os << indent << "TrackedShaderPrograms: " << this->Internal->Programs.Size() << "\n";
+  os << indent << "TrackedProperties: " << this->Internal->Interpolations.Size() << "\n";
+  os << indent << "TrackedRenderers: " << this->Internal->Renderers.Size() << "\n";
 }

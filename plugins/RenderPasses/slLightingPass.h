@@ -80,11 +80,24 @@
  * one light switched on; with a scene and no such vtkLight the pass adds a
  * zero-intensity headlight for the frame. To give the mapper what each
  * frequency needs, the pass sets the interpolation of each actor it lights
- * to flat for Flat and away from flat for Gouraud and Phong (and leaves it
- * so). Gouraud and Phong need point normals (a mesh without is shaded flat,
- * with a warning). Only the actor's own texture (vtkActor::SetTexture) is
- * used as base colour. Not lit by the pass, and drawn as VTK draws them:
- * translucent actors (VTK's lighting), actors whose property has lighting
+ * to flat for Flat and, for Gouraud and Phong, to the one it found or Phong
+ * where that is flat, before each frame and only where it differs (a
+ * change rebuilds the actor's shaders). It gives the value it found back
+ * to each property still alive that still has the value the pass set (a
+ * value the user gave since stays): when the pass of a renderer it drew
+ * changes (vtkRenderer::SetPass, seen through the renderer's
+ * ModifiedEvent), in ReleaseGraphicsResources() (VTK calls that when the
+ * renderer leaves its window and when the window is finalised) and when
+ * the pass is freed (VTK's mappers hold it until they draw again: if that
+ * is in a frame, once the frame is drawn). A renderer whose pass changes
+ * between passes around this one, the pass drawn again under another,
+ * has it given back on the first change only. Gouraud and Phong need point
+ * normals (a mesh without is shaded flat, with a warning). Only the actor's
+ * own texture (vtkActor::SetTexture) is used as base colour; as in VTK, it
+ * colours faces seen from behind only while the property's
+ * ShowTexturesOnBackface is on (the default; off gets a shader variant with
+ * the side test, only for such actors). Not lit by the pass, and drawn as
+ * VTK draws them: translucent actors (VTK's lighting), actors whose property has lighting
  * off, lines and points that VTK leaves unlit (without point normals, or
  * with flat interpolation: ambient + diffuse colour), volumes and other
  * non-polydata props. Not supported: shadows (vtkShadowMapPass as the
@@ -293,6 +306,7 @@ public:
   int GetNumberOfLightsUsed() const;
 
   void Render(const vtkRenderState* s) override;
+  /// Also gives the actors their interpolation back (see the caveat above).
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
   bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
@@ -313,6 +327,13 @@ private:
 
   void PrepareLights(vtkRenderer* renderer);
   void MatchInterpolation(const vtkRenderState* s);
+  /// Gives each property MatchInterpolation() changed its user's
+  /// interpolation back, where it still has the pass's.
+  void RestoreInterpolations();
+  /// Watches @p renderer, drawn through the pass, for a change of its pass
+  /// (RendererModified() then gives the interpolations back).
+  void WatchRenderer(vtkRenderer* renderer);
+  void RendererModified(vtkObject* renderer, unsigned long event, void* data);
   void MapTangents(const vtkRenderState* s);
   bool SetBrdfValues(const std::vector<std::string>& assignments);
   void SetBrdfFromScene();

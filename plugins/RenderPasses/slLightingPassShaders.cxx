@@ -33,6 +33,17 @@ std::string sideMaterial(const Variant& variant)
   return variant.backface ? "(gl_FrontFacing == false ? slMatBack : slMat)" : "slMat";
 }
 
+/// The GLSL line that runs @p statement (which multiplies the actor's
+/// texture in) on every face, or only on faces seen from the front for
+/// @p frontOnly (Variant::textureFrontOnly). VTK 9.1 tests
+/// "gl_FrontFacing == true || showTexturesOnBackface" in every textured
+/// shader; here the test is in only the shaders of actors that need it.
+std::string textureLine(const std::string& indent, const std::string& statement, bool frontOnly)
+{
+  return indent + (frontOnly ? "if (gl_FrontFacing == true) { " + statement + " } // ShowTexturesOnBackfaceOff"
+                             : statement) + "\n";
+}
+
 /// GLSL of one light shaded with a .brdf file's BRDF.
 std::string brdfFunctions()
 {
@@ -287,12 +298,14 @@ std::string fragmentDeclarations(const Variant& variant, const FragmentInputs& i
   return out;
 }
 
-std::string unlitFragmentImplementation(bool texture)
+std::string unlitFragmentImplementation(bool texture, bool textureFrontOnly)
 {
   // VTK's own unlit colour (vtkOpenGLPolyDataMapper, no light complexity),
   // then the actor's texture, which VTK multiplies into the whole colour.
   return std::string("  gl_FragData[0] = vec4(ambientColor + diffuseColor, opacity);\n") +
-    (texture ? "  gl_FragData[0] = gl_FragData[0] * texture(actortexture, tcoordVCVSOutput);\n" : "");
+    (texture ? textureLine("  ", "gl_FragData[0] = gl_FragData[0] * texture(actortexture, tcoordVCVSOutput);",
+                 textureFrontOnly)
+             : "");
 }
 
 std::string fragmentImplementation(const Variant& variant, const FragmentInputs& inputs)
@@ -311,7 +324,8 @@ std::string fragmentImplementation(const Variant& variant, const FragmentInputs&
   }
   if (inputs.texture)
   {
-    out += "    slBase = slBase * texture(actortexture, tcoordVCVSOutput).rgb;\n";
+    out += textureLine(
+      "    ", "slBase = slBase * texture(actortexture, tcoordVCVSOutput).rgb;", variant.textureFrontOnly);
   }
   out += "    slTerms slT;\n    float slCos;\n";
   switch (variant.frequency)

@@ -43,6 +43,11 @@ struct Variant
   /// k_s, and each side's multiply the sums. Without one, nothing of this
   /// is in the shaders.
   bool backface = false;
+  /// The actor's texture colours only faces seen from the front, as VTK
+  /// draws a property with ShowTexturesOnBackfaceOff(). Only such actors
+  /// get the side test (compiled in, where VTK tests a uniform); the
+  /// others' shaders carry none of it.
+  bool textureFrontOnly = false;
 };
 
 /// Whether @p fragmentShader (of a built program) is a Variant::backface
@@ -103,8 +108,9 @@ std::string fragmentImplementation(const Variant& variant, const FragmentInputs&
 /// The code that writes gl_FragData[0] where VTK does not light the
 /// primitive (lines and points without point normals, or with flat
 /// interpolation): VTK's unlit ambient + diffuse colour, times the actor's
-/// texture when @p texture.
-std::string unlitFragmentImplementation(bool texture);
+/// texture when @p texture (on faces seen from the front only, for
+/// @p textureFrontOnly: Variant::textureFrontOnly).
+std::string unlitFragmentImplementation(bool texture, bool textureFrontOnly);
 
 } // namespace slLightingPassShaders
 

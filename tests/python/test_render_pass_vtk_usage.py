@@ -6,10 +6,12 @@ import re
 import unittest
 
 import shadelab
-from vtkmodules.vtkCommonCore import vtkFloatArray, vtkLookupTable, vtkUnsignedCharArray
-from vtkmodules.vtkFiltersSources import vtkLineSource, vtkPlaneSource
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkLight, vtkPolyDataMapper, vtkProperty, vtkRenderer,
-                                         vtkRenderWindow, vtkWindowToImageFilter)
+from vtkmodules.vtkCommonCore import VTK_UNSIGNED_CHAR, vtkFloatArray, vtkLookupTable, vtkUnsignedCharArray
+from vtkmodules.vtkCommonDataModel import vtkImageData
+from vtkmodules.vtkFiltersSources import vtkLineSource, vtkPlaneSource, vtkSphereSource
+from vtkmodules.vtkRenderingCore import (VTK_FLAT, VTK_GOURAUD, VTK_PHONG, vtkActor, vtkLight, vtkPolyDataMapper,
+                                         vtkProperty, vtkRenderer, vtkRenderWindow, vtkTexture,
+                                         vtkWindowToImageFilter)
 from vtkmodules.vtkRenderingOpenGL2 import (vtkCameraPass, vtkLightsPass, vtkOpaquePass, vtkRenderPassCollection,
                                             vtkRenderStepsPass, vtkSequencePass, vtkShadowMapPass)
 import vtkmodules.vtkInteractionStyle  # noqa: F401
@@ -20,14 +22,24 @@ KD = 0.8
 INTENSITY = 0.5
 
 
+def grab(window):
+    grabber = vtkWindowToImageFilter()
+    grabber.SetInput(window)
+    grabber.ReadFrontBufferOff()
+    grabber.Update()
+    return grabber.GetOutput()
+
+
 def pixel(window, x=SIZE // 2, y=SIZE // 2):
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    image = grab.GetOutput()
+    image = grab(window)
     width = image.GetDimensions()[0]
     return image.GetPointData().GetScalars().GetTuple3(y * width + x)
+
+
+def picture(window):
+    """Every pixel of the window, as bytes (to compare two pictures exactly).
+    Like pixel(), it draws the window once more to read it."""
+    return bytes(memoryview(grab(window).GetPointData().GetScalars()))
 
 
 def quad_actor():
@@ -84,15 +96,30 @@ class Stage:
         return pixel(self.window)
 
 
-def camera_pass_of(*steps):
-    """VTK's documented chain: a vtkCameraPass around a vtkSequencePass of @p steps."""
+def sequence_of(*steps):
     passes = vtkRenderPassCollection()
     for step in steps:
         passes.AddItem(step)
     sequence = vtkSequencePass()
     sequence.SetPasses(passes)
+    return sequence
+
+
+def flat_sphere_pictures():
+    """VTK's own pictures of sphere_actor() in a Stage: smooth (Phong
+    interpolation) and with facets (flat), which differ."""
+    stage = Stage(sphere_actor())
+    stage.window.Render()
+    smooth = picture(stage.window)
+    stage.renderer.GetActors().GetLastActor().GetProperty().SetInterpolationToFlat()
+    stage.window.Render()
+    return smooth, picture(stage.window)
+
+
+def camera_pass_of(*steps):
+    """VTK's documented chain: a vtkCameraPass around a vtkSequencePass of @p steps."""
     camera_pass = vtkCameraPass()
-    camera_pass.SetDelegatePass(sequence)
+    camera_pass.SetDelegatePass(sequence_of(*steps))
     return camera_pass
 
 
@@ -153,8 +180,49 @@ def look_at_side(stage, back):
     stage.renderer.ResetCameraClippingRange()
 
 
+# The actor's texture: one colour unlike the quad's, so that where it is
+# shown the pixel is the quad's colour times it.
+TEXTURE_RGB = (64, 255, 128)
+TEXTURED_COLOUR = tuple(c * t / 255.0 for c, t in zip(COLOUR, TEXTURE_RGB))
+
+
+def with_texture(actor):
+    """@p actor with a texture of TEXTURE_RGB (vtkPlaneSource gives texture coordinates)."""
+    image = vtkImageData()
+    image.SetDimensions(2, 2, 1)
+    image.AllocateScalars(VTK_UNSIGNED_CHAR, 3)
+    texels = image.GetPointData().GetScalars()
+    for i in range(texels.GetNumberOfTuples()):
+        texels.SetTuple3(i, *TEXTURE_RGB)
+    texture = vtkTexture()
+    texture.SetInputData(image)
+    actor.SetTexture(texture)
+    return actor
+
+
+def texture_line_of(window):
+    """The line of the last shader program drawn in @p window (the one
+    actor's) that samples the actor's texture."""
+    program = window.GetShaderCache().GetLastShaderBound()
+    source = program.GetFragmentShader().GetSource()
+    return next(line for line in source.splitlines() if "texture(actortexture" in line)
+
+
+def sphere_actor():
+    """A coarse sphere with point normals in quad_actor's material: VTK draws
+    it with facets under flat interpolation and smooth otherwise."""
+    sphere = vtkSphereSource()
+    sphere.SetRadius(1.0)
+    sphere.SetThetaResolution(8)
+    sphere.SetPhiResolution(6)
+    sphere.Update()
+    actor = quad_actor()
+    actor.GetMapper().SetInputData(sphere.GetOutput())
+    return actor
+
+
 def tracked(lighting, what):
-    """The count PrintSelf reports as `what` (TrackedMappers, TrackedShaderPrograms)."""
+    """The count PrintSelf reports as `what` (TrackedMappers, TrackedShaderPrograms, ...)."""
     return int(re.search(what + r": (\d+)", str(lighting)).group(1))
 
 
@@ -388,11 +456,12 @@ class VTKUsageTest(unittest.TestCase):
         self.assertPixel(pixel(stage.window), expected((0.0, 1.0, 1.0), 0.5 * INTENSITY * math.cos(TILT)))
 
     def test_records_of_freed_mappers_and_programs_are_dropped(self):
-        # The pass keeps a record per mapper with 4-component tangents and
-        # per shader program it sets. Making and freeing many of them (new
-        # actors in new windows, each window with its own shader programs)
-        # must not grow these records without bound: they stay within about
-        # twice the live ones (here 2 mappers and 1 program at a time).
+        # The pass keeps a record per mapper with 4-component tangents, per
+        # shader program it sets and per renderer it draws. Making and
+        # freeing many of them (new actors in new windows, each window with
+        # its own shader programs) must not grow these records without
+        # bound: they stay within about twice the live ones (here 2 mappers,
+        # 1 program and 1 renderer at a time).
         lighting = lighting_pass()
         for _ in range(30):
             actors = [quad_actor() for _ in range(2)]
@@ -412,6 +481,194 @@ class VTKUsageTest(unittest.TestCase):
             del stage, actors
         self.assertLessEqual(tracked(lighting, "TrackedMappers"), 2 * 2 + 1)
         self.assertLessEqual(tracked(lighting, "TrackedShaderPrograms"), 2 * 1 + 1)
+        self.assertLessEqual(tracked(lighting, "TrackedRenderers"), 2 * 1 + 1)
+
+    def test_show_textures_on_backface_off_leaves_faces_seen_from_behind_untextured_as_in_vtk(self):
+        # VTK 9.1 multiplies the actor's texture into faces seen from behind
+        # only while the property's ShowTexturesOnBackface is on (the
+        # default); faces seen from the front always show it. The quad lit
+        # TILT off the normal of the side in view: k_d C N.L I, times the
+        # texture where it is shown.
+        actor = with_texture(quad_actor())
+        stage = Stage(actor)
+        lit = KD * INTENSITY * math.cos(TILT)
+        for shown in (True, False):
+            actor.GetProperty().SetShowTexturesOnBackface(shown)
+            for back in (True, False):
+                wanted = expected(TEXTURED_COLOUR if shown or not back else COLOUR, lit)
+                look_at_side(stage, back)
+                with self.subTest(shown=shown, back=back, drawn_by="vtk"):
+                    self.assertPixel(stage.render(False), wanted)
+                for frequency in ("flat", "gouraud", "phong"):
+                    with self.subTest(shown=shown, back=back, frequency=frequency):
+                        lighting = lighting_pass()
+                        lighting.SetFrequencyName(frequency)
+                        stage.renderer.SetPass(lighting)
+                        stage.window.Render()
+                        self.assertPixel(pixel(stage.window), wanted)
+                        # Only a property with the flag off gets the side
+                        # test in its shader; the default costs nothing.
+                        texture_line = texture_line_of(stage.window)
+                        self.assertEqual("gl_FrontFacing" in texture_line, not shown, texture_line)
+
+    def test_show_textures_on_backface_off_in_vtks_unlit_colour(self):
+        # No light and none made automatically: VTK draws the ambient +
+        # diffuse colour unlit, times the texture where it is shown.
+        actor = with_texture(quad_actor())
+        stage = Stage(actor)
+        stage.light.SwitchOff()
+        stage.renderer.AutomaticLightCreationOff()
+        look_at_side(stage, back=True)
+        for shown in (True, False):
+            with self.subTest(shown=shown):
+                actor.GetProperty().SetShowTexturesOnBackface(shown)
+                wanted = expected(TEXTURED_COLOUR if shown else COLOUR, KD)
+                self.assertPixel(stage.render(False), wanted)
+                self.assertPixel(stage.render(True), wanted)
+
+    def test_the_interpolation_is_given_back_when_the_pass_is_taken_out(self):
+        # The pass sets a flat property to Phong to light it at Phong
+        # frequency; taking the pass out of the renderer gives flat back at
+        # once, and VTK's next frame is the one it draws without ever a pass.
+        smooth, facets = flat_sphere_pictures()
+        self.assertNotEqual(smooth, facets)  # the checks below can tell them apart
+        actor = sphere_actor()
+        actor.GetProperty().SetInterpolationToFlat()
+        stage = Stage(actor)
+        lighting = lighting_pass()  # Phong frequency
+        stage.renderer.SetPass(lighting)
+        stage.window.Render()
+        self.assertEqual(actor.GetProperty().GetInterpolation(), VTK_PHONG)  # while the pass lights it
+        for _ in range(2):  # and again after the pass is put back
+            stage.renderer.SetPass(None)
+            self.assertEqual(actor.GetProperty().GetInterpolation(), VTK_FLAT)
+            stage.window.Render()
+            self.assertEqual(picture(stage.window), facets)
+            stage.renderer.SetPass(lighting)
+            stage.window.Render()
+            self.assertEqual(actor.GetProperty().GetInterpolation(), VTK_PHONG)
+        stage.renderer.SetPass(None)
+        del lighting  # freed in the next frame (VTK's mapper holds it until then)
+        stage.window.Render()
+        self.assertEqual(actor.GetProperty().GetInterpolation(), VTK_FLAT)
+        self.assertEqual(picture(stage.window), facets)
+
+    def test_the_interpolation_is_given_back_when_a_pass_taken_out_of_a_pass_around_it_is_freed(self):
+        # Out of a pass around it that stays the renderer's, nothing tells
+        # the pass; VTK's mapper holds it until it draws without it, and
+        # frees it in that frame. Given back once that frame is drawn, the
+        # next one is VTK's own (given back in the middle of the frame, VTK
+        # would keep the mapper's shaders of the old interpolation, frame
+        # after frame).
+        _, facets = flat_sphere_pictures()
+        actor = sphere_actor()
+        actor.GetProperty().SetInterpolationToFlat()
+        stage = Stage(actor)
+        lighting = lighting_pass()
+        around = sequence_of(lighting)
+        stage.renderer.SetPass(around)
+        stage.window.Render()
+        around.GetPasses().RemoveAllItems()
+        around.GetPasses().AddItem(vtkRenderStepsPass())
+        del lighting
+        self.assertEqual(actor.GetProperty().GetInterpolation(), VTK_PHONG)  # still held by VTK's mapper
+        stage.window.Render()
+        self.assertEqual(actor.GetProperty().GetInterpolation(), VTK_FLAT)
+        for _ in range(2):
+            stage.window.Render()
+            self.assertEqual(picture(stage.window), facets)
+
+    def test_passes_changed_around_the_pass_every_frame_rebuild_no_shaders(self):
+        # A renderer whose pass changes every frame between two around the
+        # lighting pass: the first change is taken for the pass's removal
+        # (interpolation given back, set again in the next frame), the
+        # others are not, so VTK's shaders are not rebuilt frame after frame.
+        actor = sphere_actor()
+        actor.GetProperty().SetInterpolationToFlat()
+        stage = Stage(actor)
+        lighting = lighting_pass()
+        arounds = (sequence_of(lighting), sequence_of(lighting))
+        for frame in range(8):
+            stage.renderer.SetPass(arounds[frame % 2])
+            stage.window.Render()
+            self.assertEqual(actor.GetProperty().GetInterpolation(), VTK_PHONG)
+            if frame == 2:
+                builds = lighting.GetNumberOfShaderBuilds()
+                changed = actor.GetProperty().GetMTime()
+        self.assertEqual(lighting.GetNumberOfShaderBuilds(), builds)
+        self.assertEqual(actor.GetProperty().GetMTime(), changed)
+
+    def test_an_interpolation_the_user_changed_is_kept(self):
+        # A value the user gives after the pass set its own is the user's:
+        # the pass leaves it when it goes, whether a frame was drawn since
+        # or not.
+        for render_after_change in (False, True):
+            with self.subTest(render_after_change=render_after_change):
+                actor = quad_actor()
+                actor.GetProperty().SetInterpolationToFlat()
+                stage = Stage(actor)
+                lighting = lighting_pass()
+                stage.renderer.SetPass(lighting)
+                stage.window.Render()
+                actor.GetProperty().SetInterpolationToGouraud()
+                if render_after_change:
+                    stage.window.Render()
+                    self.assertEqual(actor.GetProperty().GetInterpolation(), VTK_GOURAUD)
+                stage.renderer.SetPass(None)
+                del lighting
+                self.assertEqual(actor.GetProperty().GetInterpolation(), VTK_GOURAUD)
+
+    def test_a_pass_outliving_the_properties_it_changed(self):
+        # The pass keeps no property alive, and deleting it after them is safe.
+        actor = quad_actor()
+        actor.GetProperty().SetInterpolationToFlat()
+        stage = Stage(actor)
+        lighting = lighting_pass()
+        stage.renderer.SetPass(lighting)
+        stage.window.Render()
+        stage.renderer.RemoveActor(actor)
+        stage.window.Render()
+        gone = vtkProperty()
+        actor.SetProperty(gone)  # the changed property's last reference goes
+        del actor, gone
+        stage.renderer.SetPass(None)
+        del lighting
+
+    def test_released_graphics_resources_give_the_interpolation_back_and_the_next_frame_takes_it_again(self):
+        # VTK releases a renderer's graphics resources, its pass's with them,
+        # when its window is finalised (closed, remapped, made full screen)
+        # or the renderer is taken out of the window: the pass gives the
+        # interpolation back then. The next frame sets it again before
+        # anything is drawn: the same picture, and no shader rebuilt and no
+        # property modified in the frames after it.
+        for release in ("renderer", "window finalised", "renderer removed"):
+            with self.subTest(release=release):
+                actor = sphere_actor()
+                actor.GetProperty().SetInterpolationToFlat()
+                stage = Stage(actor)
+                lighting = lighting_pass()
+                stage.renderer.SetPass(lighting)
+                stage.window.Render()
+                before = picture(stage.window)
+                if release == "renderer":
+                    stage.renderer.ReleaseGraphicsResources(stage.window)
+                elif release == "window finalised":
+                    stage.window.Finalize()
+                else:
+                    stage.window.RemoveRenderer(stage.renderer)
+                self.assertEqual(actor.GetProperty().GetInterpolation(), VTK_FLAT)
+                if release == "renderer removed":
+                    stage.window.AddRenderer(stage.renderer)
+                stage.window.Render()
+                self.assertEqual(actor.GetProperty().GetInterpolation(), VTK_PHONG)
+                self.assertEqual(picture(stage.window), before)
+                builds = lighting.GetNumberOfShaderBuilds()
+                changed = actor.GetProperty().GetMTime()
+                for _ in range(3):
+                    stage.window.Render()
+                self.assertEqual(lighting.GetNumberOfShaderBuilds(), builds)
+                self.assertEqual(actor.GetProperty().GetMTime(), changed)
+                self.assertEqual(picture(stage.window), before)
 
     def test_setters_modify_only_on_a_change(self):
         lighting = shadelab.slLightingPass()
