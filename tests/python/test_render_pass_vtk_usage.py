@@ -96,6 +96,18 @@ class Stage:
         return pixel(self.window)
 
 
+def flat_under_pass(actor, top=None):
+    """@p actor with flat interpolation in a Stage of its own, drawn once
+    through a new lighting pass (@p top(lighting), a pass around it, as the
+    renderer's pass when given): (stage, lighting)."""
+    actor.GetProperty().SetInterpolationToFlat()
+    stage = Stage(actor)
+    lighting = lighting_pass()
+    stage.renderer.SetPass(top(lighting) if top else lighting)
+    stage.window.Render()
+    return stage, lighting
+
+
 def sequence_of(*steps):
     passes = vtkRenderPassCollection()
     for step in steps:
@@ -533,11 +545,7 @@ class VTKUsageTest(unittest.TestCase):
         smooth, facets = flat_sphere_pictures()
         self.assertNotEqual(smooth, facets)  # the checks below can tell them apart
         actor = sphere_actor()
-        actor.GetProperty().SetInterpolationToFlat()
-        stage = Stage(actor)
-        lighting = lighting_pass()  # Phong frequency
-        stage.renderer.SetPass(lighting)
-        stage.window.Render()
+        stage, lighting = flat_under_pass(actor)  # Phong frequency
         self.assertEqual(actor.GetProperty().GetInterpolation(), VTK_PHONG)  # while the pass lights it
         for _ in range(2):  # and again after the pass is put back
             stage.renderer.SetPass(None)
@@ -562,12 +570,8 @@ class VTKUsageTest(unittest.TestCase):
         # after frame).
         _, facets = flat_sphere_pictures()
         actor = sphere_actor()
-        actor.GetProperty().SetInterpolationToFlat()
-        stage = Stage(actor)
-        lighting = lighting_pass()
-        around = sequence_of(lighting)
-        stage.renderer.SetPass(around)
-        stage.window.Render()
+        stage, lighting = flat_under_pass(actor, sequence_of)
+        around = stage.renderer.GetPass()
         around.GetPasses().RemoveAllItems()
         around.GetPasses().AddItem(vtkRenderStepsPass())
         del lighting
@@ -605,11 +609,7 @@ class VTKUsageTest(unittest.TestCase):
         for render_after_change in (False, True):
             with self.subTest(render_after_change=render_after_change):
                 actor = quad_actor()
-                actor.GetProperty().SetInterpolationToFlat()
-                stage = Stage(actor)
-                lighting = lighting_pass()
-                stage.renderer.SetPass(lighting)
-                stage.window.Render()
+                stage, lighting = flat_under_pass(actor)
                 actor.GetProperty().SetInterpolationToGouraud()
                 if render_after_change:
                     stage.window.Render()
@@ -621,11 +621,7 @@ class VTKUsageTest(unittest.TestCase):
     def test_a_pass_outliving_the_properties_it_changed(self):
         # The pass keeps no property alive, and deleting it after them is safe.
         actor = quad_actor()
-        actor.GetProperty().SetInterpolationToFlat()
-        stage = Stage(actor)
-        lighting = lighting_pass()
-        stage.renderer.SetPass(lighting)
-        stage.window.Render()
+        stage, lighting = flat_under_pass(actor)
         stage.renderer.RemoveActor(actor)
         stage.window.Render()
         gone = vtkProperty()
@@ -644,11 +640,7 @@ class VTKUsageTest(unittest.TestCase):
         for release in ("renderer", "window finalised", "renderer removed"):
             with self.subTest(release=release):
                 actor = sphere_actor()
-                actor.GetProperty().SetInterpolationToFlat()
-                stage = Stage(actor)
-                lighting = lighting_pass()
-                stage.renderer.SetPass(lighting)
-                stage.window.Render()
+                stage, lighting = flat_under_pass(actor)
                 before = picture(stage.window)
                 if release == "renderer":
                     stage.renderer.ReleaseGraphicsResources(stage.window)
