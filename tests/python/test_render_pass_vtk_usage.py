@@ -96,6 +96,15 @@ class Stage:
         return pixel(self.window)
 
 
+def with_point_colours(actor):
+    """Gives @p actor's mesh the point scalars (0, 200, 100) at every point."""
+    data = actor.GetMapper().GetInput()
+    colours = vtkUnsignedCharArray()
+    colours.SetNumberOfComponents(3)
+    for _ in range(data.GetNumberOfPoints()):
+        colours.InsertNextTuple3(0, 200, 100)
+    data.GetPointData().SetScalars(colours)
+
 def flat_under_pass(actor, top=None):
     """@p actor with flat interpolation in a Stage of its own, drawn once
     through a new lighting pass (@p top(lighting), a pass around it, as the
@@ -276,12 +285,7 @@ class VTKUsageTest(unittest.TestCase):
         # VTK: with scalars shown, the scalar colour takes the place of the
         # property's ambient and diffuse colours (its intensities stay).
         actor = quad_actor()
-        data = actor.GetMapper().GetInput()
-        colours = vtkUnsignedCharArray()
-        colours.SetNumberOfComponents(3)
-        for _ in range(data.GetNumberOfPoints()):
-            colours.InsertNextTuple3(0, 200, 100)
-        data.GetPointData().SetScalars(colours)
+        with_point_colours(actor)
         stage = Stage(actor)
         scalar = (0.0, 200.0 / 255.0, 100.0 / 255.0)
         self.assertPixel(stage.render(True), expected(scalar, KD * INTENSITY))
@@ -431,12 +435,7 @@ class VTKUsageTest(unittest.TestCase):
         # colour the surface: shown scalars colour both sides with the front
         # property's coefficients.
         actor = quad_actor()
-        data = actor.GetMapper().GetInput()
-        colours = vtkUnsignedCharArray()
-        colours.SetNumberOfComponents(3)
-        for _ in range(data.GetNumberOfPoints()):
-            colours.InsertNextTuple3(0, 200, 100)
-        data.GetPointData().SetScalars(colours)
+        with_point_colours(actor)
         actor.SetBackfaceProperty(backface_property())
         stage = Stage(actor)
         look_at_side(stage, back=True)
