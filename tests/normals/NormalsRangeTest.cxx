@@ -19,6 +19,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace
@@ -130,6 +131,64 @@ TEST(NormalsRange, DoubleCubesOfExtremeSizeGetAnalyticNormals)
         {
           EXPECT_NEAR(n[c], (p[c] > 0 ? 1.0 : -1.0) / std::sqrt(3.0), 1e-7) << what << ", point " << i;
         }
+      }
+    }
+  }
+}
+
+TEST(NormalsRange, ClosedSurfacesOfExtremeSizeTurnOutward)
+{
+  // The signed volume's terms grow as the cube of the size: unscaled, they
+  // overflow double beyond about 1e102 (inf - inf in a Newell vector not
+  // along an axis: NaN) and underflow to 0 below about 1e-108. A cube
+  // centred at the origin, turned off the axes and given inward (every face
+  // reversed, consistent), must come out with each corner's normal along
+  // the corner's own diagonal, p / |p|.
+  const std::vector<std::pair<int, double>> cases = { { VTK_DOUBLE, 1e-300 }, { VTK_DOUBLE, 1e-120 },
+    { VTK_DOUBLE, 1e-3 }, { VTK_DOUBLE, 1.0 }, { VTK_DOUBLE, 1e120 }, { VTK_DOUBLE, 1e300 }, { VTK_FLOAT, 1e-30 },
+    { VTK_FLOAT, 1.0 }, { VTK_FLOAT, 1e20 }, { VTK_FLOAT, 1e30 } };
+  for (const auto& c : cases)
+  {
+    const double s = c.second;
+    // Rotation by 0.7 rad about (1, 2, 3) / sqrt(14) (Rodrigues).
+    const double a[3] = { 1 / std::sqrt(14.0), 2 / std::sqrt(14.0), 3 / std::sqrt(14.0) };
+    const double cs = std::cos(0.7), sn = std::sin(0.7);
+    std::vector<normalstest::Vec> pts;
+    for (int i = 0; i < 8; ++i)
+    {
+      const double v[3] = { i & 1 ? 1.0 : -1.0, i & 2 ? 1.0 : -1.0, i & 4 ? 1.0 : -1.0 };
+      const double d = a[0] * v[0] + a[1] * v[1] + a[2] * v[2];
+      const double x[3] = { a[1] * v[2] - a[2] * v[1], a[2] * v[0] - a[0] * v[2], a[0] * v[1] - a[1] * v[0] };
+      normalstest::Vec p;
+      for (int k = 0; k < 3; ++k)
+      {
+        p[k] = s * (v[k] * cs + x[k] * sn + a[k] * d * (1 - cs));
+      }
+      pts.push_back(p);
+    }
+    // cube()'s quads, each reversed.
+    vtkSmartPointer<vtkPolyData> inward = meshOf(pts,
+      { { 1, 3, 2, 0 }, { 6, 7, 5, 4 }, { 4, 5, 1, 0 }, { 3, 7, 6, 2 }, { 5, 7, 3, 1 }, { 2, 6, 4, 0 } }, c.first);
+    vtkNew<slPolyDataNormals> f;
+    f->SetInputData(inward);
+    f->SetSplitting(false);
+    f->ConsistencyOn();
+    f->AutoOrientNormalsOn();
+    f->Update();
+    vtkPolyData* out = f->GetOutput();
+    const std::string what = std::string(c.first == VTK_DOUBLE ? "double" : "float") + " cube of size " +
+      std::to_string(std::log10(s));
+    ASSERT_EQ(out->GetNumberOfPoints(), 8) << what;
+    for (vtkIdType i = 0; i < 8; ++i)
+    {
+      double p[3], n[3];
+      out->GetPoint(i, p);
+      out->GetPointData()->GetNormals()->GetTuple(i, n);
+      ASSERT_TRUE(isUnit(n)) << what << ", point " << i;
+      const double length = std::hypot(p[0], p[1], p[2]);
+      for (int k = 0; k < 3; ++k)
+      {
+        EXPECT_NEAR(n[k], p[k] / length, 1e-5) << what << ", point " << i;
       }
     }
   }

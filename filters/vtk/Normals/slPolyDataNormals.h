@@ -77,10 +77,6 @@
  * @warning Meshes with 2^31 or more polygon corners are refused when
  * Splitting, Consistency, AutoOrientNormals or WeldCoincidentPoints is on.
  * Angles of non-convex polygon corners are taken as the convex angle.
- * AutoOrientNormals sums the signed volume in double: a closed surface
- * around the origin larger than about 1e100 or smaller than about 1e-100
- * may stay inward (the sum overflows or underflows); its normals are
- * still finite.
  *
  * @warning Differences from vtkPolyDataNormals:
  * - With Splitting on, output points are ordered by input point, the copies

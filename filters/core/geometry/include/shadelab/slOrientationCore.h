@@ -25,6 +25,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <deque>
 #include <utility>
 #include <vector>
@@ -142,6 +143,65 @@ bool hasInconsistentEdge(const Polygons<Id>& polys, const VertexCorners<Id>& vc,
   return found;
 }
 
+namespace detail
+{
+/// The signed volume Σ P0 · N / 6 of each of @p pieces pieces (@p piece
+/// gives each polygon's), times a power of two of the piece's own, positive:
+/// only the sign is used. The points of a piece are scaled by 2^-e, e the
+/// exponent of its largest coordinate, and its Newell vectors computed from
+/// them in double: the terms grow as the cube of the size, and unscaled they
+/// overflowed (or underflowed to 0) for surfaces beyond about 10^±100 in
+/// double and, with the Newell vector in float, beyond about 10^19 in float.
+/// Scaling by a power of two changes no digit of a coordinate.
+template <typename T, typename Id>
+std::vector<double> scaledVolumes(
+  const Polygons<Id>& polys, const T* xyz, const std::vector<int32_t>& piece, int32_t pieces)
+{
+  std::vector<double> largest(static_cast<size_t>(pieces), 0.0);
+  for (int64_t f = 0; f < polys.numPolygons; ++f)
+  {
+    double& l = largest[static_cast<size_t>(piece[static_cast<size_t>(f)])];
+    for (int64_t c = polys.begin(f); c < polys.end(f); ++c)
+    {
+      const T* p = xyz + 3 * static_cast<int64_t>(polys.connectivity[c]);
+      l = std::max({ l, std::abs(static_cast<double>(p[0])), std::abs(static_cast<double>(p[1])),
+        std::abs(static_cast<double>(p[2])) });
+    }
+  }
+  std::vector<double> scale(static_cast<size_t>(pieces), 1.0);
+  for (size_t k = 0; k < scale.size(); ++k)
+  {
+    // A largest coordinate below the normal doubles (2^-1022) is scaled by
+    // 2^1000 at most, which 2^1022 would overflow.
+    scale[k] = largest[k] > 0.0 ? std::ldexp(1.0, -std::max(std::ilogb(largest[k]), -1000)) : 1.0;
+  }
+  std::vector<double> volume(static_cast<size_t>(pieces), 0.0);
+  for (int64_t f = 0; f < polys.numPolygons; ++f)
+  {
+    const int64_t n = polys.size(f);
+    if (n < 3)
+    {
+      continue;
+    }
+    const size_t id = static_cast<size_t>(piece[static_cast<size_t>(f)]);
+    const double s = scale[id];
+    const auto scaled = [&](int64_t c) { return glm::dvec3(point(xyz, polys.connectivity[c])) * s; };
+    const int64_t b = polys.begin(f);
+    const glm::dvec3 p0 = scaled(b);
+    glm::dvec3 newell(0.0);
+    glm::dvec3 prev = scaled(b + 1) - p0;
+    for (int64_t i = 2; i < n; ++i)
+    {
+      const glm::dvec3 cur = scaled(b + i) - p0;
+      newell += glm::cross(prev, cur);
+      prev = cur;
+    }
+    volume[id] += glm::dot(p0, newell);
+  }
+  return volume;
+}
+} // namespace detail
+
 /// Reverses polygons so that neighbours agree, and closed pieces face
 /// outward if @p outward. Returns the number of polygons reversed;
 /// @p flippedOut (if given) gets 1 for each. @p vc must describe @p polys.
@@ -202,17 +262,7 @@ int64_t orientPolygons(
   }
   if (outward)
   {
-    std::vector<double> volume(static_cast<size_t>(pieces), 0.0);
-    for (int64_t f = 0; f < polys.numPolygons; ++f)
-    {
-      if (polys.size(f) < 3)
-      {
-        continue;
-      }
-      const glm::dvec3 p0(point(xyz, polys.connectivity[polys.begin(f)]));
-      volume[static_cast<size_t>(piece[static_cast<size_t>(f)])] +=
-        glm::dot(p0, glm::dvec3(newellVector(polys, xyz, f))) / 6.0;
-    }
+    const std::vector<double> volume = detail::scaledVolumes(polys, xyz, piece, pieces);
     for (int64_t f = 0; f < polys.numPolygons; ++f)
     {
       const size_t id = static_cast<size_t>(piece[static_cast<size_t>(f)]);
