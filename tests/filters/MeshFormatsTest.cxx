@@ -28,11 +28,15 @@
 #include <vtkPolyDataWriter.h>
 #include <vtkSphereSource.h>
 #include <vtkStringArray.h>
+#include <vtkUnsignedCharArray.h>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -295,8 +299,63 @@ const std::map<std::string, std::string>& objFiles()
     { "mixed", "# mixed\nmtllib x.mtl\no thing\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\n"
                "vt 1 1\nvt 0 1\nvn 0 0 1\nvn 0 0 1\nvn 0 0 1\nvn 0 0 1\ng top\nusemtl paint\ns 1\n"
                "f 1/1/1 2/2/2 3/3/3\ng side\nf 1/1 3/3 4/4\nf 1 2 4\no other\ng\nusemtl paint\nf 2//2 3//3 4//4\n" },
+    // Texture coordinates under several material names: vtkOBJReader's
+    // array per name, in its hash table's order, holding the vt of the
+    // faces of that material and (-1, -1) elsewhere; the faces before the
+    // first "usemtl" line count as the last one's.
+    { "materials with vt", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl a\nf 1/1 2/2 3/3\n"
+                           "usemtl b\nf 1/1 3/3 2/2\n" },
+    { "materials with vt, of the v list", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nvt 0 0\nvt 1 0\nvt 1 1\n"
+                                          "vt 0 1\nvt 0.5 0.5\nusemtl a\nf 1/1 2/2 3/3\nusemtl b\nf 1/1 3/3 4/4\n"
+                                          "f 1 2 4\n" },
+    // A face before the first "usemtl" line (the last one's, "c"), a
+    // material without faces, a face without vt, a vt (-1, -1) at a corner
+    // of it (one point: every array holds (-1, -1) for both), and vt of
+    // equal values: (0, 0) under other materials (two points), (0.5, 0.5)
+    // under the same (one point).
+    { "materials with vt by corner", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0.5 0.5\n"
+                                     "vt -1 -1\nvt 0 0\nvt 0.5 0.5\nf 1/1 2/2 3/3\nusemtl a\nf 1/4 3/3 4/1\nf 1 3 4\n"
+                                     "usemtl b\nf 2/2 3/5 4/6\nusemtl unused\nusemtl a\nf 1/6 2/2 4/4\nf 1/7 3/3 2/2\n"
+                                     "usemtl c\n" },
+    { "materials with vt and vn by corner", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 0\nvn 0 0 1\n"
+                                            "vn 0 0 -1\nf 1/1/1 2/2/1 3/1/1\nusemtl b\nf 1/3/1 3/3/1 4/3/2\nusemtl a\n"
+                                            "f 1/1/2 2/2/1 4/2/2\n" },
   };
   return files;
+}
+
+/// The name of the active texture coordinates, "" without.
+std::string activeTCoordsName(vtkPolyData* mesh)
+{
+  vtkDataArray* tcoords = mesh->GetPointData()->GetTCoords();
+  return tcoords && tcoords->GetName() ? tcoords->GetName() : "";
+}
+
+/// slMeshReader reads the OBJ file @p path to what vtkOBJReader gives,
+/// merged here: every point array (names, order, the active texture
+/// coordinates, values), cell and field data and polygon.
+void expectOBJAsVTKReadsIt(const std::string& path, const std::string& what)
+{
+  vtkSmartPointer<vtkPolyData> ours = readShadeLab(path);
+  vtkSmartPointer<vtkPolyData> theirs = readVTK<vtkOBJReader>(path);
+  const Merged a = merged(ours), b = merged(theirs);
+  expectSameCellAndFieldData(ours, theirs, what);
+  // Merging leaves nothing to merge, and gives VTK's points merged.
+  EXPECT_EQ(static_cast<size_t>(ours->GetNumberOfPoints()), a.rows.size()) << what;
+  EXPECT_EQ(a.rows, b.rows) << what;
+  EXPECT_EQ(a.polygons, b.polygons) << what;
+  EXPECT_EQ(arrayNames(ours), arrayNames(theirs)) << what;
+  EXPECT_EQ(activeTCoordsName(ours), activeTCoordsName(theirs)) << what;
+  EXPECT_EQ(ours->GetPoints()->GetDataType(), theirs->GetPoints()->GetDataType()) << what;
+
+  // Without merging: VTK's points, one for one.
+  vtkNew<slMeshReader> unmerged;
+  unmerged->SetFileName(path.c_str());
+  unmerged->MergeDuplicatePointsOff();
+  unmerged->Update();
+  expectIdentical(unmerged->GetOutput(), theirs, what + ", unmerged");
+  EXPECT_EQ(activeTCoordsName(unmerged->GetOutput()), activeTCoordsName(theirs)) << what << ", unmerged";
+  expectSameCellAndFieldData(unmerged->GetOutput(), theirs, what + ", unmerged");
 }
 } // namespace
 
@@ -305,29 +364,11 @@ TEST(MeshFormats, OBJAsVTKReadsItWithCornersMerged)
   const TestFolder folder;
   for (const auto& file : objFiles())
   {
-    const std::string path = folder.path("m.obj");
     folder.write("m.obj", file.second);
     slMeshArrays arrays;
     slOBJAttributes attributes;
     EXPECT_TRUE(slParseOBJ(file.second.data(), file.second.size(), true, arrays, attributes, 2)) << file.first;
-    vtkSmartPointer<vtkPolyData> ours = readShadeLab(path);
-    vtkSmartPointer<vtkPolyData> theirs = readVTK<vtkOBJReader>(path);
-    const Merged a = merged(ours), b = merged(theirs);
-    expectSameCellAndFieldData(ours, theirs, file.first);
-    // Merging leaves nothing to merge, and gives VTK's points merged.
-    EXPECT_EQ(static_cast<size_t>(ours->GetNumberOfPoints()), a.rows.size()) << file.first;
-    EXPECT_EQ(a.rows, b.rows) << file.first;
-    EXPECT_EQ(a.polygons, b.polygons) << file.first;
-    EXPECT_EQ(arrayNames(ours), arrayNames(theirs)) << file.first;
-    EXPECT_EQ(ours->GetPoints()->GetDataType(), theirs->GetPoints()->GetDataType()) << file.first;
-
-    // Without merging: VTK's points, one for one.
-    vtkNew<slMeshReader> unmerged;
-    unmerged->SetFileName(path.c_str());
-    unmerged->MergeDuplicatePointsOff();
-    unmerged->Update();
-    expectIdentical(unmerged->GetOutput(), theirs, file.first + ", unmerged");
-    expectSameCellAndFieldData(unmerged->GetOutput(), theirs, file.first + ", unmerged");
+    expectOBJAsVTKReadsIt(folder.path("m.obj"), file.first);
   }
 }
 
@@ -335,13 +376,12 @@ TEST(MeshFormats, OBJOutsideTheCommonFormGoesToVTK)
 {
   const TestFolder folder;
   const std::map<std::string, std::string> declined = {
-    // vtkOBJReader gives a texture coordinate array per material, in the
-    // order of its hash table.
-    { "materials with vt", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl a\nf 1/1 2/2 3/3\n"
-                           "usemtl b\nf 1/1 3/3 2/2\n" },
-    // ... named "Normals", which its normals then replace.
+    // vtkOBJReader gives a texture coordinate array per material, one
+    // named "Normals", which its normals then replace.
     { "material named Normals", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl Normals\n"
                                 "f 1/1 2/2 3/3\n" },
+    { "materials with vt, one named Normals", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl a\n"
+                                              "f 1/1 2/2 3/3\nusemtl Normals\nf 1/1 3/3 2/2\n" },
     // ... "MaterialIds" for the faces only, which slMeshReader refuses.
     { "material and a line", "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\nl 1 2\n" },
     { "material without a name", "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl \nf 1 2 3\n" },
@@ -361,7 +401,7 @@ TEST(MeshFormats, OBJOutsideTheCommonFormGoesToVTK)
   }
   // Declined, it reads as before: through vtkOBJReader, with its array of
   // texture coordinates per material.
-  folder.write("m.obj", declined.at("materials with vt"));
+  folder.write("m.obj", declined.at("materials with vt, one named Normals"));
   vtkSmartPointer<vtkPolyData> read = readShadeLab(folder.path("m.obj"));
   EXPECT_EQ(read->GetNumberOfPolys(), 2);
   EXPECT_EQ(read->GetPointData()->GetNumberOfArrays(), 2);
@@ -387,7 +427,7 @@ TEST(MeshFormats, PLYAsVTKReadsIt)
   {
     const std::string bytes = contents(folder.path(name));
     slMeshArrays arrays;
-    EXPECT_TRUE(slParsePLY(bytes.data(), bytes.size(), arrays)) << name;
+    EXPECT_TRUE(slParsePLY(bytes.data(), bytes.size(), arrays, 1)) << name;
     expectIdentical(readShadeLab(folder.path(name)), readVTK<vtkPLYReader>(folder.path(name)), name);
   }
   // VTK's PLY code takes "\fv" for one word, not a texture coordinate "v";
@@ -398,7 +438,7 @@ TEST(MeshFormats, PLYAsVTKReadsIt)
   ASSERT_NE(v, std::string::npos);
   formFeed.insert(v + 15, "\f");
   slMeshArrays arrays;
-  EXPECT_FALSE(slParsePLY(formFeed.data(), formFeed.size(), arrays));
+  EXPECT_FALSE(slParsePLY(formFeed.data(), formFeed.size(), arrays, 1));
   folder.write("formfeed.ply", formFeed);
   vtkNew<slMeshReader> reader;
   reader->SetFileName(folder.path("formfeed.ply").c_str());
@@ -406,6 +446,389 @@ TEST(MeshFormats, PLYAsVTKReadsIt)
   vtkSmartPointer<vtkPolyData> back = readVTK<vtkPLYReader>(folder.path("shadelab.ply"));
   ASSERT_NE(back->GetPointData()->GetNormals(), nullptr);
   EXPECT_EQ(back->GetPointData()->GetNormals()->GetTuple3(5)[2], mesh->GetPointData()->GetNormals()->GetTuple3(5)[2]);
+}
+
+namespace
+{
+/// The point arrays of @p mesh: each one's name, class and components, and
+/// whether it is the active scalars, normals or texture coordinates.
+std::vector<std::string> pointArrayKinds(vtkPolyData* mesh)
+{
+  std::vector<std::string> kinds;
+  vtkPointData* pd = mesh->GetPointData();
+  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = pd->GetArray(a);
+    std::string kind = std::string(array->GetName() ? array->GetName() : "(no name)") + " " + array->GetClassName() +
+      " x" + std::to_string(array->GetNumberOfComponents());
+    kind += array == pd->GetScalars() ? " scalars" : "";
+    kind += array == pd->GetNormals() ? " normals" : "";
+    kind += array == pd->GetTCoords() ? " tcoords" : "";
+    kinds.push_back(kind);
+  }
+  return kinds;
+}
+
+/// @p ours, read by slMeshReader, and @p theirs, read by vtkPLYReader, hold
+/// the same points, point arrays and polygons: every value bit for bit (0
+/// and -0 apart), every array of the same name, class, components and
+/// attribute.
+void expectSamePLYMesh(vtkPolyData* ours, vtkPolyData* theirs, const std::string& what)
+{
+  expectIdentical(ours, theirs, what);
+  EXPECT_EQ(pointArrayKinds(ours), pointArrayKinds(theirs)) << what;
+  for (vtkIdType i = 0; i < std::min(ours->GetNumberOfPoints(), theirs->GetNumberOfPoints()); ++i)
+  {
+    const std::vector<double> a = row(ours, i), b = row(theirs, i);
+    ASSERT_TRUE(a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0)
+      << what << ": point " << i << " differs in its bits";
+  }
+}
+
+/// Parses @p bytes (file @p name in @p folder) with ShadeLab's PLY parser on
+/// 1 and 2 threads, expects it to take them, and compares what slMeshReader
+/// reads with what vtkPLYReader reads.
+void expectTakenAsVTKReadsIt(const TestFolder& folder, const std::string& name, const std::string& bytes)
+{
+  folder.write(name, bytes);
+  for (int threads : { 1, 2 })
+  {
+    slMeshArrays arrays;
+    EXPECT_TRUE(slParsePLY(bytes.data(), bytes.size(), arrays, threads)) << name;
+  }
+  expectSamePLYMesh(readShadeLab(folder.path(name)), readVTK<vtkPLYReader>(folder.path(name)), name);
+}
+
+/// A vertex property of plyFile: its type, name and its value at each of
+/// the five vertices, as text.
+struct PLYColumn
+{
+  std::string type, name;
+  std::array<const char*, 5> values;
+};
+
+/// The bytes of one value of @p type, read from @p text as VTK's PLY code
+/// reads ASCII (strtod, strtoul or strtol, then converted to the type).
+std::string binaryValue(const std::string& type, const char* text)
+{
+  const auto bytes = [](auto value) { return std::string(reinterpret_cast<const char*>(&value), sizeof(value)); };
+  const long long integer = std::strtoll(text, nullptr, 10);
+  if (type == "float" || type == "float32")
+  {
+    return bytes(static_cast<float>(std::strtod(text, nullptr)));
+  }
+  if (type == "double" || type == "float64")
+  {
+    return bytes(std::strtod(text, nullptr));
+  }
+  if (type == "char" || type == "int8" || type == "uchar" || type == "uint8")
+  {
+    return bytes(static_cast<unsigned char>(integer));
+  }
+  if (type == "short" || type == "int16" || type == "ushort" || type == "uint16")
+  {
+    return bytes(static_cast<std::uint16_t>(integer));
+  }
+  return bytes(static_cast<std::uint32_t>(integer)); // int, int32, uint, uint32
+}
+
+/// A pyramid of five vertices with the vertex properties @p columns, as
+/// PLY of @p format ("ascii" or "binary_little_endian") with lines ending
+/// in @p eol, its faces' indices declared by @p faceProperty.
+std::string plyFile(const std::vector<PLYColumn>& columns, const std::string& format, const std::string& eol = "\n",
+  const std::string& faceProperty = "property list uchar int vertex_indices")
+{
+  const bool ascii = format == "ascii";
+  std::string out = "ply" + eol + "format " + format + " 1.0" + eol + "comment written by hand" + eol +
+    "element vertex 5" + eol;
+  for (const PLYColumn& c : columns)
+  {
+    out += "property " + c.type + " " + c.name + eol;
+  }
+  out += "element face 3" + eol + faceProperty + eol + "end_header" + eol;
+  for (size_t i = 0; i < 5; ++i)
+  {
+    for (size_t k = 0; k < columns.size(); ++k)
+    {
+      out += ascii ? std::string(k ? " " : "") + columns[k].values[i] : binaryValue(columns[k].type, columns[k].values[i]);
+    }
+    out += ascii ? eol : "";
+  }
+  const std::vector<std::vector<std::int32_t>> faces = { { 0, 1, 4 }, { 1, 2, 4 }, { 0, 1, 2, 3 } };
+  for (const auto& face : faces)
+  {
+    out += ascii ? std::to_string(face.size()) : std::string(1, static_cast<char>(face.size()));
+    for (std::int32_t index : face)
+    {
+      out += ascii ? " " + std::to_string(index) : std::string(reinterpret_cast<const char*>(&index), 4);
+    }
+    out += ascii ? eol : "";
+  }
+  return out;
+}
+
+const PLYColumn plyX{ "float", "x", { "0", "1", "1", "0", "0.5" } };
+const PLYColumn plyY{ "float", "y", { "0", "0", "1", "1", "0.5" } };
+const PLYColumn plyZ{ "float", "z", { "0", "-0", "0", "1e-3", "0.70710678118654752440" } };
+
+/// The vertex layouts slParsePLY takes, by name: positions, colours, normals
+/// and texture coordinates in any order, and properties vtkPLYReader
+/// ignores, of every scalar type.
+const std::map<std::string, std::vector<PLYColumn>>& plyLayouts()
+{
+  static const PLYColumn red{ "uchar", "red", { "0", "255", "17", "128", "64" } },
+    green{ "uchar", "green", { "255", "0", "34", "1", "2" } }, blue{ "uchar", "blue", { "9", "8", "7", "6", "250" } },
+    alpha{ "uchar", "alpha", { "255", "128", "0", "1", "77" } },
+    nx{ "float", "nx", { "0", "-0", "0.6", "-0.6", "1" } }, ny{ "float", "ny", { "0", "1", "0.8", "0", "0" } },
+    nz{ "float", "nz", { "1", "0", "0", "0.8", "-0" } },
+    u{ "float32", "u", { "0", "0.333333333333333333", "1", "1e-7", "-2.5" } },
+    v{ "float", "v", { "1", "0.25", "0", "3e-8", "7" } };
+  const auto skipped = [](const char* type, const char* name, bool isSigned) {
+    return PLYColumn{ type, name,
+      isSigned ? std::array<const char*, 5>{ "0", "-1", "100", "-7", "42" }
+               : std::array<const char*, 5>{ "0", "1", "100", "7", "42" } };
+  };
+  static const std::map<std::string, std::vector<PLYColumn>> layouts = {
+    { "positions", { plyX, plyY, plyZ } },
+    { "RGB", { plyX, plyY, plyZ, red, green, blue } },
+    { "RGBA", { plyX, plyY, plyZ, red, green, blue, alpha } },
+    { "RGBA of uint8, float32", { PLYColumn{ "float32", "x", plyX.values }, plyY, plyZ,
+                                  PLYColumn{ "uint8", "red", red.values }, green,
+                                  PLYColumn{ "uint8", "blue", blue.values }, PLYColumn{ "uint8", "alpha", alpha.values } } },
+    { "everything, mixed up", { nx, alpha, plyX, skipped("float", "quality", true), plyY, plyZ, ny, nz, green, red,
+                                blue, u, v, skipped("double", "confidence", true), skipped("float", "intensity", true) } },
+    { "ignored properties of every type",
+      { skipped("char", "a", true), plyX, skipped("int8", "b", true), skipped("uchar", "c", false),
+        skipped("uint8", "d", false), skipped("short", "e", true), plyY, skipped("int16", "f", true),
+        skipped("ushort", "g", false), skipped("uint16", "h", false), skipped("int", "i", true),
+        skipped("int32", "j", true), plyZ, skipped("uint", "k", false), skipped("uint32", "l", false),
+        skipped("float", "m", true), skipped("float32", "n", true), skipped("double", "o", true),
+        skipped("float64", "p", true) } },
+  };
+  return layouts;
+}
+} // namespace
+
+TEST(MeshFormats, PLYLayoutsBinaryAndASCIIAsVTKReadsThem)
+{
+  const TestFolder folder;
+  for (const auto& layout : plyLayouts())
+  {
+    expectTakenAsVTKReadsIt(folder, "b.ply", plyFile(layout.second, "binary_little_endian"));
+    expectTakenAsVTKReadsIt(folder, "a.ply", plyFile(layout.second, "ascii"));
+    expectTakenAsVTKReadsIt(folder, "crlf.ply", plyFile(layout.second, "ascii", "\r\n"));
+    expectTakenAsVTKReadsIt(folder, "index.ply",
+      plyFile(layout.second, "ascii", "\n", "property list uint8 uint32 vertex_index"));
+  }
+  // Colours as vtkPLYReader gives them: unsigned chars, "RGB" or "RGBA",
+  // the active scalars, before the normals and texture coordinates.
+  folder.write("m.ply", plyFile(plyLayouts().at("everything, mixed up"), "ascii"));
+  EXPECT_EQ(pointArrayKinds(readShadeLab(folder.path("m.ply"))),
+    (std::vector<std::string>{ "RGBA vtkUnsignedCharArray x4 scalars", "Normals vtkFloatArray x3 normals",
+      "TCoords vtkFloatArray x2 tcoords" }));
+}
+
+TEST(MeshFormats, PLYWrittenByVTKAndShadeLabWithColoursAsVTKReadsIt)
+{
+  const TestFolder folder;
+  vtkSmartPointer<vtkPolyData> mesh =
+    texturedSphere(12, [](double i) { return std::array<double, 2>{ 0.1 * i, 1.0 / (i + 1) }; });
+  for (int components : { 3, 4 })
+  {
+    vtkNew<vtkUnsignedCharArray> colours;
+    colours->SetName(components == 3 ? "RGB" : "RGBA");
+    colours->SetNumberOfComponents(components);
+    colours->SetNumberOfTuples(mesh->GetNumberOfPoints());
+    for (vtkIdType k = 0; k < colours->GetNumberOfValues(); ++k)
+    {
+      colours->SetValue(k, static_cast<unsigned char>((37 * k + 11) % 256));
+    }
+    mesh->GetPointData()->SetScalars(colours);
+    for (bool binary : { true, false })
+    {
+      // vtkPLYWriter writes points, colours and texture coordinates.
+      vtkNew<vtkPLYWriter> writer;
+      writer->SetInputData(mesh);
+      writer->SetFileName(folder.path("vtk.ply").c_str());
+      binary ? writer->SetFileTypeToBinary() : writer->SetFileTypeToASCII();
+      writer->SetArrayName(colours->GetName());
+      writer->SetEnableAlpha(components == 4);
+      writer->Write();
+      const std::string what = std::to_string(components) + (binary ? " binary" : " ASCII");
+      expectTakenAsVTKReadsIt(folder, "vtk.ply", contents(folder.path("vtk.ply")));
+      EXPECT_NE(readShadeLab(folder.path("vtk.ply"))->GetPointData()->GetScalars(), nullptr) << what;
+    }
+    // ShadeLab writes normals too.
+    vtkNew<slMeshWriter> ours;
+    ours->SetInputData(mesh);
+    ours->SetFileName(folder.path("shadelab.ply").c_str());
+    ASSERT_EQ(callError(ours, [&] { return ours->Write(); }), "");
+    expectTakenAsVTKReadsIt(folder, "shadelab.ply", contents(folder.path("shadelab.ply")));
+    vtkSmartPointer<vtkPolyData> back = readShadeLab(folder.path("shadelab.ply"));
+    ASSERT_NE(back->GetPointData()->GetScalars(), nullptr);
+    EXPECT_EQ(back->GetPointData()->GetScalars()->GetTuple(7)[components - 1], colours->GetTuple(7)[components - 1]);
+  }
+}
+
+namespace
+{
+/// An ASCII PLY file with the text forms vtkPLYReader reads alike: blanks
+/// and tabs anywhere, CRLF and LF line ends, exponents, -0, a float
+/// subnormal, a value on either side of which double and float rounding
+/// part (x of vertex 2), trailing blank lines.
+const char* const oddPLY = "ply\r\n"
+                           "format ascii 1.0\r\n"
+                           "comment odd but fine\r\n"
+                           "element vertex 5\r\n"
+                           "property float x\r\n"
+                           "property float\ty\r\n"
+                           "property float z\n"
+                           "property uchar red\r\n"
+                           "property uchar green\r\n"
+                           "property uchar blue\r\n"
+                           "property float quality\r\n"
+                           "element face 3\r\n"
+                           "property list uchar int vertex_indices\r\n"
+                           "end_header\r\n"
+                           "0 -0 0 255 0 0 1e300\r\n"
+                           "  \t 2.5E+2\t-1e-3   .5 0 255 0 -7\t \r\n"
+                           "1.00000005960464477539062500000001 1 0 0 0 255 0.5\n"
+                           "5. 0001.5 1e-40 10 20 30 -0\r\n"
+                           "3.4028235e38 -2.5e-300 0.1 40 50 60 3\r\n"
+                           "3 0 1 4\r\n"
+                           "3\t1 2 4 \r\n"
+                           " 4 0 1 2 3\r\n"
+                           "\r\n"
+                           "  \n";
+} // namespace
+
+TEST(MeshFormats, PLYASCIITextFormsAsVTKReadsThem)
+{
+  const TestFolder folder;
+  expectTakenAsVTKReadsIt(folder, "odd.ply", oddPLY);
+  // VTK reads a float through a double: the text just above the float
+  // midway between 1 and the next float rounds to that midway double, then
+  // to the even float, 1; read straight to float it rounds up.
+  vtkSmartPointer<vtkPolyData> vtk = readVTK<vtkPLYReader>(folder.path("odd.ply"));
+  EXPECT_EQ(vtk->GetPoint(2)[0], 1.0);
+  EXPECT_NE(std::strtof("1.00000005960464477539062500000001", nullptr), 1.0f);
+  EXPECT_TRUE(std::signbit(vtk->GetPoint(0)[1]));
+  EXPECT_EQ(vtk->GetPoint(3)[2], static_cast<double>(static_cast<float>(1e-40)));
+  EXPECT_TRUE(std::signbit(vtk->GetPoint(4)[1]));
+}
+
+TEST(MeshFormats, PLYASCIIOnAnyThreadCountAsVTKReadsIt)
+{
+  // Over 1 MiB: parsed in stretches of lines, one per thread.
+  const TestFolder folder;
+  vtkSmartPointer<vtkPolyData> mesh =
+    texturedSphere(150, [](double i) { return std::array<double, 2>{ 1.0 / (i + 3), 1e-3 * i }; });
+  vtkNew<vtkPLYWriter> writer;
+  writer->SetInputData(mesh);
+  writer->SetFileName(folder.path("big.ply").c_str());
+  writer->SetFileTypeToASCII();
+  writer->Write();
+  const std::string bytes = contents(folder.path("big.ply"));
+  ASSERT_GT(bytes.size(), size_t(1) << 20);
+  slMeshArrays one;
+  ASSERT_TRUE(slParsePLY(bytes.data(), bytes.size(), one, 1));
+  for (int threads : { 2, 3, 8 })
+  {
+    slMeshArrays more;
+    ASSERT_TRUE(slParsePLY(bytes.data(), bytes.size(), more, threads)) << threads;
+    EXPECT_TRUE(more.points == one.points && more.tcoords == one.tcoords && more.offsets == one.offsets &&
+      more.connectivity == one.connectivity)
+      << threads;
+  }
+  expectSamePLYMesh(readShadeLab(folder.path("big.ply")), readVTK<vtkPLYReader>(folder.path("big.ply")), "big");
+}
+
+TEST(MeshFormats, PLYOutsideTheCommonFormGoesToVTK)
+{
+  const TestFolder folder;
+  const std::string good = "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\n"
+                           "property float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
+                           "property float quality\nelement face 3\nproperty list uchar int vertex_indices\n"
+                           "end_header\n"
+                           "0 0 0 255 0 0 0.5\n"
+                           "1 0 0 0 255 0 1.5\n"
+                           "1 1 0 0 0 255 2.5\n"
+                           "0 1 0 10 20 30 3.5\n"
+                           "0.5 0.5 0.7 40 50 60 4.5\n"
+                           "3 0 1 4\n"
+                           "3 1 2 4\n"
+                           "4 0 1 2 3\n";
+  expectTakenAsVTKReadsIt(folder, "good.ply", good);
+  // Each change of the good file it is declined for, and the first words of
+  // slMeshReader's problem with it ("" if VTK reads it whole).
+  struct Change
+  {
+    const char *what, *from, *to, *problem;
+  };
+  const std::string longRow = "1 0 0 0 255 0 1.5" + std::string(4000, ' ') + "\n";
+  const Change changes[] = {
+    { "missing value", "1 0 0 0 255 0 1.5\n", "1 0 0 0 255 0\n", "line 15 (element \"vertex\" row 2 of 5): fewer" },
+    { "extra value", "1 0 0 0 255 0 1.5\n", "1 0 0 0 255 0 1.5 9\n", "" },
+    { "extra index", "3 1 2 4\n", "3 1 2 4 0\n", "" },
+    { "missing index", "4 0 1 2 3\n", "4 0 1 2\n", "line 21 (element \"face\" row 3 of 3): fewer" },
+    { "fewer than 3 indices", "3 0 1 4\n", "2 0 1\n", "polygon 0 has fewer than 3 points" },
+    { "index out of range", "3 1 2 4\n", "3 1 2 5\n", "line 20 (element \"face\" row 2 of 3): vertex index 5 is" },
+    { "negative index", "3 1 2 4\n", "3 1 2 -4\n", "line 20 (element \"face\" row 2 of 3): vertex index -4 is" },
+    { "index with an exponent", "3 1 2 4\n", "3 1 2 4e0\n", "line 20 (element \"face\" row 2 of 3): \"4e0\" is not" },
+    { "letters after a number", "1 0 0 0 255 0 1.5\n", "1 0 0 0 255 0 1.5x\n", "line 15 (element \"vertex\" row 2 of 5): \"1.5x\"" },
+    { "hexadecimal", "0.5 0.5 0.7", "0x1p-1 0.5 0.7", "" },
+    { "plus sign", "0.5 0.5 0.7", "+0.5 0.5 0.7", "" },
+    { "decimal comma", "0.5 0.5 0.7", "0,5 0.5 0.7", "line 18 (element \"vertex\" row 5 of 5): \"0,5\"" },
+    { "exponent without digits", "0.5 0.5 0.7", "0.5 0.5 7e", "line 18 (element \"vertex\" row 5 of 5): \"7e\"" },
+    { "not a number", "0.5 0.5 0.7", "nan 0.5 0.7", "point 4 has a NaN" },
+    { "infinite", "0.5 0.5 0.7", "0.5 -inf 0.7", "point 4 has a NaN or infinite" },
+    { "too large for a float", "0.5 0.5 0.7", "0.5 0.5 1e39", "point 4 has a NaN or infinite" },
+    { "too small for a double", "0.5 0.5 0.7", "0.5 0.5 1e-320", "line 18 (element \"vertex\" row 5 of 5): \"1e-320\"" },
+    { "colour of 256", "40 50 60", "40 256 60", "" },
+    { "negative colour", "40 50 60", "40 -1 60", "" },
+    { "fractional colour", "40 50 60", "40 50.0 60", "line 18 (element \"vertex\" row 5 of 5): \"50.0\" is not" },
+    { "skipped value not a number", "4.5\n", "four\n", "line 18 (element \"vertex\" row 5 of 5): \"four\"" },
+    { "skipped value infinite", "4.5\n", "inf\n", "" },
+    { "blank line between rows", "1 1 0 0 0 255 2.5\n", "\n1 1 0 0 0 255 2.5\n", "line 16 (element \"vertex\" row 3 of 5): fewer" },
+    { "no newline at the end", "4 0 1 2 3\n", "4 0 1 2 3", "line 21 (element \"face\" row 3 of 3): no newline" },
+    { "form feed between values", "1 1 0 0 0 255 2.5\n", "1\f1 0 0 0 255 2.5\n", "line 16 (element \"vertex\" row 3 of 5): \"1\\x0C1\" is not" },
+    { "carriage return within a row", "1 1 0 0 0 255 2.5\n", "1\r1 0 0 0 255 2.5\n", "" },
+    { "row of 4017 bytes", "1 0 0 0 255 0 1.5\n", longRow.c_str(), "line 15 (element \"vertex\" row 2 of 5): longer" },
+    { "text after the last row", "4 0 1 2 3\n", "4 0 1 2 3\nend\n", "" },
+    { "fewer rows than the header says", "element face 3", "element face 4", "line 22: the file ends before" },
+    { "a colour of another type", "property uchar green", "property float green", "" },
+    { "colours in part", "property uchar blue", "property uchar quality2", "" },
+    { "colours from diffuse_red ...", "uchar red\nproperty uchar green\nproperty uchar blue",
+      "uchar diffuse_red\nproperty uchar diffuse_green\nproperty uchar diffuse_blue", "" },
+    { "double coordinates", "property float x", "property double x", "" },
+    { "a list among the vertex properties", "property float quality", "property list uchar float quality",
+      "line 14 (element \"vertex\" row 1 of 5): list count \"0.5\"" },
+    { "a face property besides the indices", "vertex_indices\n", "vertex_indices\nproperty uchar red\n",
+      "line 20 (element \"face\" row 1 of 3): fewer values than \"red\"" },
+  };
+  for (const Change& change : changes)
+  {
+    std::string bytes = good;
+    const size_t at = bytes.find(change.from);
+    ASSERT_NE(at, std::string::npos) << change.what;
+    bytes.replace(at, std::strlen(change.from), change.to);
+    slMeshArrays arrays;
+    EXPECT_FALSE(slParsePLY(bytes.data(), bytes.size(), arrays, 1)) << change.what;
+    // As before: through the file check and vtkPLYReader.
+    folder.write("changed.ply", bytes);
+    vtkNew<slMeshReader> reader;
+    reader->SetFileName(folder.path("changed.ply").c_str());
+    const std::string problem = updateError(reader);
+    if (*change.problem)
+    {
+      EXPECT_NE(problem.find(change.problem), std::string::npos) << change.what << ": " << problem;
+    }
+    else
+    {
+      EXPECT_EQ(problem, "") << change.what;
+      expectSamePLYMesh(reader->GetOutput(), readVTK<vtkPLYReader>(folder.path("changed.ply")), change.what);
+    }
+  }
 }
 
 TEST(MeshFormats, WrittenOBJAndPLYReadBackBitForBit)
@@ -424,7 +847,7 @@ TEST(MeshFormats, WrittenOBJAndPLYReadBackBitForBit)
     slMeshArrays arrays;
     slOBJAttributes attributes;
     EXPECT_TRUE(std::string(name) == "m.obj" ? slParseOBJ(bytes.data(), bytes.size(), false, arrays, attributes, 1)
-                                             : slParsePLY(bytes.data(), bytes.size(), arrays));
+                                             : slParsePLY(bytes.data(), bytes.size(), arrays, 1));
     vtkNew<slMeshReader> reader;
     reader->SetFileName(folder.path(name).c_str());
     reader->MergeDuplicatePointsOff();
@@ -736,6 +1159,121 @@ TEST(MeshFormats, OBJGroupsAndMaterialsReadAlikeOnAnyThreadCount)
   folder.write("grid.obj", text);
   expectSameCellAndFieldData(readShadeLab(folder.path("grid.obj")), readVTK<vtkOBJReader>(folder.path("grid.obj")),
     "grid");
+}
+
+namespace
+{
+/// An OBJ grid of @p n x @p n points, each with a vt and a vn, and a
+/// triangle per grid cell whose corners name one index for v, vt and vn,
+/// or, if @p byCorner, whose first corner names the next point's vt (then
+/// vtkOBJReader makes a point per corner). The faces take @p materials
+/// names (m0, m1, ...) in turn: a "usemtl" line every @p run faces from
+/// face run / 2 on, the first after a material without faces ("empty");
+/// the file ends in "usemtl last", which the faces before the first
+/// "usemtl" line then take in vtkOBJReader.
+std::string texturedGrid(int n, int materials, int run, bool byCorner)
+{
+  std::string points, faces;
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      points += "v " + std::to_string(i) + " " + std::to_string(j) + " 0\n";
+      points += "vt " + std::to_string(i * 0.125) + " " + std::to_string(j * 0.25) + "\n";
+      points += "vn 0 " + std::to_string(i % 2) + " 1\n";
+    }
+  }
+  for (int j = 0, face = 0; j + 1 < n; ++j)
+  {
+    for (int i = 0; i + 1 < n; ++i, ++face)
+    {
+      if (face % run == run / 2)
+      {
+        faces += std::string(face == run / 2 ? "usemtl empty\n" : "") + "usemtl m" +
+          std::to_string(face / run % materials) + "\n";
+      }
+      const std::string a = std::to_string(j * n + i + 1), b = std::to_string(j * n + i + 2),
+                        c = std::to_string(j * n + i + n + 2);
+      faces += "f " + a + "/" + (byCorner ? b : a) + "/" + a + " " + b + "/" + b + "/" + b + " " + c + "/" + c + "/" +
+        c + "\n";
+    }
+  }
+  return points + faces + "usemtl last\n";
+}
+} // namespace
+
+TEST(MeshFormats, OBJTextureCoordinatesOfManyMaterialsAsVTKReadsThem)
+{
+  // vtkOBJReader's array of texture coordinates per material name, in the
+  // order of its hash table: not that in which the names appear, nor its
+  // reverse, from ten names on.
+  const TestFolder folder;
+  for (const int materials : { 2, 3, 10, 50 })
+  {
+    std::vector<std::string> appearance{ "empty" };
+    for (int m = 0; m < materials; ++m)
+    {
+      appearance.push_back("m" + std::to_string(m));
+    }
+    appearance.emplace_back("last");
+    for (const bool byCorner : { false, true })
+    {
+      const std::string what = std::to_string(materials) + " materials" + (byCorner ? ", by corner" : "");
+      const std::string text = texturedGrid(12, materials, 2, byCorner);
+      folder.write("m.obj", text);
+      std::vector<std::string> names = arrayNames(readVTK<vtkOBJReader>(folder.path("m.obj")));
+      ASSERT_EQ(names.size(), appearance.size() + 1) << what;
+      EXPECT_EQ(names.back(), "Normals") << what;
+      names.pop_back();
+      if (materials >= 10)
+      {
+        EXPECT_NE(names, appearance) << what;
+        EXPECT_NE(names, std::vector<std::string>(appearance.rbegin(), appearance.rend())) << what;
+      }
+      slMeshArrays arrays;
+      slOBJAttributes attributes;
+      ASSERT_TRUE(slParseOBJ(text.data(), text.size(), true, arrays, attributes, 1)) << what;
+      EXPECT_EQ(attributes.tcoordsNames, names) << what;
+      expectOBJAsVTKReadsIt(folder.path("m.obj"), what);
+    }
+  }
+}
+
+TEST(MeshFormats, OBJTextureCoordinatesOfSeveralMaterialsReadAlikeOnAnyThreadCount)
+{
+  // Over 1 MiB, so that 2 and 4 threads parse it in stretches, which then
+  // begin and end between "usemtl" lines and the faces they apply to: three
+  // materials in turn every 1500 faces, whose arrays hold the points of
+  // one material's faces, or of two where they meet.
+  const TestFolder folder;
+  for (const bool byCorner : { false, true })
+  {
+    const std::string what = byCorner ? "by corner" : "of the v list";
+    const std::string text = texturedGrid(150, 3, 1500, byCorner);
+    ASSERT_GT(text.size(), size_t(1) << 20);
+    slMeshArrays one;
+    slOBJAttributes attributes;
+    ASSERT_TRUE(slParseOBJ(text.data(), text.size(), true, one, attributes, 1)) << what;
+    EXPECT_EQ(attributes.tcoordsNames.size(), 5u) << what;
+    EXPECT_GT(attributes.tcoordsSets.size(), 2u) << what;
+    EXPECT_EQ(attributes.pointTCoordsSets.size(), one.points.size() / 3) << what;
+    for (int threads : { 2, 4 })
+    {
+      slMeshArrays many;
+      slOBJAttributes more;
+      ASSERT_TRUE(slParseOBJ(text.data(), text.size(), true, many, more, threads)) << what;
+      EXPECT_EQ(many.points, one.points) << what << ", " << threads << " threads";
+      EXPECT_EQ(many.tcoords, one.tcoords) << what << ", " << threads << " threads";
+      EXPECT_EQ(many.normals, one.normals) << what << ", " << threads << " threads";
+      EXPECT_EQ(many.connectivity, one.connectivity) << what << ", " << threads << " threads";
+      EXPECT_EQ(more.tcoordsNames, attributes.tcoordsNames) << what << ", " << threads << " threads";
+      EXPECT_EQ(more.tcoordsSets, attributes.tcoordsSets) << what << ", " << threads << " threads";
+      EXPECT_EQ(more.pointTCoordsSets, attributes.pointTCoordsSets) << what << ", " << threads << " threads";
+      EXPECT_EQ(more.materialIds, attributes.materialIds) << what << ", " << threads << " threads";
+    }
+    folder.write("grid.obj", text);
+    expectOBJAsVTKReadsIt(folder.path("grid.obj"), what);
+  }
 }
 
 TEST(MeshFormats, OBJGroupsOfLinesAndPointsAreTheOnesVTKsReaderIsGiven)

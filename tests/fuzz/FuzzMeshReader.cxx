@@ -4,7 +4,8 @@
 // existing points, polygons of 3 points or more, arrays as long as the mesh).
 // For OBJ and PLY, bytes that ShadeLab's own parser takes must also read to
 // exactly what VTK's reader gives, where VTK 9.1 keeps every element: for
-// OBJ also the groups' and materials' arrays.
+// OBJ also the groups' and materials' arrays, and the texture coordinates'
+// array of each material; for PLY also the colours.
 #include "FuzzInputFile.h"
 #include "FuzzToolOutput.h"
 
@@ -28,6 +29,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
+#include <vtkUnsignedCharArray.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -44,14 +46,16 @@ bool equal(double a, double b)
 }
 
 /// True if @p mesh holds exactly @p arrays' points, normals, texture
-/// coordinates and polygons.
-bool same(vtkPolyData* mesh, const slMeshArrays& arrays)
+/// coordinates (or, if given, @p activeTCoords as its active ones) and
+/// polygons.
+bool same(vtkPolyData* mesh, const slMeshArrays& arrays, const std::vector<float>* activeTCoords = nullptr)
 {
   const vtkIdType n = static_cast<vtkIdType>(arrays.points.size() / 3);
   vtkDataArray* normals = mesh->GetPointData()->GetNormals();
   vtkDataArray* tcoords = mesh->GetPointData()->GetTCoords();
+  const std::vector<float>& uv = activeTCoords ? *activeTCoords : arrays.tcoords;
   if (mesh->GetNumberOfPoints() != n || (normals != nullptr) != !arrays.normals.empty() ||
-    (tcoords != nullptr) != !arrays.tcoords.empty() ||
+    (tcoords != nullptr) != !uv.empty() ||
     mesh->GetPolys()->GetNumberOfCells() != static_cast<vtkIdType>(arrays.offsets.size()) - 1)
   {
     return false;
@@ -63,7 +67,7 @@ bool same(vtkPolyData* mesh, const slMeshArrays& arrays)
       const size_t k = static_cast<size_t>(3 * i + c);
       if (!equal(mesh->GetPoints()->GetData()->GetComponent(i, c), arrays.points[k]) ||
         (normals && !equal(normals->GetComponent(i, c), arrays.normals[k])) ||
-        (tcoords && c < 2 && !equal(tcoords->GetComponent(i, c), arrays.tcoords[static_cast<size_t>(2 * i + c)])))
+        (tcoords && c < 2 && !equal(tcoords->GetComponent(i, c), uv[static_cast<size_t>(2 * i + c)])))
       {
         return false;
       }
@@ -127,19 +131,49 @@ bool holds(vtkFieldData* data, const char* name, const std::vector<T>& values)
   return true;
 }
 
-/// True if @p mesh, read by vtkOBJReader, has exactly the arrays besides
-/// points, normals and texture coordinates that @p attributes describe:
-/// the texture coordinates' name; the cell arrays "MaterialIds" (with
-/// materials) and "GroupIds" (0 for every face where @p attributes has
-/// none); the field data "MaterialNames" and "MaterialLibraries".
-bool sameAttributes(vtkPolyData* mesh, const slOBJAttributes& attributes)
+/// Texture coordinate array @p a of those @p attributes name, for the mesh
+/// @p arrays that came with them.
+std::vector<float> tcoordsArray(const slOBJAttributes& attributes, size_t a, const slMeshArrays& arrays)
 {
-  vtkDataArray* tcoords = mesh->GetPointData()->GetTCoords();
-  const int pointArrays = (tcoords ? 1 : 0) + (mesh->GetPointData()->GetNormals() ? 1 : 0);
-  if (mesh->GetPointData()->GetNumberOfArrays() != pointArrays ||
-    (tcoords && (!tcoords->GetName() || attributes.tcoordsName != tcoords->GetName())))
+  std::vector<float> values(arrays.tcoords.size());
+  slOBJTCoordsArray(attributes, a, arrays.tcoords.data(), arrays.tcoords.size() / 2, values.data());
+  return values;
+}
+
+/// True if @p mesh, read by vtkOBJReader, has exactly the arrays besides
+/// points and normals that @p attributes describe for @p arrays: the
+/// texture coordinates' arrays (names, order, values, the first active);
+/// the cell arrays "MaterialIds" (with materials) and "GroupIds" (0 for
+/// every face where @p attributes has none); the field data
+/// "MaterialNames" and "MaterialLibraries".
+bool sameAttributes(vtkPolyData* mesh, const slMeshArrays& arrays, const slOBJAttributes& attributes)
+{
+  vtkPointData* pd = mesh->GetPointData();
+  vtkDataArray* tcoords = pd->GetTCoords();
+  std::vector<std::string> pointArrays = tcoords ? attributes.tcoordsNames : std::vector<std::string>();
+  if (pd->GetNormals())
+  {
+    pointArrays.emplace_back("Normals");
+  }
+  if (!named(pd, pointArrays) || (tcoords && tcoords != pd->GetArray(0)))
   {
     return false;
+  }
+  for (size_t a = 0; tcoords && a < attributes.tcoordsNames.size(); ++a)
+  {
+    vtkDataArray* array = pd->GetArray(static_cast<int>(a));
+    const std::vector<float> values = tcoordsArray(attributes, a, arrays);
+    if (array->GetNumberOfComponents() != 2 || static_cast<size_t>(array->GetNumberOfValues()) != values.size())
+    {
+      return false;
+    }
+    for (size_t k = 0; k < values.size(); ++k)
+    {
+      if (!equal(array->GetComponent(static_cast<vtkIdType>(k / 2), static_cast<int>(k % 2)), values[k]))
+      {
+        return false;
+      }
+    }
   }
   const bool materials = !attributes.materialIds.empty();
   std::vector<std::string> cellArrays{ "GroupIds" }, fieldArrays;
@@ -175,6 +209,27 @@ bool keptEveryElement(vtkPolyData* mesh, const slMeshArrays& arrays)
     mesh->GetNumberOfVerts() == static_cast<vtkIdType>(arrays.vertexSizes.size());
 }
 
+/// True if @p mesh, read by vtkPLYReader, has exactly the colours @p arrays
+/// holds (an unsigned char array "RGB" or "RGBA", the active scalars, the
+/// first point array) and no point arrays but those, normals and texture
+/// coordinates.
+bool sameColours(vtkPolyData* mesh, const slMeshArrays& arrays)
+{
+  vtkPointData* pd = mesh->GetPointData();
+  auto* colours = vtkUnsignedCharArray::SafeDownCast(pd->GetScalars());
+  const bool given = !arrays.colours.empty();
+  if ((pd->GetScalars() != nullptr) != given ||
+    pd->GetNumberOfArrays() != (given ? 1 : 0) + (pd->GetNormals() ? 1 : 0) + (pd->GetTCoords() ? 1 : 0))
+  {
+    return false;
+  }
+  return !given ||
+    (colours && colours == pd->GetArray(0) && colours->GetNumberOfComponents() == arrays.colourComponents &&
+      colours->GetName() && std::string(colours->GetName()) == (arrays.colourComponents == 4 ? "RGBA" : "RGB") &&
+      static_cast<size_t>(colours->GetNumberOfValues()) == arrays.colours.size() &&
+      std::memcmp(colours->GetPointer(0), arrays.colours.data(), arrays.colours.size()) == 0);
+}
+
 /// What VTK's reader gives for a file ShadeLab's parser takes, against it.
 void compareWithVTK(const std::string& path, const uint8_t* data, size_t size)
 {
@@ -192,18 +247,21 @@ void compareWithVTK(const std::string& path, const uint8_t* data, size_t size)
     vtkNew<vtkOBJReader> reader;
     reader->SetFileName(vtkPath.c_str());
     reader->Update();
+    // The active texture coordinates: the first of vtkOBJReader's arrays.
+    const std::vector<float> active =
+      attributes.tcoordsNames.empty() ? std::vector<float>() : tcoordsArray(attributes, 0, arrays);
     if (keptEveryElement(reader->GetOutput(), arrays) &&
-      (!same(reader->GetOutput(), arrays) || !sameAttributes(reader->GetOutput(), attributes)))
+      (!same(reader->GetOutput(), arrays, &active) || !sameAttributes(reader->GetOutput(), arrays, attributes)))
     {
       std::abort();
     }
   }
-  if (ext == ".ply" && slParsePLY(text, size, arrays))
+  if (ext == ".ply" && slParsePLY(text, size, arrays, 1))
   {
     vtkNew<vtkPLYReader> reader;
     reader->SetFileName(path.c_str());
     reader->Update();
-    if (!same(reader->GetOutput(), arrays))
+    if (!same(reader->GetOutput(), arrays) || !sameColours(reader->GetOutput(), arrays))
     {
       std::abort();
     }

@@ -17,6 +17,9 @@ struct slMeshArrays
   std::vector<float> points;          ///< x, y, z per point
   std::vector<float> normals;         ///< nx, ny, nz per point, or empty
   std::vector<float> tcoords;         ///< u, v per point, or empty
+  /// Point colours (PLY), colourComponents values 0-255 per point, or empty.
+  std::vector<unsigned char> colours;
+  int colourComponents = 0; ///< 3 (RGB) or 4 (RGBA) with colours
   std::vector<std::int64_t> offsets;  ///< polygon k is connectivity[offsets[k], offsets[k+1])
   /// The polygons' point ids, then the lines', then the vertex cells' (one
   /// array: renumbering the points renumbers them all).

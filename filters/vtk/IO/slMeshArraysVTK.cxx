@@ -128,6 +128,13 @@ void slToPolyData(slMeshArrays& mesh, bool tcoordsFirst, vtkPolyData* output)
   output->SetPoints(points);
   output->SetPolys(polys);
   vtkPointData* pd = output->GetPointData();
+  if (!mesh.colours.empty())
+  {
+    // As vtkPLYReader gives them: the first array, the active scalars.
+    vtkSmartPointer<vtkUnsignedCharArray> colours = adopt<vtkUnsignedCharArray>(mesh.colours, mesh.colourComponents);
+    colours->SetName(mesh.colourComponents == 4 ? "RGBA" : "RGB");
+    pd->SetScalars(colours);
+  }
   auto addTCoords = [&] {
     if (!mesh.tcoords.empty())
     {

@@ -12,8 +12,9 @@
 class vtkPolyData;
 
 /// Fills @p output with @p mesh: float points, polygons, lines and vertex
-/// cells, and the point arrays "TCoords" and "Normals" (active texture
-/// coordinates and normals) when present, added in the order @p tcoordsFirst
+/// cells, and the point arrays "RGB" or "RGBA" (active scalars, unsigned
+/// char, first), "TCoords" and "Normals" (active texture coordinates and
+/// normals) when present, the last two added in the order @p tcoordsFirst
 /// says (the order of the VTK reader being stood in for). Frees @p mesh's
 /// arrays as it goes.
 void slToPolyData(slMeshArrays& mesh, bool tcoordsFirst, vtkPolyData* output);

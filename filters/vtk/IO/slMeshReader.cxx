@@ -170,17 +170,55 @@ vtkSmartPointer<Array> namedArray(const char* name, const std::vector<T>& values
   return array;
 }
 
+/// Gives @p mesh, read by ShadeLab's OBJ parser, vtkOBJReader 9.1's arrays
+/// of texture coordinates, one per material name, in its order and before
+/// the normals, the first one active, in place of the parser's one.
+void addOBJTCoords(const slOBJAttributes& attributes, vtkPolyData* mesh)
+{
+  vtkPointData* pd = mesh->GetPointData();
+  vtkSmartPointer<vtkFloatArray> given = vtkFloatArray::SafeDownCast(pd->GetTCoords());
+  if (!given || attributes.tcoordsNames.empty())
+  {
+    return;
+  }
+  const vtkIdType points = given->GetNumberOfTuples();
+  std::vector<vtkSmartPointer<vtkFloatArray>> arrays{ given };
+  for (std::size_t a = 1; a < attributes.tcoordsNames.size(); ++a)
+  {
+    arrays.push_back(vtkSmartPointer<vtkFloatArray>::New());
+    arrays[a]->SetNumberOfComponents(2);
+    slSetNumberOfTuplesOrThrow(arrays[a], points);
+    slOBJTCoordsArray(
+      attributes, a, given->GetPointer(0), static_cast<std::size_t>(points), arrays[a]->GetPointer(0));
+  }
+  // The first array in place, once the others have their values from it.
+  slOBJTCoordsArray(attributes, 0, given->GetPointer(0), static_cast<std::size_t>(points), given->GetPointer(0));
+  vtkSmartPointer<vtkDataArray> normals = pd->GetNormals();
+  pd->RemoveArray(given->GetName());
+  if (normals)
+  {
+    pd->RemoveArray(normals->GetName());
+  }
+  for (std::size_t a = 0; a < arrays.size(); ++a)
+  {
+    arrays[a]->SetName(attributes.tcoordsNames[a].c_str());
+    pd->AddArray(arrays[a]);
+  }
+  pd->SetActiveTCoords(attributes.tcoordsNames[0].c_str());
+  if (normals)
+  {
+    pd->SetNormals(normals);
+  }
+}
+
 /// Adds to @p mesh, read by ShadeLab's OBJ parser, what vtkOBJReader 9.1
 /// makes of groups and materials, as it names and orders them: the texture
-/// coordinates' name, the cell arrays "MaterialIds" and "GroupIds" (the
+/// coordinates' arrays, the cell arrays "MaterialIds" and "GroupIds" (the
 /// latter, as for VTK's reader, completed for the lines and vertex cells),
 /// the field data "MaterialNames" and "MaterialLibraries".
 void addOBJAttributes(const slOBJAttributes& attributes, vtkPolyData* mesh)
 {
-  if (vtkDataArray* tcoords = mesh->GetPointData()->GetTCoords())
-  {
-    tcoords->SetName(attributes.tcoordsName.c_str());
-  }
+  addOBJTCoords(attributes, mesh);
   if (!attributes.materialIds.empty())
   {
     mesh->GetCellData()->AddArray(namedArray<vtkIntArray>("MaterialIds", attributes.materialIds));
@@ -251,7 +289,7 @@ bool readOwnFormat(const char* fileName, const std::string& ext, bool merge, vtk
     slOBJAttributes attributes;
     const bool parsed = ext == ".obj"
       ? slParseOBJ(bytes.get(), length, merge, arrays, attributes, vtkSMPTools::GetEstimatedNumberOfThreads())
-      : slParsePLY(bytes.get(), length, arrays);
+      : slParsePLY(bytes.get(), length, arrays, vtkSMPTools::GetEstimatedNumberOfThreads());
     if (!parsed)
     {
       return false;

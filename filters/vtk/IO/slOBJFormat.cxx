@@ -1,6 +1,7 @@
 #include "slOBJFormat.h"
 
 #include "slPointDeduplication.h"
+#include "slTextParsing.h"
 
 #include <algorithm>
 #include <atomic>
@@ -20,47 +21,7 @@ namespace
 {
 /// One parsed line's cursor; every parse function returns false on anything
 /// outside the accepted subset.
-struct Cursor
-{
-  const char* at;
-  const char* end; // the line's end, '\r' excluded
-
-  void skipBlanks()
-  {
-    while (this->at < this->end && (*this->at == ' ' || *this->at == '\t'))
-    {
-      ++this->at;
-    }
-  }
-  bool atSeparator() const { return this->at == this->end || *this->at == ' ' || *this->at == '\t'; }
-
-  bool number(float& value)
-  {
-    this->skipBlanks();
-    const auto r = std::from_chars(this->at, this->end, value, std::chars_format::general);
-    if (r.ec != std::errc() || !std::isfinite(value))
-    {
-      return false;
-    }
-    this->at = r.ptr;
-    return this->atSeparator();
-  }
-  bool index(std::int64_t& value)
-  {
-    const auto r = std::from_chars(this->at, this->end, value);
-    if (r.ec != std::errc() || value <= 0 || value > std::numeric_limits<int>::max())
-    {
-      return false;
-    }
-    this->at = r.ptr;
-    return true;
-  }
-  bool done()
-  {
-    this->skipBlanks();
-    return this->at == this->end;
-  }
-};
+using Cursor = slTextCursor;
 
 /// The form of an element's corners: bit 1 set if they name a vt, bit 2 a vn.
 enum Form
@@ -442,6 +403,13 @@ bool groupIds(const std::vector<std::int64_t>& places, std::int64_t faces, std::
 /// face of plain "v" corners.
 const std::string noMaterial = "NO_MATERIAL";
 
+/// vtkOBJReader's texture coordinates where no face corner gives one.
+const float noTCoords[2] = { -1.0f, -1.0f };
+
+/// A "usemtl" line or the first face of plain "v" corners: the faces before
+/// it, and its material's name.
+using MaterialStart = std::pair<std::int64_t, const std::string*>;
+
 /// vtkOBJReader's "MaterialIds", "MaterialNames" and "MaterialLibraries"
 /// from @p starts, the places (faces before each) and names of the "usemtl"
 /// lines and of the first face of plain "v" corners, in file order: each
@@ -449,7 +417,7 @@ const std::string noMaterial = "NO_MATERIAL";
 /// before the first have id 0, and ids number the names in order of first
 /// appearance. There are materials unless no name or only NO_MATERIAL
 /// appears.
-void materialIds(const std::vector<std::pair<std::int64_t, const std::string*>>& starts, std::int64_t faces,
+void materialIds(const std::vector<MaterialStart>& starts, std::int64_t faces,
   std::vector<std::string> libraries, slOBJAttributes& attributes)
 {
   std::unordered_map<std::string, std::int32_t> idOf;
@@ -486,21 +454,57 @@ void materialIds(const std::vector<std::pair<std::int64_t, const std::string*>>&
   attributes.materialLibraries = std::move(libraries);
 }
 
+/// vtkOBJReader 9.1's texture coordinate arrays, from the "usemtl" lines
+/// @p lines in file order: one per name, else one named "TCoords", named in
+/// attributes.tcoordsNames in the order of VTK's
+/// std::unordered_map<std::string, vtkFloatArray*>, into which it emplaces
+/// the names in order of first appearance (its order depends only on the
+/// names and that sequence: std::hash<std::string> is the same on every
+/// run). Fills @p arrayFrom with the array of each face, (first face,
+/// array) by face: that of the "usemtl" line before it, and, before the
+/// first, that of the file's last (VTK's name buffer still holds it from
+/// the pass that made the arrays). False if an array would be named
+/// "Normals" (VTK's normals then replace it).
+bool tcoordsArrays(const std::vector<MaterialStart>& lines, slOBJAttributes& attributes,
+  std::vector<std::pair<std::int64_t, std::int32_t>>& arrayFrom)
+{
+  std::unordered_map<std::string, std::int32_t> arrays;
+  for (const MaterialStart& line : lines)
+  {
+    arrays.emplace(*line.second, 0);
+  }
+  if (arrays.empty())
+  {
+    arrays.emplace("TCoords", 0);
+  }
+  for (auto& array : arrays)
+  {
+    array.second = static_cast<std::int32_t>(attributes.tcoordsNames.size());
+    attributes.tcoordsNames.push_back(array.first);
+  }
+  arrayFrom.assign(1, { 0, arrays.at(lines.empty() ? std::string("TCoords") : *lines.back().second) });
+  for (const MaterialStart& line : lines)
+  {
+    arrayFrom.emplace_back(line.first, arrays.at(*line.second));
+  }
+  return arrays.count("Normals") == 0;
+}
+
 /// Fills @p attributes from the stretches' "g", "usemtl" and "mtllib" lines
 /// and first faces of plain "v" corners, given whether faces have texture
-/// coordinates (@p textured). False where vtkOBJReader 9.1 gives what this
-/// parser does not: texture coordinates of several materials (an array per
-/// material, in its hash table's order) or named "Normals" (which VTK's
-/// normals then replace); materials beside "l" and "p" elements (VTK's
-/// "MaterialIds" then has a value per face only, and slMeshReader refuses
-/// the file).
-bool attributesOf(const std::vector<Chunk>& chunks, bool textured, slOBJAttributes& attributes)
+/// coordinates (@p textured), and then @p tcoordsFrom with the texture
+/// coordinate array of each face (tcoordsArrays). False where vtkOBJReader
+/// 9.1 gives what this parser does not: texture coordinates of a material
+/// named "Normals" (which VTK's normals then replace); materials beside "l"
+/// and "p" elements (VTK's "MaterialIds" then has a value per face only,
+/// and slMeshReader refuses the file).
+bool attributesOf(const std::vector<Chunk>& chunks, bool textured, slOBJAttributes& attributes,
+  std::vector<std::pair<std::int64_t, std::int32_t>>& tcoordsFrom)
 {
   bool elements = false; // "l" or "p"
   std::vector<std::int64_t> groups;
-  std::vector<std::pair<std::int64_t, const std::string*>> starts;
+  std::vector<MaterialStart> starts, lines; // with and without NO_MATERIAL
   std::vector<std::string> libraries;
-  const std::string* tcoordsName = nullptr;
   bool plainFaceSeen = false;
   std::int64_t faces = 0; // before the stretch
   for (const Chunk& c : chunks)
@@ -525,11 +529,7 @@ bool attributesOf(const std::vector<Chunk>& chunks, bool textured, slOBJAttribut
         notePlainFace();
       }
       starts.emplace_back(faces + m.first, &m.second);
-      if (textured && tcoordsName && *tcoordsName != m.second)
-      {
-        return false;
-      }
-      tcoordsName = &m.second;
+      lines.emplace_back(faces + m.first, &m.second);
     }
     if (!plainFaceNoted)
     {
@@ -539,20 +539,73 @@ bool attributesOf(const std::vector<Chunk>& chunks, bool textured, slOBJAttribut
     elements = elements || !c.lineSizes.empty() || !c.vertexSizes.empty();
     faces += static_cast<std::int64_t>(c.faceCorners.size());
   }
-  if (textured && tcoordsName)
-  {
-    if (*tcoordsName == "Normals")
-    {
-      return false;
-    }
-    attributes.tcoordsName = *tcoordsName;
-  }
-  if (!groupIds(groups, faces, attributes.groupIds))
+  if ((textured && !tcoordsArrays(lines, attributes, tcoordsFrom)) || !groupIds(groups, faces, attributes.groupIds))
   {
     return false;
   }
   materialIds(starts, faces, std::move(libraries), attributes);
   return attributes.materialIds.empty() || !elements;
+}
+
+/// Which of vtkOBJReader's texture coordinate arrays hold the value of each
+/// vt: those of the faces that name it (@p arrayFrom, (first face, array)
+/// by face; @p t, the vt index of each face corner, 0 for none, or, if
+/// @p sameIndex, every corner's v index), and none for a vt (-1, -1), which
+/// every array holds alike. Numbers the sets of arrays in
+/// attributes.tcoordsSets in order of first appearance by vt index, the
+/// empty one first, and returns the set of each vt index (0: none).
+std::vector<std::int32_t> vtSets(const slMeshArrays& mesh, const std::vector<std::int32_t>& t, bool sameIndex,
+  const std::vector<float>& vt, const std::vector<std::pair<std::int64_t, std::int32_t>>& arrayFrom,
+  slOBJAttributes& attributes)
+{
+  const std::size_t nt = vt.size() / 2, arrays = attributes.tcoordsNames.size(), words = (arrays + 63) / 64;
+  std::vector<std::uint64_t> masks((nt + 1) * words);
+  std::size_t from = 0;
+  const std::size_t faces = mesh.offsets.size() - 1;
+  for (std::size_t f = 0; f < faces; ++f)
+  {
+    while (from + 1 < arrayFrom.size() && static_cast<std::size_t>(arrayFrom[from + 1].first) <= f)
+    {
+      ++from;
+    }
+    const auto a = static_cast<std::size_t>(arrayFrom[from].second);
+    const std::uint64_t bit = std::uint64_t(1) << (a % 64);
+    for (auto k = static_cast<std::size_t>(mesh.offsets[f]); k < static_cast<std::size_t>(mesh.offsets[f + 1]); ++k)
+    {
+      const auto tk = static_cast<std::size_t>(sameIndex ? mesh.connectivity[k] + 1 : t[k]);
+      masks[tk * words + a / 64] |= tk > 0 ? bit : 0;
+    }
+  }
+  std::vector<std::int32_t> setOf(nt + 1);
+  std::unordered_map<std::string, std::int32_t> ids;
+  attributes.tcoordsSets.clear();
+  for (std::size_t i = 0; i <= nt; ++i)
+  {
+    std::uint64_t* mask = &masks[i * words];
+    if (i > 0 && std::memcmp(&vt[2 * (i - 1)], noTCoords, sizeof(noTCoords)) == 0)
+    {
+      std::fill(mask, mask + words, 0);
+    }
+    // Neighbouring vt mostly have one set: only a change is looked up.
+    if (i > 0 && std::equal(mask, mask + words, mask - words))
+    {
+      setOf[i] = setOf[i - 1];
+      continue;
+    }
+    const auto known = ids.emplace(std::string(reinterpret_cast<const char*>(mask), words * sizeof(std::uint64_t)),
+      static_cast<std::int32_t>(attributes.tcoordsSets.size()));
+    if (known.second)
+    {
+      std::vector<bool> set(arrays);
+      for (std::size_t a = 0; a < arrays; ++a)
+      {
+        set[a] = (mask[a / 64] >> (a % 64)) & 1;
+      }
+      attributes.tcoordsSets.push_back(std::move(set));
+    }
+    setOf[i] = known.first->second;
+  }
+  return setOf;
 }
 } // namespace
 
@@ -568,60 +621,9 @@ bool slParseOBJ(
   }
   // Lines split into one stretch per thread: indices are absolute, so the
   // stretches parse independently and are joined in order.
-  const std::size_t parts = static_cast<std::size_t>(std::max(1, std::min(threads, 64)));
-  std::vector<Chunk> chunks(size < (1u << 20) ? 1 : parts);
-  std::vector<const char*> bounds{ text };
-  for (std::size_t k = 1; k < chunks.size(); ++k)
-  {
-    const char* at = std::max(bounds.back(), text + size / chunks.size() * k);
-    const char* newline = static_cast<const char*>(std::memchr(at, '\n', static_cast<std::size_t>(text + size - at)));
-    bounds.push_back(newline ? newline + 1 : text + size);
-  }
-  bounds.push_back(text + size);
-  // What a stretch throws (std::bad_alloc) is rethrown here after every
-  // thread has joined: out of a thread it would end the process. A thread
-  // that cannot start (no memory for its stack) leaves its stretches to
-  // this one.
-  std::vector<std::exception_ptr> failures(chunks.size());
-  const auto parse = [&](std::size_t k) {
-    try
-    {
-      parseLines(bounds[k], bounds[k + 1], chunks[k]);
-    }
-    catch (...)
-    {
-      failures[k] = std::current_exception();
-    }
-  };
-  std::vector<std::thread> workers;
-  workers.reserve(chunks.size());
-  std::size_t started = 1;
-  try
-  {
-    for (; started < chunks.size(); ++started)
-    {
-      workers.emplace_back(parse, started);
-    }
-  }
-  catch (const std::system_error&)
-  {
-  }
-  for (std::size_t k = started; k < chunks.size(); ++k)
-  {
-    parse(k);
-  }
-  parse(0);
-  for (std::thread& w : workers)
-  {
-    w.join();
-  }
-  for (const std::exception_ptr& failure : failures)
-  {
-    if (failure)
-    {
-      std::rethrow_exception(failure);
-    }
-  }
+  std::vector<Chunk> chunks(slTextStretchCount(size, threads));
+  const std::vector<const char*> bounds = slLineStretches(text, size, chunks.size());
+  slRunEach(chunks.size(), [&](std::size_t k) { parseLines(bounds[k], bounds[k + 1], chunks[k]); });
   int given = 0, everyFace = VTN;
   std::int64_t lineTexture = 0;
   for (const Chunk& c : chunks)
@@ -636,7 +638,8 @@ bool slParseOBJ(
   }
   const bool hasT = (given & VT) != 0, hasN = (given & VN) != 0;
   attributes = slOBJAttributes();
-  if (!attributesOf(chunks, hasT, attributes))
+  std::vector<std::pair<std::int64_t, std::int32_t>> tcoordsFrom;
+  if (!attributesOf(chunks, hasT, attributes, tcoordsFrom))
   {
     return false;
   }
@@ -713,26 +716,28 @@ bool slParseOBJ(
   {
     return false; // vtkOBJReader's arrays would not match its points
   }
+  // A point's texture coordinates, and which of vtkOBJReader's arrays hold
+  // them, follow from its vt; the set of each point is needed only where
+  // not every point with texture coordinates has the same.
+  const std::vector<std::int32_t> setOf =
+    hasT ? vtSets(mesh, t, sameIndex, vt, tcoordsFrom, attributes) : std::vector<std::int32_t>();
+  const bool pointSets = attributes.tcoordsSets.size() > 2;
   if (same)
   {
     if (hasT)
     {
       // vtkOBJReader gives a point its vt through a face corner naming
       // one, and (-1, -1) to the points no such corner names.
-      std::vector<bool> textured(static_cast<std::size_t>(nv));
-      for (std::size_t k = 0; k < cornerCount; ++k)
+      for (std::size_t i = 0; i < static_cast<std::size_t>(nv); ++i)
       {
-        if (sameIndex || t[k] != 0)
-        {
-          textured[static_cast<std::size_t>(mesh.connectivity[k])] = true;
-        }
-      }
-      for (std::size_t i = 0; i < textured.size(); ++i)
-      {
-        if (!textured[i])
+        if (setOf[i + 1] == 0)
         {
           vt[2 * i] = vt[2 * i + 1] = -1.0f;
         }
+      }
+      if (pointSets)
+      {
+        attributes.pointTCoordsSets.assign(setOf.begin() + 1, setOf.end());
       }
     }
     mesh.points = std::move(v);
@@ -745,8 +750,7 @@ bool slParseOBJ(
     mesh.points.resize(3 * total);
     mesh.tcoords.resize(hasT ? 2 * total : 0);
     mesh.normals.resize(normals ? 3 * total : 0);
-    // vtkOBJReader's texture coordinate for a corner without one.
-    static const float none[2] = { -1.0f, -1.0f };
+    attributes.pointTCoordsSets.resize(pointSets ? total : 0);
     for (std::size_t k = 0; k < total; ++k)
     {
       const std::size_t a = static_cast<std::size_t>(mesh.connectivity[k]);
@@ -754,7 +758,12 @@ bool slParseOBJ(
       if (hasT)
       {
         const std::int32_t tk = k < cornerCount ? t[k] : 0;
-        std::memcpy(&mesh.tcoords[2 * k], tk > 0 ? &vt[2 * static_cast<std::size_t>(tk - 1)] : none, 2 * sizeof(float));
+        std::memcpy(
+          &mesh.tcoords[2 * k], tk > 0 ? &vt[2 * static_cast<std::size_t>(tk - 1)] : noTCoords, 2 * sizeof(float));
+        if (pointSets)
+        {
+          attributes.pointTCoordsSets[k] = setOf[static_cast<std::size_t>(tk)];
+        }
       }
       if (normals)
       {
@@ -765,9 +774,29 @@ bool slParseOBJ(
   }
   if (merge)
   {
-    slDeduplicatePoints(mesh);
+    slDeduplicatePoints(mesh, attributes.pointTCoordsSets);
   }
   return true;
+}
+
+void slOBJTCoordsArray(
+  const slOBJAttributes& attributes, std::size_t a, const float* tcoords, std::size_t points, float* out)
+{
+  std::vector<char> holds; // by set
+  for (const std::vector<bool>& set : attributes.tcoordsSets)
+  {
+    holds.push_back(set[a]);
+  }
+  const std::vector<std::int32_t>& sets = attributes.pointTCoordsSets;
+  for (std::size_t p = 0; p < points; ++p)
+  {
+    const float u = tcoords[2 * p], v = tcoords[2 * p + 1];
+    const std::size_t s = !sets.empty() ? static_cast<std::size_t>(sets[p])
+                                        : std::memcmp(&tcoords[2 * p], noTCoords, sizeof(noTCoords)) != 0 ? 1 : 0;
+    const bool held = s < holds.size() && holds[s];
+    out[2 * p] = held ? u : noTCoords[0];
+    out[2 * p + 1] = held ? v : noTCoords[1];
+  }
 }
 
 namespace

@@ -24,9 +24,18 @@
 /// besides points and cells (docs/mesh-io.md).
 struct slOBJAttributes
 {
-  /// The texture coordinates' name: the one material's that "usemtl" names,
-  /// else "TCoords".
-  std::string tcoordsName = "TCoords";
+  /// The names of the texture coordinate arrays, one per name of a
+  /// "usemtl" line, else "TCoords", in vtkOBJReader's order (that of its
+  /// std::unordered_map), the first one active. Empty without texture
+  /// coordinates.
+  std::vector<std::string> tcoordsNames;
+  /// Which of those arrays hold a point's texture coordinates (the mesh's);
+  /// the others hold (-1, -1) for it: tcoordsSets[s][a] tells whether array
+  /// a is in set s, the point's set is pointTCoordsSets[point], or, where
+  /// that is empty (two sets at most), 0 if its texture coordinates are
+  /// (-1, -1) and 1 otherwise. Set 0 holds no array.
+  std::vector<std::vector<bool>> tcoordsSets;
+  std::vector<std::int32_t> pointTCoordsSets;
   /// The cell array "GroupIds" (float), a value per polygon: the number of
   /// "g" lines before it, less one if one comes before the first face.
   /// Empty when every polygon's is 0 (as in a file without "g" lines).
@@ -39,15 +48,19 @@ struct slOBJAttributes
 };
 
 /// Fills @p mesh from @p size bytes of OBJ text at @p text as vtkOBJReader
-/// reads them (float values; one point per vertex when every corner's vt and
+/// reads them: float values; one point per vertex when every corner's vt and
 /// vn index, where it has one, equals its v index, else one per corner and
 /// per "l" and "p" corner; texture coordinates (-1, -1) where no face corner
-/// gives one), followed, if
-/// @p merge, by the merging of points equal in position, normal and texture
-/// coordinate (slMergeIdenticalPoints, first occurrence first), and
-/// @p attributes with what vtkOBJReader makes of groups and materials. Unlike
-/// vtkOBJReader 9.1 it keeps every face and "l" and "p" element, and leaves
-/// out the normals when some point would have none (see docs/mesh-io.md).
+/// gives one. vtkOBJReader gives an array of texture coordinates per
+/// material name, holding those that faces of that material give and
+/// (-1, -1) elsewhere: @p mesh holds the texture coordinates, @p attributes
+/// which array holds which point's (slOBJTCoordsArray). If @p merge, points
+/// equal in position, normal and every such array are then merged (as
+/// slMergeIdenticalPoints merges vtkOBJReader's points, first occurrence
+/// first). @p attributes also gets what vtkOBJReader makes of groups and
+/// materials. Unlike vtkOBJReader 9.1 it keeps every face and "l" and "p"
+/// element, and leaves out the normals when some point would have none (see
+/// docs/mesh-io.md).
 /// Returns false, leaving @p mesh and @p attributes unspecified, unless the
 /// text (after a UTF-8 byte order mark, which is skipped) consists only of
 /// blank lines, comments, "v x y z", "vt u v", "vn x y z" lines, "f" lines
@@ -56,11 +69,19 @@ struct slOBJAttributes
 /// with positive indices naming existing values, "o", "s" and "g" lines,
 /// "mtllib" lines and "usemtl" lines naming a material (of at most 99
 /// bytes), with at least one face, finite decimal numbers, lines of at most
-/// 1000 bytes, vt (vn) lines only if faces use them, one material name at
-/// most (not "Normals") if faces have vt, and no "l" or "p" element beside
-/// materials. Parses on @p threads threads (at least one).
+/// 1000 bytes, vt (vn) lines only if faces use them, no material named
+/// "Normals" if faces have vt, and no "l" or "p" element beside materials.
+/// Parses on @p threads threads (at least one).
 SHADELABIO_EXPORT bool slParseOBJ(
   const char* text, std::size_t size, bool merge, slMeshArrays& mesh, slOBJAttributes& attributes, int threads);
+
+/// Writes texture coordinate array @p a (of attributes.tcoordsNames) of
+/// @p points points to @p out (2 floats per point, which may be
+/// @p tcoords): a point's texture coordinates @p tcoords where the array
+/// holds them, (-1, -1) elsewhere. @p attributes are those slParseOBJ gave
+/// with the mesh whose texture coordinates @p tcoords are.
+SHADELABIO_EXPORT void slOBJTCoordsArray(
+  const slOBJAttributes& attributes, std::size_t a, const float* tcoords, std::size_t points, float* out);
 
 /// Formats @p mesh as OBJ text: "v", then "vn" and "vt" lines if the mesh
 /// has them, each value with the fewest digits that read back to the same

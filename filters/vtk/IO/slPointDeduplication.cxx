@@ -1,6 +1,7 @@
 #include "slPointDeduplication.h"
 
 #include <cstring>
+#include <type_traits>
 
 namespace
 {
@@ -63,12 +64,15 @@ std::vector<std::int64_t> slUniqueRows(
   return kept;
 }
 
-void slDeduplicatePoints(slMeshArrays& mesh)
+void slDeduplicatePoints(slMeshArrays& mesh, std::vector<std::int32_t>& keys)
 {
+  static_assert(sizeof(float) == sizeof(std::int32_t), "a key takes a value's place");
   const std::size_t n = mesh.points.size() / 3;
-  const std::size_t width = 3 + (mesh.normals.empty() ? 0 : 3) + (mesh.tcoords.empty() ? 0 : 2);
+  const std::size_t width =
+    3 + (mesh.normals.empty() ? 0 : 3) + (mesh.tcoords.empty() ? 0 : 2) + (keys.empty() ? 0 : 1);
   // The row of a point: its position, then its point data in the order
-  // vtkOBJReader gives its arrays (texture coordinates, normals).
+  // vtkOBJReader gives its arrays (texture coordinates, normals), then its
+  // key.
   std::vector<float> rows(n * width);
   for (std::size_t i = 0; i < n; ++i)
   {
@@ -83,6 +87,11 @@ void slDeduplicatePoints(slMeshArrays& mesh)
     if (!mesh.normals.empty())
     {
       std::memcpy(row + at, &mesh.normals[3 * i], 3 * sizeof(float));
+      at += 3;
+    }
+    if (!keys.empty())
+    {
+      std::memcpy(row + at, &keys[i], sizeof(std::int32_t));
     }
   }
   std::vector<std::int64_t> newId;
@@ -92,21 +101,24 @@ void slDeduplicatePoints(slMeshArrays& mesh)
   {
     return;
   }
-  auto gather = [&](std::vector<float>& values, std::size_t components) {
+  auto gather = [&](auto& values, std::size_t components) {
     if (values.empty())
     {
       return;
     }
-    std::vector<float> out(kept.size() * components);
+    using Value = typename std::decay_t<decltype(values)>::value_type;
+    std::vector<Value> out(kept.size() * components);
     for (std::size_t k = 0; k < kept.size(); ++k)
     {
-      std::memcpy(&out[k * components], &values[static_cast<std::size_t>(kept[k]) * components], components * sizeof(float));
+      std::memcpy(
+        &out[k * components], &values[static_cast<std::size_t>(kept[k]) * components], components * sizeof(Value));
     }
     values.swap(out);
   };
   gather(mesh.points, 3);
   gather(mesh.normals, 3);
   gather(mesh.tcoords, 2);
+  gather(keys, 1);
   for (std::int64_t& id : mesh.connectivity)
   {
     id = newId[static_cast<std::size_t>(id)];

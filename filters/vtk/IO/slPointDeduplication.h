@@ -20,9 +20,10 @@
 std::vector<std::int64_t> slUniqueRows(
   const unsigned char* rows, std::size_t rowBytes, std::size_t count, std::vector<std::int64_t>& newId);
 
-/// Merges the points of @p mesh equal in position, normal and texture
-/// coordinate (bit for bit), keeping first occurrences in order, and renames
-/// the connectivity accordingly.
-void slDeduplicatePoints(slMeshArrays& mesh);
+/// Merges the points of @p mesh equal in position, normal, texture
+/// coordinate and @p keys (a value per point, or empty), bit for bit,
+/// keeping first occurrences in order, and renames the connectivity and
+/// thins @p keys accordingly.
+void slDeduplicatePoints(slMeshArrays& mesh, std::vector<std::int32_t>& keys);
 
 #endif
