@@ -317,6 +317,10 @@ const std::map<std::string, std::string>& objFiles()
                                      "vt -1 -1\nvt 0 0\nvt 0.5 0.5\nf 1/1 2/2 3/3\nusemtl a\nf 1/4 3/3 4/1\nf 1 3 4\n"
                                      "usemtl b\nf 2/2 3/5 4/6\nusemtl unused\nusemtl a\nf 1/6 2/2 4/4\nf 1/7 3/3 2/2\n"
                                      "usemtl c\n" },
+    // Vertex colours (r g b, r g b a) and weights (w), which vtkOBJReader
+    // ignores, as the parser does.
+    { "vertex colours and weights", "v 0 0 0 1 0 0\nv 1 0 0 0.5 0.25 0.125 1\nv 0 1 0 2\nv 1 1 0\t0 1e-3 1\t\n"
+                                    "f 1 2 3\nf 2 4 3\n" },
     { "materials with vt and vn by corner", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 0\nvn 0 0 1\n"
                                             "vn 0 0 -1\nf 1/1/1 2/2/1 3/1/1\nusemtl b\nf 1/3/1 3/3/1 4/3/2\nusemtl a\n"
                                             "f 1/1/2 2/2/1 4/2/2\n" },
@@ -389,7 +393,7 @@ TEST(MeshFormats, OBJOutsideTheCommonFormGoesToVTK)
     { "form feed in a material name", "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\fb\nf 1 2 3\n" },
     { "vertical tab after a group", "v 0 0 0\nv 1 0 0\nv 0 1 0\ng\va\nf 1 2 3\ng\nf 1 3 2\n" },
     { "negative index", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n" },
-    { "vertex colours", "v 0 0 0 1 0 0\nv 1 0 0 1 0 0\nv 0 1 0 1 0 0\nf 1 2 3\n" },
+    { "vertex colour not a number", "v 0 0 0 1 0 0\nv 1 0 0 1 0 red\nv 0 1 0 1 0 0\nf 1 2 3\n" },
     { "line naming a normal", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nl 1//1 2\n" },
     { "continued line", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 \\\n3\n" },
   };

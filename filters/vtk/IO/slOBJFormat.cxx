@@ -245,7 +245,14 @@ void parseLines(const char* begin, const char* end, Chunk& chunk)
     bool ok = true;
     if (length == 1 && keyword[0] == 'v')
     {
-      ok = c.number(x) && c.number(y) && c.number(z) && c.done();
+      // Numbers after x, y, z (a vertex colour r g b, a weight w) are
+      // read and dropped: vtkOBJReader reads the first three and ignores
+      // the rest of the line.
+      ok = c.number(x) && c.number(y) && c.number(z);
+      for (float ignored = 0; ok && !c.done();)
+      {
+        ok = c.number(ignored);
+      }
       chunk.v.insert(chunk.v.end(), { x, y, z });
     }
     else if (length == 2 && keyword[0] == 'v' && keyword[1] == 'n')

@@ -63,7 +63,9 @@ struct slOBJAttributes
 /// docs/mesh-io.md).
 /// Returns false, leaving @p mesh and @p attributes unspecified, unless the
 /// text (after a UTF-8 byte order mark, which is skipped) consists only of
-/// blank lines, comments, "v x y z", "vt u v", "vn x y z" lines, "f" lines
+/// blank lines, comments, "v x y z" lines (with any further numbers, such
+/// as a colour, which are dropped as vtkOBJReader drops them), "vt u v",
+/// "vn x y z" lines, "f" lines
 /// of 3 or more corners of one form each (v, v/vt, v//vn or v/vt/vn),
 /// "l" lines of 2 or more v or v/vt corners and "p" lines of v corners,
 /// with positive indices naming existing values, "o", "s" and "g" lines,
