@@ -1,8 +1,7 @@
 #include "BaseColourOptions.h"
 
+#include "slBaseColouredFilter.h"
 #include "slImageReader.h"
-#include "slRadianceFilter.h"
-#include "slRadianceReference.h"
 #include "slSceneTexture.h"
 #include "slUpdateOrThrow.h"
 
@@ -14,17 +13,6 @@ namespace shadelab
 {
 namespace app
 {
-
-namespace
-{
-/// Both filters take the base colour through the same setters.
-template <class Filter>
-void applyBaseColour(const BaseColour& base, Filter* filter, vtkPolyData* mesh)
-{
-  filter->SetDiffuseColorArrayName(base.arrayName().c_str());
-  filter->SetDiffuseTexture(base.textureFor(mesh));
-}
-} // namespace
 
 std::vector<OptionSpec> baseColourOptions()
 {
@@ -74,14 +62,10 @@ vtkImageData* BaseColour::textureFor(vtkPolyData* mesh) const
   return this->SceneTexture ? slSceneTextureFor(this->Texture, mesh) : this->Texture.Get();
 }
 
-void BaseColour::applyTo(slRadianceFilter* filter, vtkPolyData* mesh) const
+void BaseColour::applyTo(slBaseColouredFilter* filter, vtkPolyData* mesh) const
 {
-  applyBaseColour(*this, filter, mesh);
-}
-
-void BaseColour::applyTo(slRadianceReference* filter, vtkPolyData* mesh) const
-{
-  applyBaseColour(*this, filter, mesh);
+  filter->SetDiffuseColorArrayName(this->arrayName().c_str());
+  filter->SetDiffuseTexture(this->textureFor(mesh));
 }
 
 } // namespace app

@@ -16,8 +16,7 @@
 #include <string>
 #include <vector>
 
-class slRadianceFilter;
-class slRadianceReference;
+class slBaseColouredFilter;
 class slScene;
 class vtkImageData;
 class vtkPolyData;
@@ -48,8 +47,8 @@ public:
   /// The array name or texture onto @p filter for @p mesh: --diffuse-array
   /// and --diffuse-texture for every mesh, the scene's texture only for a mesh
   /// with texture coordinates (render draws one without them untextured).
-  void applyTo(slRadianceFilter* filter, vtkPolyData* mesh) const;
-  void applyTo(slRadianceReference* filter, vtkPolyData* mesh) const;
+  /// Both slRadianceFilter and slRadianceReference take it.
+  void applyTo(slBaseColouredFilter* filter, vtkPolyData* mesh) const;
 
   /// What applyTo() gives: the array name ("" for none) and the texture for @p mesh.
   const std::string& arrayName() const { return this->ArrayName; }

@@ -1,15 +1,12 @@
 #include "slRadianceFilter.h"
 #include "shadelab/slAtomicMinimum.h"
-#include "slCoreBoundary.h"
 
-#include "slDiffuseColors.h"
 #include "slFloat3View.h"
 #include "slLightingSetup.h"
 #include "slParallelFillArray.h"
 #include "slRadianceKernel.h"
 
 #include <vtkFloatArray.h>
-#include <vtkImageData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkObjectFactory.h>
@@ -23,7 +20,6 @@
 #include <vector>
 
 vtkStandardNewMacro(slRadianceFilter);
-vtkCxxSetObjectMacro(slRadianceFilter, DiffuseTexture, vtkImageData);
 
 namespace
 {
@@ -36,22 +32,7 @@ vtkSmartPointer<vtkFloatArray> rgbArray(const std::string& name, vtkIdType n)
 
 slRadianceFilter::slRadianceFilter() = default;
 
-slRadianceFilter::~slRadianceFilter()
-{
-  this->SetDiffuseColorArrayName(nullptr);
-  this->SetDiffuseTexture(nullptr);
-  this->SetDiffuseTextureFileName(nullptr);
-}
-
-vtkMTimeType slRadianceFilter::GetMTime()
-{
-  vtkMTimeType t = this->Superclass::GetMTime();
-  if (this->DiffuseTexture && this->DiffuseTexture->GetMTime() > t)
-  {
-    t = this->DiffuseTexture->GetMTime();
-  }
-  return t;
-}
+slRadianceFilter::~slRadianceFilter() = default;
 
 int slRadianceFilter::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -66,11 +47,7 @@ int slRadianceFilter::RequestData(vtkInformation*, vtkInformationVector** inputV
     return 0;
   }
   std::vector<glm::vec3> base; // base colour per point: multiplies k_a and k_d
-  const bool haveBase = slRunCore(this, output, [&] {
-    baseColourPerPoint(
-      input, this->DiffuseColorArrayName, this->DiffuseTextureFileName, this->DiffuseTexture, base);
-  });
-  if (!haveBase)
+  if (!this->GetBaseColours(input, output, base))
   {
     return 0;
   }
@@ -140,9 +117,4 @@ void slRadianceFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "PerLightArrays: " << this->PerLightArrays << "\n";
-  os << indent << "DiffuseColorArrayName: " << (this->DiffuseColorArrayName ? this->DiffuseColorArrayName : "(none)")
-     << "\n";
-  os << indent << "DiffuseTexture: " << this->DiffuseTexture << "\n";
-  os << indent << "DiffuseTextureFileName: "
-     << (this->DiffuseTextureFileName ? this->DiffuseTextureFileName : "(none)") << "\n";
 }

@@ -12,16 +12,11 @@
  * runs. Radiance = Ambient + Diffuse + Specular + Emission; emission is the
  * material's k_e, added once.
  *
- * The mesh can colour the material: an RGB(A) point array
- * (SetDiffuseColorArrayName()) or a texture sampled at the point texture
- * coordinates (SetDiffuseTexture()) is a base colour that multiplies k_a and
- * k_d at each point, exactly as scalar colours and the actor's texture do in
- * slLightingPass (with k_a = k_d = 1 it stands in for k_d). Colours are used
- * as VTK and the pass use them: 8-bit values v mean v / 255 (no sRGB
- * decoding), float values as they are. The array wins over the texture
- * file (SetDiffuseTextureFileName()), which wins over the texture;
- * slRadianceReference takes the same three the same way (one shared
- * function, so the two filters cannot disagree on which colour applies).
+ * The mesh can colour the material (slBaseColouredFilter): a point array
+ * or a texture gives a base colour that multiplies k_a and k_d at each point,
+ * exactly as scalar colours and the actor's texture do in slLightingPass.
+ * slRadianceReference takes it through the same base class, so the two
+ * filters cannot disagree on which colour applies.
  *
  * Input arrays are passed through. The loop over points runs in parallel with
  * vtkSMPTools.
@@ -30,21 +25,17 @@
  * interreflection: it is the local lighting equation, light by light.
  * Per-light arrays hold ambient + diffuse + specular of that light.
  *
- * @sa slLitFilter slCosineField slRadianceReference slScene
+ * @sa slBaseColouredFilter slLitFilter slCosineField slRadianceReference slScene
  */
 
 #include "ShadeLabLightingModule.h"
-#include "slLitFilter.h"
+#include "slBaseColouredFilter.h"
 
-#include <string>
-
-class vtkImageData;
-
-class SHADELABLIGHTING_EXPORT slRadianceFilter : public slLitFilter
+class SHADELABLIGHTING_EXPORT slRadianceFilter : public slBaseColouredFilter
 {
 public:
   static slRadianceFilter* New();
-  vtkTypeMacro(slRadianceFilter, slLitFilter);
+  vtkTypeMacro(slRadianceFilter, slBaseColouredFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -53,30 +44,6 @@ public:
   vtkGetMacro(PerLightArrays, bool);
   vtkBooleanMacro(PerLightArrays, bool);
   ///@}
-
-  ///@{
-  /// Name of an RGB(A) point array that stands in for k_d; "" (default): none.
-  vtkSetStringMacro(DiffuseColorArrayName);
-  vtkGetStringMacro(DiffuseColorArrayName);
-  ///@}
-
-  ///@{
-  /// A texture (e.g. from slImageReader) that stands in for k_d, looked up at
-  /// the point texture coordinates. Null (default): none.
-  virtual void SetDiffuseTexture(vtkImageData* image);
-  vtkGetObjectMacro(DiffuseTexture, vtkImageData);
-  ///@}
-
-  ///@{
-  /// An image file (any format slImageReader reads) that stands in for k_d
-  /// like SetDiffuseTexture(), read at each update; it takes precedence over
-  /// SetDiffuseTexture(). "" or null (default): none. For ParaView, whose
-  /// properties are plain values.
-  vtkSetStringMacro(DiffuseTextureFileName);
-  vtkGetStringMacro(DiffuseTextureFileName);
-  ///@}
-
-  vtkMTimeType GetMTime() override;
 
 protected:
   slRadianceFilter();
@@ -89,9 +56,6 @@ private:
   void operator=(const slRadianceFilter&) = delete;
 
   bool PerLightArrays = false;
-  char* DiffuseColorArrayName = nullptr;
-  vtkImageData* DiffuseTexture = nullptr;
-  char* DiffuseTextureFileName = nullptr;
 };
 
 #endif

@@ -3,7 +3,6 @@
 #include "shadelab/LightingTables.h"
 #include "shadelab/RadianceEstimator.h"
 #include "slCoreBoundary.h"
-#include "slDiffuseColors.h"
 #include "slEnvironmentLoader.h"
 #include "slFiniteParameters.h"
 #include "slFloat3View.h"
@@ -28,7 +27,6 @@
 
 vtkStandardNewMacro(slRadianceReference);
 vtkCxxSetObjectMacro(slRadianceReference, EnvironmentMap, vtkImageData);
-vtkCxxSetObjectMacro(slRadianceReference, DiffuseTexture, vtkImageData);
 
 namespace
 {
@@ -69,9 +67,6 @@ slRadianceReference::~slRadianceReference()
 {
   this->SetEnvironmentFileName(nullptr);
   this->SetEnvironmentMap(nullptr);
-  this->SetDiffuseColorArrayName(nullptr);
-  this->SetDiffuseTexture(nullptr);
-  this->SetDiffuseTextureFileName(nullptr);
 }
 
 vtkMTimeType slRadianceReference::GetMTime()
@@ -80,10 +75,6 @@ vtkMTimeType slRadianceReference::GetMTime()
   if (this->EnvironmentMap && this->EnvironmentMap->GetMTime() > t)
   {
     t = this->EnvironmentMap->GetMTime();
-  }
-  if (this->DiffuseTexture && this->DiffuseTexture->GetMTime() > t)
-  {
-    t = this->DiffuseTexture->GetMTime();
   }
   return t;
 }
@@ -146,11 +137,7 @@ int slRadianceReference::RequestData(
   reference.seed = static_cast<std::uint64_t>(static_cast<std::uint32_t>(this->Seed));
 
   std::vector<glm::vec3> base; // base colour per point: multiplies k_a and k_d
-  const bool haveBase = slRunCore(this, output, [&] {
-    baseColourPerPoint(
-      input, this->DiffuseColorArrayName, this->DiffuseTextureFileName, this->DiffuseTexture, base);
-  });
-  if (!haveBase)
+  if (!this->GetBaseColours(input, output, base))
   {
     return 0;
   }
@@ -254,11 +241,6 @@ void slRadianceReference::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EnvironmentFileName: " << (this->EnvironmentFileName ? this->EnvironmentFileName : "(none)") << "\n";
   os << indent << "EnvironmentMap: " << this->EnvironmentMap << "\n";
   os << indent << "EnvironmentScale: " << this->EnvironmentScale << "\n";
-  os << indent << "DiffuseColorArrayName: " << (this->DiffuseColorArrayName ? this->DiffuseColorArrayName : "(none)")
-     << "\n";
-  os << indent << "DiffuseTexture: " << this->DiffuseTexture << "\n";
-  os << indent << "DiffuseTextureFileName: "
-     << (this->DiffuseTextureFileName ? this->DiffuseTextureFileName : "(none)") << "\n";
   os << indent << "UseSceneLights: " << this->UseSceneLights << "\n";
   os << indent << "LightRadius: " << this->LightRadius << "\n";
   os << indent << "DirectionalLightAngle: " << this->DirectionalLightAngle << "\n";

@@ -20,16 +20,12 @@
  * its own random stream derived from Seed and its id, so output does not
  * depend on threads. Progress through UpdateProgress().
  *
- * The mesh can colour the material as in slRadianceFilter, with the same
- * three inputs in the same order of precedence and with the same errors (the
- * two filters share the code): an RGB(A) point array
- * (SetDiffuseColorArrayName()), else an image file read at each update
- * (SetDiffuseTextureFileName(), for ParaView), else an image
- * (SetDiffuseTexture(), e.g. a scene's material.diffuseTexture through
- * slReadSceneTexture()). A texture is sampled at the point texture
- * coordinates. The colour is a base colour that multiplies k_a and k_d at
- * each point: the reference's BRDF and the discrete radiance both use the
- * coloured material.
+ * The mesh can colour the material as in slRadianceFilter: both take the
+ * base colour through slBaseColouredFilter (a point array, else an image
+ * file, else an image such as a scene's material.diffuseTexture from
+ * slReadSceneTexture()), so they pick the same input and fail with the same
+ * errors. The colour multiplies k_a and k_d at each point: the reference's
+ * BRDF and the discrete radiance both use the coloured material.
  *
  * Output point arrays (input arrays pass through): "Radiance" (the
  * reference), "RadianceStdError" (standard error of the mean, per channel),
@@ -43,19 +39,19 @@
  * part); the discrete radiance includes the scene's ambient terms, which then
  * show up in RadianceError. A light's single colour is its diffuse colour.
  *
- * @sa slRadianceFilter slLitFilter slImageReader slSceneTexture.h
+ * @sa slBaseColouredFilter slRadianceFilter slLitFilter slImageReader slSceneTexture.h
  */
 
 #include "ShadeLabLightingModule.h"
-#include "slLitFilter.h"
+#include "slBaseColouredFilter.h"
 
 class vtkImageData;
 
-class SHADELABLIGHTING_EXPORT slRadianceReference : public slLitFilter
+class SHADELABLIGHTING_EXPORT slRadianceReference : public slBaseColouredFilter
 {
 public:
   static slRadianceReference* New();
-  vtkTypeMacro(slRadianceReference, slLitFilter);
+  vtkTypeMacro(slRadianceReference, slBaseColouredFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum Strategies
@@ -110,33 +106,6 @@ public:
   ///@}
 
   ///@{
-  /// Name of an RGB(A) point array that multiplies k_a and k_d, as
-  /// slRadianceFilter::SetDiffuseColorArrayName(); it takes precedence over
-  /// both textures. "" or null (default): none.
-  vtkSetStringMacro(DiffuseColorArrayName);
-  vtkGetStringMacro(DiffuseColorArrayName);
-  ///@}
-
-  ///@{
-  /// A texture (e.g. from slImageReader or slReadSceneTexture()) that
-  /// multiplies k_a and k_d, looked up at the point texture coordinates as
-  /// slRadianceFilter::SetDiffuseTexture() does; the input must have them.
-  /// Null (default): none.
-  virtual void SetDiffuseTexture(vtkImageData* image);
-  vtkGetObjectMacro(DiffuseTexture, vtkImageData);
-  ///@}
-
-  ///@{
-  /// An image file (any format slImageReader reads) used like
-  /// SetDiffuseTexture(), read at each update, as
-  /// slRadianceFilter::SetDiffuseTextureFileName(); it takes precedence over
-  /// SetDiffuseTexture(). "" or null (default): none. For ParaView, whose
-  /// properties are plain values.
-  vtkSetStringMacro(DiffuseTextureFileName);
-  vtkGetStringMacro(DiffuseTextureFileName);
-  ///@}
-
-  ///@{
   /// Whether the scene's lights light the reference (default on).
   vtkSetMacro(UseSceneLights, bool);
   vtkGetMacro(UseSceneLights, bool);
@@ -174,9 +143,6 @@ private:
   char* EnvironmentFileName = nullptr;
   vtkImageData* EnvironmentMap = nullptr;
   double EnvironmentScale = 1.0;
-  char* DiffuseColorArrayName = nullptr;
-  vtkImageData* DiffuseTexture = nullptr;
-  char* DiffuseTextureFileName = nullptr;
   bool UseSceneLights = true;
   double LightRadius = 0.0;
   double DirectionalLightAngle = 0.5;
