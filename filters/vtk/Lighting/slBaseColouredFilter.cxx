@@ -2,6 +2,7 @@
 #include "slCoreBoundary.h"
 
 #include "slDiffuseColors.h"
+#include "slShadingInputs.h"
 
 #include <vtkImageData.h>
 #include <vtkObjectFactory.h>
@@ -34,6 +35,23 @@ bool slBaseColouredFilter::GetBaseColours(vtkPolyData* input, vtkPolyData* outpu
     shadelab::baseColourPerPoint(
       input, this->DiffuseColorArrayName, this->DiffuseTextureFileName, this->DiffuseTexture, base);
   });
+}
+
+std::unique_ptr<const shadelab::ShadingInputs> slBaseColouredFilter::PrepareShading(
+  vtkPolyData* input, vtkPolyData* output, const shadelab::LightingSetup& setup)
+{
+  std::vector<glm::vec3> base;
+  if (!this->GetBaseColours(input, output, base))
+  {
+    return nullptr;
+  }
+  vtkDataArray* tangents = nullptr;
+  if (!this->GetTangents(input, output, setup, tangents))
+  {
+    return nullptr;
+  }
+  output->ShallowCopy(input);
+  return std::make_unique<const shadelab::ShadingInputs>(input, tangents, std::move(base), setup);
 }
 
 void slBaseColouredFilter::PrintSelf(ostream& os, vtkIndent indent)

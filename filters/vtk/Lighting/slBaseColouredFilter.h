@@ -23,7 +23,10 @@
  * missing or wrongly sized array, an unreadable file or a texture on a mesh
  * without texture coordinates is vtkErrorMacro of one line, an empty output
  * and a failed request. The filters read only the array or texture they are
- * given, never the scene's.
+ * given, never the scene's. PrepareShading() gives the colours together
+ * with the rest of the radiance kernel's input (points, normals, tangents,
+ * lighting), so that slRadianceFilter and the discrete radiance of
+ * slRadianceReference read the same input.
  *
  * The texture's modification time counts as the filter's (GetMTime()).
  *
@@ -36,7 +39,13 @@
 #ifndef __VTK_WRAP__
 #include <glm/fwd.hpp> // glm::vec3, the colours' type
 
+#include <memory>
 #include <vector>
+
+namespace shadelab
+{
+struct ShadingInputs; // slShadingInputs.h, private to the module
+}
 #endif
 
 class vtkImageData;
@@ -84,6 +93,14 @@ protected:
   /// reports the one-line reason with vtkErrorMacro, empties @p output and
   /// returns false.
   bool GetBaseColours(vtkPolyData* input, vtkPolyData* output, std::vector<glm::vec3>& base);
+
+  /// What the radiance kernel reads for @p input under @p setup (after
+  /// PrepareLighting()): GetBaseColours(), then GetTangents(), then @p output
+  /// made a shallow copy of @p input, then the kernel's input over the
+  /// points, normals, tangents and base colours. Null once a step has
+  /// failed (it has reported and emptied @p output).
+  std::unique_ptr<const shadelab::ShadingInputs> PrepareShading(
+    vtkPolyData* input, vtkPolyData* output, const shadelab::LightingSetup& setup);
 #endif
 
 private:

@@ -1,10 +1,9 @@
 #include "slRadianceFilter.h"
 #include "shadelab/slAtomicMinimum.h"
 
-#include "slFloat3View.h"
 #include "slLightingSetup.h"
-#include "slParallelFillArray.h"
 #include "slRadianceKernel.h"
+#include "slShadingInputs.h"
 
 #include <vtkFloatArray.h>
 #include <vtkInformation.h>
@@ -16,19 +15,9 @@
 #include <vtkSmartPointer.h>
 
 #include <atomic>
-#include <memory>
 #include <vector>
 
 vtkStandardNewMacro(slRadianceFilter);
-
-namespace
-{
-/// An RGB output array; the kernel writes every value once, in parallel.
-vtkSmartPointer<vtkFloatArray> rgbArray(const std::string& name, vtkIdType n)
-{
-  return shadelab::newParallelFillArray(name, 3, n);
-}
-} // namespace
 
 slRadianceFilter::slRadianceFilter() = default;
 
@@ -46,22 +35,12 @@ int slRadianceFilter::RequestData(vtkInformation*, vtkInformationVector** inputV
   {
     return 0;
   }
-  std::vector<glm::vec3> base; // base colour per point: multiplies k_a and k_d
-  if (!this->GetBaseColours(input, output, base))
+  const auto shading = this->PrepareShading(input, output, setup);
+  if (!shading)
   {
     return 0;
   }
-
-  vtkDataArray* tangentArray = nullptr;
-  if (!this->GetTangents(input, output, setup, tangentArray))
-  {
-    return 0;
-  }
-  output->ShallowCopy(input);
   const vtkIdType n = input->GetNumberOfPoints();
-  const Float3View points(input->GetPoints()->GetData());
-  const Float3View normals(input->GetPointData()->GetNormals());
-  const auto tangents = tangentArray ? std::make_unique<Float3View>(tangentArray) : nullptr;
   auto ambient = rgbArray("Ambient", n), diffuseOut = rgbArray("Diffuse", n), specular = rgbArray("Specular", n),
        emission = rgbArray("Emission", n), radiance = rgbArray("Radiance", n);
   std::vector<vtkSmartPointer<vtkFloatArray>> perLight;
@@ -79,18 +58,9 @@ int slRadianceFilter::RequestData(vtkInformation*, vtkInformationVector** inputV
   out.specular = specular->GetPointer(0);
   out.emission = emission->GetPointer(0);
   out.radiance = radiance->GetPointer(0);
-  RadianceKernelInput in;
-  in.points = points.data();
-  in.normals = normals.data();
-  in.tangents = tangents ? tangents->data() : nullptr;
-  in.baseColour = base.empty() ? nullptr : &base[0].x;
-  in.lights = setup.lights;
-  in.material = setup.material;
-  in.model = static_cast<ShadingModel>(setup.model);
-  in.eye = setup.eye;
   std::atomic<vtkIdType> firstWithoutNormal(n);
   vtkSMPTools::For(0, n, 1024, [&](vtkIdType begin, vtkIdType end) {
-    const vtkIdType first = shadeRange(in, out, begin, end);
+    const vtkIdType first = shadeRange(shading->kernel, out, begin, end);
     if (first < end) // else none in this range
     {
       slAtomicMinimum(firstWithoutNormal, first);

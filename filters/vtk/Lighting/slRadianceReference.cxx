@@ -5,9 +5,9 @@
 #include "slCoreBoundary.h"
 #include "slEnvironmentLoader.h"
 #include "slFiniteParameters.h"
-#include "slFloat3View.h"
 #include "slLightingSetup.h"
 #include "slRadianceKernel.h"
+#include "slShadingInputs.h"
 
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
@@ -22,7 +22,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
 #include <vector>
 
 vtkStandardNewMacro(slRadianceReference);
@@ -30,15 +29,6 @@ vtkCxxSetObjectMacro(slRadianceReference, EnvironmentMap, vtkImageData);
 
 namespace
 {
-vtkSmartPointer<vtkFloatArray> rgbArray(const char* name, vtkIdType n)
-{
-  auto a = vtkSmartPointer<vtkFloatArray>::New();
-  a->SetName(name);
-  a->SetNumberOfComponents(3);
-  slSetNumberOfTuplesOrThrow(a, n);
-  return a;
-}
-
 void addSummary(vtkFieldData* field, const char* name, const glm::dvec3& v)
 {
   vtkNew<vtkDoubleArray> a;
@@ -136,37 +126,19 @@ int slRadianceReference::RequestData(
   reference.samples = this->SamplesPerPoint;
   reference.seed = static_cast<std::uint64_t>(static_cast<std::uint32_t>(this->Seed));
 
-  std::vector<glm::vec3> base; // base colour per point: multiplies k_a and k_d
-  if (!this->GetBaseColours(input, output, base))
+  const auto shading = this->PrepareShading(input, output, setup);
+  if (!shading)
   {
     return 0;
   }
-
-  vtkDataArray* tangentArray = nullptr;
-  if (!this->GetTangents(input, output, setup, tangentArray))
-  {
-    return 0;
-  }
-  output->ShallowCopy(input);
   const vtkIdType n = input->GetNumberOfPoints();
-  const Float3View points(input->GetPoints()->GetData());
-  const Float3View normals(input->GetPointData()->GetNormals());
-  const auto tangents = tangentArray ? std::make_unique<Float3View>(tangentArray) : nullptr;
   auto radiance = rgbArray("Radiance", n), stdError = rgbArray("RadianceStdError", n);
   auto discrete = rgbArray("DiscreteRadiance", n), error = rgbArray("RadianceError", n);
   auto ambient = rgbArray("Ambient", n), diffuse = rgbArray("Diffuse", n), specular = rgbArray("Specular", n),
        emission = rgbArray("Emission", n);
 
   // The discrete lighting equation, as slRadianceFilter evaluates it.
-  RadianceKernelInput in;
-  in.points = points.data();
-  in.normals = normals.data();
-  in.tangents = tangents ? tangents->data() : nullptr;
-  in.baseColour = base.empty() ? nullptr : &base[0].x;
-  in.lights = setup.lights;
-  in.material = setup.material;
-  in.model = static_cast<ShadingModel>(setup.model);
-  in.eye = setup.eye;
+  const RadianceKernelInput& in = shading->kernel;
   RadianceKernelOutput out;
   out.ambient = ambient->GetPointer(0);
   out.diffuse = diffuse->GetPointer(0);
@@ -191,8 +163,8 @@ int slRadianceReference::RequestData(
           atPoint.material = withBaseColour(reference.material, in.baseColour + 3 * i);
         }
         const RadianceEstimate e =
-          estimateRadiance(atPoint, points[i], normals[i], tangents ? (*tangents)[i] : glm::vec3(0.0f), setup.eye,
-            static_cast<std::uint64_t>(i));
+          estimateRadiance(atPoint, shading->points[i], shading->normals[i],
+            shading->tangents ? (*shading->tangents)[i] : glm::vec3(0.0f), setup.eye, static_cast<std::uint64_t>(i));
         for (int c = 0; c < 3; ++c)
         {
           r[3 * i + c] = std::isfinite(e.mean[c]) ? e.mean[c] : 0.0f;
