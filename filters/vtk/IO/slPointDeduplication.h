@@ -23,7 +23,9 @@ std::vector<std::int64_t> slUniqueRows(
 /// Merges the points of @p mesh equal in position, normal, texture
 /// coordinate and @p keys (a value per point, or empty), bit for bit,
 /// keeping first occurrences in order, and renames the connectivity and
-/// thins @p keys accordingly.
+/// thins @p keys accordingly. @p mesh must have no colours, which this
+/// neither compares nor thins: only OBJ meshes are merged, and the OBJ
+/// parser gives none.
 void slDeduplicatePoints(slMeshArrays& mesh, std::vector<std::int32_t>& keys);
 
 #endif
