@@ -599,6 +599,11 @@ const std::map<std::string, std::vector<PLYColumn>>& plyLayouts()
     { "RGBA of uint8, float32", { PLYColumn{ "float32", "x", plyX.values }, plyY, plyZ,
                                   PLYColumn{ "uint8", "red", red.values }, green,
                                   PLYColumn{ "uint8", "blue", blue.values }, PLYColumn{ "uint8", "alpha", alpha.values } } },
+    { "double coordinates, normals and texture coordinates",
+      { PLYColumn{ "double", "x", { "0.1", "1", "16777217", "0", "0.5" } }, PLYColumn{ "float64", "y", plyY.values },
+        PLYColumn{ "double", "z", { "0", "-0", "1e-40", "1e-3", "0.70710678118654752440" } },
+        PLYColumn{ "double", "nx", nx.values }, ny, PLYColumn{ "float64", "nz", nz.values },
+        PLYColumn{ "double", "u", u.values }, PLYColumn{ "double", "v", { "1", "0.25", "3.4028234e38", "3e-8", "7" } } } },
     { "everything, mixed up", { nx, alpha, plyX, skipped("float", "quality", true), plyY, plyZ, ny, nz, green, red,
                                 blue, u, v, skipped("double", "confidence", true), skipped("float", "intensity", true) } },
     { "ignored properties of every type",
@@ -804,7 +809,7 @@ TEST(MeshFormats, PLYOutsideTheCommonFormGoesToVTK)
     { "colours in part", "property uchar blue", "property uchar quality2", "" },
     { "colours from diffuse_red ...", "uchar red\nproperty uchar green\nproperty uchar blue",
       "uchar diffuse_red\nproperty uchar diffuse_green\nproperty uchar diffuse_blue", "" },
-    { "double coordinates", "property float x", "property double x", "" },
+    { "integer coordinates", "property float x", "property int x", "line 18 (element \"vertex\" row 5 of 5): \"0.5\"" },
     { "a list among the vertex properties", "property float quality", "property list uchar float quality",
       "line 14 (element \"vertex\" row 1 of 5): list count \"0.5\"" },
     { "a face property besides the indices", "vertex_indices\n", "vertex_indices\nproperty uchar red\n",
@@ -832,6 +837,26 @@ TEST(MeshFormats, PLYOutsideTheCommonFormGoesToVTK)
       EXPECT_EQ(problem, "") << change.what;
       expectSamePLYMesh(reader->GetOutput(), readVTK<vtkPLYReader>(folder.path("changed.ply")), change.what);
     }
+  }
+}
+
+TEST(MeshFormats, PLYBinaryDoublesWithoutAFloatGoToVTK)
+{
+  // A double beyond the largest float, or NaN, has no float C++ converts it
+  // to: the parser declines the file, and the point check reports it after
+  // vtkPLYReader, which stores infinity or NaN.
+  const TestFolder folder;
+  for (const char* value : { "1e39", "-1e300", "inf", "nan" })
+  {
+    const std::string bytes =
+      plyFile({ PLYColumn{ "double", "x", { "0", "1", "1", "0", value } }, plyY, plyZ }, "binary_little_endian");
+    slMeshArrays arrays;
+    EXPECT_FALSE(slParsePLY(bytes.data(), bytes.size(), arrays, 1)) << value;
+    folder.write("wide.ply", bytes);
+    vtkNew<slMeshReader> reader;
+    reader->SetFileName(folder.path("wide.ply").c_str());
+    const std::string problem = updateError(reader);
+    EXPECT_NE(problem.find("point 4 has a NaN or infinite"), std::string::npos) << value << ": " << problem;
   }
 }
 

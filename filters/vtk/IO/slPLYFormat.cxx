@@ -3,6 +3,7 @@
 #include "slTextParsing.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -113,8 +114,11 @@ struct Layout
   int colourComponents() const { return !this->has(Red) ? 0 : this->has(Alpha) ? 4 : 3; }
 
   /// Adds a vertex property; false if its role is taken or its type is not
-  /// the one slParsePLY reads for the role (float for coordinates, uchar
-  /// for colours, as vtkPLYReader stores them; it converts other types).
+  /// one slParsePLY reads for the role: float or double for coordinates,
+  /// normals and texture coordinates (vtkPLYReader stores each as a float,
+  /// converting a double to the nearest one), uchar for colours. VTK
+  /// converts the other types too, integers by rules of their own, which
+  /// the parser leaves to it.
   bool add(const std::string& type, const std::string& name)
   {
     bool isFloat = false;
@@ -124,7 +128,7 @@ struct Layout
     {
       return false;
     }
-    if (role < Red ? (type != "float" && type != "float32") : role < Skipped && type != "uchar" && type != "uint8")
+    if (role < Red ? !isFloat : role < Skipped && type != "uchar" && type != "uint8")
     {
       return false;
     }
@@ -256,20 +260,45 @@ bool header(const char* bytes, std::size_t size, Layout& layout)
   return element == 2 && faceList && layout.complete();
 }
 
-/// The vertices of a binary file, rows of layout.rowBytes bytes from @p rows.
-void binaryVertices(const char* rows, const Layout& layout, slMeshArrays& mesh)
+/// The float vtkPLYReader stores for a binary float or double @p at
+/// (@p bytes 4 or 8): the float itself, or the double converted to the
+/// nearest float. False for a double beyond the largest float or NaN, whose
+/// conversion C++ leaves undefined: the parser leaves such a file to VTK.
+bool binaryFloat(const char* at, int bytes, float& value)
+{
+  if (bytes == 4)
+  {
+    std::memcpy(&value, at, 4);
+    return true;
+  }
+  double wide;
+  std::memcpy(&wide, at, 8);
+  if (!(std::fabs(wide) <= static_cast<double>(std::numeric_limits<float>::max())))
+  {
+    return false;
+  }
+  value = static_cast<float>(wide);
+  return true;
+}
+
+/// The vertices of a binary file, rows of layout.rowBytes bytes from
+/// @p rows; false if a double has no float (binaryFloat).
+bool binaryVertices(const char* rows, const Layout& layout, slMeshArrays& mesh)
 {
   const std::size_t n = static_cast<std::size_t>(layout.vertices);
   const std::size_t rowBytes = layout.rowBytes;
   std::size_t offset[Roles] = {};
+  int bytes[Roles] = {};
   for (int r = 0; r < Roles; ++r)
   {
     offset[r] = layout.has(r) ? layout.offset(r) : 0;
+    bytes[r] = layout.has(r) ? layout.properties[static_cast<std::size_t>(layout.at[r])].size : 0;
   }
+  bool ok = true;
   const auto copy = [&](float* to, const char* row, int first, int components) {
     for (int k = 0; k < components; ++k)
     {
-      std::memcpy(to + k, row + offset[first + k], 4);
+      ok = binaryFloat(row + offset[first + k], bytes[first + k], to[k]) && ok;
     }
   };
   const std::size_t colours = static_cast<std::size_t>(mesh.colourComponents);
@@ -290,6 +319,7 @@ void binaryVertices(const char* rows, const Layout& layout, slMeshArrays& mesh)
       mesh.colours[colours * i + k] = static_cast<unsigned char>(row[offset[Red + k]]);
     }
   }
+  return ok;
 }
 
 /// The faces of a binary file from @p at: false unless each is a count byte
@@ -554,8 +584,8 @@ bool slParsePLY(const char* bytes, std::size_t size, slMeshArrays& mesh, int thr
     return false;
   }
   const std::size_t n = sizeVertexArrays(layout, mesh);
-  binaryVertices(bytes + layout.bodyAt, layout, mesh);
-  return binaryFaces(bytes, size, layout.bodyAt + n * layout.rowBytes, layout, mesh);
+  return binaryVertices(bytes + layout.bodyAt, layout, mesh) &&
+    binaryFaces(bytes, size, layout.bodyAt + n * layout.rowBytes, layout, mesh);
 }
 
 bool slFormatPLY(const slMeshView& mesh, std::string& out)

@@ -26,8 +26,11 @@
 ///   and hold no other control byte but tabs;
 /// - its header, "comment" and "obj_info" lines aside, holds "format ascii
 ///   1.0" or "format binary_little_endian 1.0", then an element "vertex"
-///   whose properties, in any order, are float (float32) x, y, z,
-///   optionally nx, ny, nz and u, v, optionally uchar (uint8) red, green,
+///   whose properties, in any order, are float or double (float32,
+///   float64) x, y, z, optionally nx, ny, nz and u, v (each stored as a
+///   float, a double converted to the nearest one, as vtkPLYReader stores
+///   it; a double beyond the largest float, or NaN, declines a binary
+///   file), optionally uchar (uint8) red, green,
 ///   blue with or without alpha (each set whole or not at all), each name
 ///   once, and any others of any scalar type (not lists, not
 ///   diffuse_red, diffuse_green, diffuse_blue, texture_u or texture_v,
