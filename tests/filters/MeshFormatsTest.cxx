@@ -537,12 +537,21 @@ std::string binaryValue(const std::string& type, const char* text)
 }
 
 /// A pyramid of five vertices with the vertex properties @p columns, as
-/// PLY of @p format ("ascii" or "binary_little_endian") with lines ending
-/// in @p eol, its faces' indices declared by @p faceProperty.
+/// PLY of @p format ("ascii", "binary_little_endian" or "binary_big_endian";
+/// the test host is little-endian) with lines ending in @p eol, its faces'
+/// indices declared by @p faceProperty.
 std::string plyFile(const std::vector<PLYColumn>& columns, const std::string& format, const std::string& eol = "\n",
   const std::string& faceProperty = "property list uchar int vertex_indices")
 {
   const bool ascii = format == "ascii";
+  // Values in the file's byte order.
+  const auto ordered = [&](std::string bytes) {
+    if (format == "binary_big_endian")
+    {
+      std::reverse(bytes.begin(), bytes.end());
+    }
+    return bytes;
+  };
   std::string out = "ply" + eol + "format " + format + " 1.0" + eol + "comment written by hand" + eol +
     "element vertex 5" + eol;
   for (const PLYColumn& c : columns)
@@ -554,7 +563,8 @@ std::string plyFile(const std::vector<PLYColumn>& columns, const std::string& fo
   {
     for (size_t k = 0; k < columns.size(); ++k)
     {
-      out += ascii ? std::string(k ? " " : "") + columns[k].values[i] : binaryValue(columns[k].type, columns[k].values[i]);
+      out += ascii ? std::string(k ? " " : "") + columns[k].values[i]
+                   : ordered(binaryValue(columns[k].type, columns[k].values[i]));
     }
     out += ascii ? eol : "";
   }
@@ -564,7 +574,7 @@ std::string plyFile(const std::vector<PLYColumn>& columns, const std::string& fo
     out += ascii ? std::to_string(face.size()) : std::string(1, static_cast<char>(face.size()));
     for (std::int32_t index : face)
     {
-      out += ascii ? " " + std::to_string(index) : std::string(reinterpret_cast<const char*>(&index), 4);
+      out += ascii ? " " + std::to_string(index) : ordered(std::string(reinterpret_cast<const char*>(&index), 4));
     }
     out += ascii ? eol : "";
   }
@@ -624,6 +634,7 @@ TEST(MeshFormats, PLYLayoutsBinaryAndASCIIAsVTKReadsThem)
   for (const auto& layout : plyLayouts())
   {
     expectTakenAsVTKReadsIt(folder, "b.ply", plyFile(layout.second, "binary_little_endian"));
+    expectTakenAsVTKReadsIt(folder, "big.ply", plyFile(layout.second, "binary_big_endian"));
     expectTakenAsVTKReadsIt(folder, "a.ply", plyFile(layout.second, "ascii"));
     expectTakenAsVTKReadsIt(folder, "crlf.ply", plyFile(layout.second, "ascii", "\r\n"));
     expectTakenAsVTKReadsIt(folder, "index.ply",
@@ -846,17 +857,21 @@ TEST(MeshFormats, PLYBinaryDoublesWithoutAFloatGoToVTK)
   // to: the parser declines the file, and the point check reports it after
   // vtkPLYReader, which stores infinity or NaN.
   const TestFolder folder;
-  for (const char* value : { "1e39", "-1e300", "inf", "nan" })
+  for (const char* format : { "binary_little_endian", "binary_big_endian" })
   {
-    const std::string bytes =
-      plyFile({ PLYColumn{ "double", "x", { "0", "1", "1", "0", value } }, plyY, plyZ }, "binary_little_endian");
-    slMeshArrays arrays;
-    EXPECT_FALSE(slParsePLY(bytes.data(), bytes.size(), arrays, 1)) << value;
-    folder.write("wide.ply", bytes);
-    vtkNew<slMeshReader> reader;
-    reader->SetFileName(folder.path("wide.ply").c_str());
-    const std::string problem = updateError(reader);
-    EXPECT_NE(problem.find("point 4 has a NaN or infinite"), std::string::npos) << value << ": " << problem;
+    for (const char* value : { "1e39", "-1e300", "inf", "nan" })
+    {
+      const std::string bytes =
+        plyFile({ PLYColumn{ "double", "x", { "0", "1", "1", "0", value } }, plyY, plyZ }, format);
+      slMeshArrays arrays;
+      EXPECT_FALSE(slParsePLY(bytes.data(), bytes.size(), arrays, 1)) << format << " " << value;
+      folder.write("wide.ply", bytes);
+      vtkNew<slMeshReader> reader;
+      reader->SetFileName(folder.path("wide.ply").c_str());
+      const std::string problem = updateError(reader);
+      EXPECT_NE(problem.find("point 4 has a NaN or infinite"), std::string::npos)
+        << format << " " << value << ": " << problem;
+    }
   }
 }
 

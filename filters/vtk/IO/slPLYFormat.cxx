@@ -102,6 +102,7 @@ struct VertexProperty
 struct Layout
 {
   bool ascii = false;
+  bool bigEndian = false; // of a binary file
   std::size_t bodyAt = 0;
   std::uint64_t vertices = 0, faces = 0;
   std::vector<VertexProperty> properties; // the vertex's, in file order
@@ -237,11 +238,12 @@ bool header(const char* bytes, std::size_t size, Layout& layout)
     {
       return false;
     }
-    if (keyword == "format" && !format && element == 0 && (a == "ascii" || a == "binary_little_endian") && b == "1.0" &&
+    if (keyword == "format" && !format && element == 0 && (a == "ascii" || a == "binary_little_endian" || a == "binary_big_endian") && b == "1.0" &&
       c.empty())
     {
       format = true;
       layout.ascii = a == "ascii";
+      layout.bigEndian = a == "binary_big_endian";
     }
     else if (keyword == "element" && c.empty() && format && element == 0 && a == "vertex" && count(b, layout.vertices))
     {
@@ -260,19 +262,37 @@ bool header(const char* bytes, std::size_t size, Layout& layout)
   return element == 2 && faceList && layout.complete();
 }
 
+/// The unsigned integer of 4 or 8 bytes at @p at, its bytes reversed if
+/// @p Swap (a file of the other byte order than the host's).
+template <bool Swap, typename Unsigned>
+Unsigned binaryUnsigned(const char* at)
+{
+  Unsigned value;
+  std::memcpy(&value, at, sizeof(value));
+  if (Swap)
+  {
+    value = sizeof(value) == 4 ? static_cast<Unsigned>(__builtin_bswap32(static_cast<std::uint32_t>(value)))
+                               : static_cast<Unsigned>(__builtin_bswap64(static_cast<std::uint64_t>(value)));
+  }
+  return value;
+}
+
 /// The float vtkPLYReader stores for a binary float or double @p at
 /// (@p bytes 4 or 8): the float itself, or the double converted to the
 /// nearest float. False for a double beyond the largest float or NaN, whose
 /// conversion C++ leaves undefined: the parser leaves such a file to VTK.
+template <bool Swap>
 bool binaryFloat(const char* at, int bytes, float& value)
 {
   if (bytes == 4)
   {
-    std::memcpy(&value, at, 4);
+    const std::uint32_t bits = binaryUnsigned<Swap, std::uint32_t>(at);
+    std::memcpy(&value, &bits, 4);
     return true;
   }
+  const std::uint64_t bits = binaryUnsigned<Swap, std::uint64_t>(at);
   double wide;
-  std::memcpy(&wide, at, 8);
+  std::memcpy(&wide, &bits, 8);
   if (!(std::fabs(wide) <= static_cast<double>(std::numeric_limits<float>::max())))
   {
     return false;
@@ -283,6 +303,7 @@ bool binaryFloat(const char* at, int bytes, float& value)
 
 /// The vertices of a binary file, rows of layout.rowBytes bytes from
 /// @p rows; false if a double has no float (binaryFloat).
+template <bool Swap>
 bool binaryVertices(const char* rows, const Layout& layout, slMeshArrays& mesh)
 {
   const std::size_t n = static_cast<std::size_t>(layout.vertices);
@@ -298,7 +319,7 @@ bool binaryVertices(const char* rows, const Layout& layout, slMeshArrays& mesh)
   const auto copy = [&](float* to, const char* row, int first, int components) {
     for (int k = 0; k < components; ++k)
     {
-      ok = binaryFloat(row + offset[first + k], bytes[first + k], to[k]) && ok;
+      ok = binaryFloat<Swap>(row + offset[first + k], bytes[first + k], to[k]) && ok;
     }
   };
   const std::size_t colours = static_cast<std::size_t>(mesh.colourComponents);
@@ -325,6 +346,7 @@ bool binaryVertices(const char* rows, const Layout& layout, slMeshArrays& mesh)
 /// The faces of a binary file from @p at: false unless each is a count byte
 /// of 3 or more and as many 4-byte indices of existing vertices, and the
 /// last ends the file.
+template <bool Swap>
 bool binaryFaces(const char* bytes, std::size_t size, std::size_t at, const Layout& layout, slMeshArrays& mesh)
 {
   // At least 13 bytes each.
@@ -349,8 +371,7 @@ bool binaryFaces(const char* bytes, std::size_t size, std::size_t at, const Layo
     }
     for (unsigned k = 0; k < count; ++k, at += 4)
     {
-      std::uint32_t index;
-      std::memcpy(&index, bytes + at, 4);
+      const std::uint32_t index = binaryUnsigned<Swap, std::uint32_t>(bytes + at);
       // Signed or unsigned alike: an index of 2^31 or more is out of range
       // either way.
       if (index >= layout.vertices)
@@ -569,7 +590,7 @@ void put(std::string& out, const void* value, std::size_t n)
 bool slParsePLY(const char* bytes, std::size_t size, slMeshArrays& mesh, int threads)
 {
   Layout layout;
-  if (!header(bytes, size, layout) || (!layout.ascii && !hostIsLittle()))
+  if (!header(bytes, size, layout))
   {
     return false;
   }
@@ -584,8 +605,14 @@ bool slParsePLY(const char* bytes, std::size_t size, slMeshArrays& mesh, int thr
     return false;
   }
   const std::size_t n = sizeVertexArrays(layout, mesh);
-  return binaryVertices(bytes + layout.bodyAt, layout, mesh) &&
-    binaryFaces(bytes, size, layout.bodyAt + n * layout.rowBytes, layout, mesh);
+  const std::size_t facesAt = layout.bodyAt + n * layout.rowBytes;
+  if (layout.bigEndian == hostIsLittle())
+  {
+    return binaryVertices<true>(bytes + layout.bodyAt, layout, mesh) &&
+      binaryFaces<true>(bytes, size, facesAt, layout, mesh);
+  }
+  return binaryVertices<false>(bytes + layout.bodyAt, layout, mesh) &&
+    binaryFaces<false>(bytes, size, facesAt, layout, mesh);
 }
 
 bool slFormatPLY(const slMeshView& mesh, std::string& out)

@@ -21,11 +21,11 @@
 /// 9.1 reads them: points, point normals, texture coordinates, colours (3
 /// or 4 per point, which VTK's reader names "RGB" or "RGBA") and polygons.
 /// Returns false, leaving @p mesh unspecified, unless
-/// - the file is ASCII or binary little-endian PLY (binary on a
-///   little-endian host only) whose header lines end in "\n" or "\r\n"
-///   and hold no other control byte but tabs;
+/// - the file is ASCII or binary PLY of either byte order, whose header
+///   lines end in "\n" or "\r\n" and hold no other control byte but tabs;
 /// - its header, "comment" and "obj_info" lines aside, holds "format ascii
-///   1.0" or "format binary_little_endian 1.0", then an element "vertex"
+///   1.0", "format binary_little_endian 1.0" or "format binary_big_endian
+///   1.0", then an element "vertex"
 ///   whose properties, in any order, are float or double (float32,
 ///   float64) x, y, z, optionally nx, ny, nz and u, v (each stored as a
 ///   float, a double converted to the nearest one, as vtkPLYReader stores
