@@ -2,6 +2,7 @@
 // the header announces, with list counts that fit their line (ASCII) or the
 // file (binary) and face indices that name existing vertices. VTK's PLY code
 // calls exit() at an early end of file and reads past a line's values.
+#include "slByteOrder.h"
 #include "slMeshAttributeCheck.h"
 #include "slMeshFileCheck.h"
 
@@ -174,14 +175,6 @@ private:
   std::vector<unsigned char> Buffer;
   size_t Position = 0;
 };
-
-bool hostIsLittle()
-{
-  const std::uint16_t one = 1;
-  unsigned char first;
-  std::memcpy(&first, &one, 1);
-  return first == 1;
-}
 
 /// An integer value of @p size bytes read in host order.
 long long integer(const unsigned char* bytes, int size, bool isSigned)
@@ -665,5 +658,5 @@ std::string slPLYProblem(const std::string& fileName)
   {
     return asciiBody(in, lineNumber, elements, vertices);
   }
-  return binaryBody(in, (format == Format::Little) != hostIsLittle(), elements, vertices);
+  return binaryBody(in, (format == Format::Little) != slHostIsLittleEndian(), elements, vertices);
 }

@@ -1,5 +1,6 @@
 #include "slPLYFormat.h"
 
+#include "slByteOrder.h"
 #include "slTextParsing.h"
 
 #include <algorithm>
@@ -13,14 +14,6 @@
 
 namespace
 {
-bool hostIsLittle()
-{
-  const std::uint16_t one = 1;
-  unsigned char first;
-  std::memcpy(&first, &one, 1);
-  return first == 1;
-}
-
 /// What vtkPLYReader 9.1 makes of a vertex property: a component of the
 /// points, normals, texture coordinates or colours, or nothing (Skipped).
 enum Role
@@ -238,8 +231,8 @@ bool header(const char* bytes, std::size_t size, Layout& layout)
     {
       return false;
     }
-    if (keyword == "format" && !format && element == 0 && (a == "ascii" || a == "binary_little_endian" || a == "binary_big_endian") && b == "1.0" &&
-      c.empty())
+    const bool knownFormat = a == "ascii" || a == "binary_little_endian" || a == "binary_big_endian";
+    if (keyword == "format" && !format && element == 0 && knownFormat && b == "1.0" && c.empty())
     {
       format = true;
       layout.ascii = a == "ascii";
@@ -262,21 +255,6 @@ bool header(const char* bytes, std::size_t size, Layout& layout)
   return element == 2 && faceList && layout.complete();
 }
 
-/// The unsigned integer of 4 or 8 bytes at @p at, its bytes reversed if
-/// @p Swap (a file of the other byte order than the host's).
-template <bool Swap, typename Unsigned>
-Unsigned binaryUnsigned(const char* at)
-{
-  Unsigned value;
-  std::memcpy(&value, at, sizeof(value));
-  if (Swap)
-  {
-    value = sizeof(value) == 4 ? static_cast<Unsigned>(__builtin_bswap32(static_cast<std::uint32_t>(value)))
-                               : static_cast<Unsigned>(__builtin_bswap64(static_cast<std::uint64_t>(value)));
-  }
-  return value;
-}
-
 /// The float vtkPLYReader stores for a binary float or double @p at
 /// (@p bytes 4 or 8): the float itself, or the double converted to the
 /// nearest float. False for a double beyond the largest float or NaN, whose
@@ -286,11 +264,11 @@ bool binaryFloat(const char* at, int bytes, float& value)
 {
   if (bytes == 4)
   {
-    const std::uint32_t bits = binaryUnsigned<Swap, std::uint32_t>(at);
+    const std::uint32_t bits = slLoadUnsigned<Swap, std::uint32_t>(at);
     std::memcpy(&value, &bits, 4);
     return true;
   }
-  const std::uint64_t bits = binaryUnsigned<Swap, std::uint64_t>(at);
+  const std::uint64_t bits = slLoadUnsigned<Swap, std::uint64_t>(at);
   double wide;
   std::memcpy(&wide, &bits, 8);
   if (!(std::fabs(wide) <= static_cast<double>(std::numeric_limits<float>::max())))
@@ -371,7 +349,7 @@ bool binaryFaces(const char* bytes, std::size_t size, std::size_t at, const Layo
     }
     for (unsigned k = 0; k < count; ++k, at += 4)
     {
-      const std::uint32_t index = binaryUnsigned<Swap, std::uint32_t>(bytes + at);
+      const std::uint32_t index = slLoadUnsigned<Swap, std::uint32_t>(bytes + at);
       // Signed or unsigned alike: an index of 2^31 or more is out of range
       // either way.
       if (index >= layout.vertices)
@@ -606,7 +584,7 @@ bool slParsePLY(const char* bytes, std::size_t size, slMeshArrays& mesh, int thr
   }
   const std::size_t n = sizeVertexArrays(layout, mesh);
   const std::size_t facesAt = layout.bodyAt + n * layout.rowBytes;
-  if (layout.bigEndian == hostIsLittle())
+  if (layout.bigEndian == slHostIsLittleEndian())
   {
     return binaryVertices<true>(bytes + layout.bodyAt, layout, mesh) &&
       binaryFaces<true>(bytes, size, facesAt, layout, mesh);
@@ -617,7 +595,7 @@ bool slParsePLY(const char* bytes, std::size_t size, slMeshArrays& mesh, int thr
 
 bool slFormatPLY(const slMeshView& mesh, std::string& out)
 {
-  if (!hostIsLittle())
+  if (!slHostIsLittleEndian())
   {
     return false;
   }
