@@ -1,8 +1,6 @@
 #include "slBumpMapFilter.h"
 
-#include "slCoreBoundary.h"
 #include "slDetailInputs.h"
-#include "slFiniteParameters.h"
 
 #include "shadelab/LightingGLSLDouble.h"
 
@@ -18,24 +16,15 @@ vtkStandardNewMacro(slBumpMapFilter);
 
 slBumpMapFilter::slBumpMapFilter() = default;
 
-slBumpMapFilter::~slBumpMapFilter()
-{
-  this->SetFileName(nullptr);
-}
+slBumpMapFilter::~slBumpMapFilter() = default;
 
 int slBumpMapFilter::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  output->Initialize();
   slSurfaceFrames frames;
   slnormals::Texture height;
-  const std::string badParameter = slNonFiniteParameter({ { "Scale", this->Scale } });
-  if (!badParameter.empty())
-  {
-    return this->Fail(badParameter, output);
-  }
-  if (!slRunCore(this, output, [&] { slPrepareDetail(input, this->FileName, true, 1, frames, height); }))
+  if (!this->PrepareDetail(input, output, "Scale", this->Scale, true, 1, frames, height))
   {
     return 0;
   }
@@ -57,7 +46,6 @@ int slBumpMapFilter::RequestData(vtkInformation*, vtkInformationVector** inputVe
 void slBumpMapFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
   os << indent << "Scale: " << this->Scale << "\n";
   os << indent << "InvertHeight: " << this->InvertHeight << "\n";
 }

@@ -27,20 +27,14 @@
 
 #include "ShadeLabNormalsModule.h"
 
-#include "slPolyDataFilter.h"
+#include "slSurfaceDetailFilter.h"
 
-class SHADELABNORMALS_EXPORT slBumpMapFilter : public slPolyDataFilter
+class SHADELABNORMALS_EXPORT slBumpMapFilter : public slSurfaceDetailFilter
 {
 public:
   static slBumpMapFilter* New();
-  vtkTypeMacro(slBumpMapFilter, slPolyDataFilter);
+  vtkTypeMacro(slBumpMapFilter, slSurfaceDetailFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /// The height image.
-  vtkSetStringMacro(FileName);
-  vtkGetStringMacro(FileName);
-  ///@}
 
   ///@{
   /// Height scale in UV units, −100..100. 0.05 by default.
@@ -65,7 +59,6 @@ private:
   slBumpMapFilter(const slBumpMapFilter&) = delete;
   void operator=(const slBumpMapFilter&) = delete;
 
-  char* FileName = nullptr;
   double Scale = 0.05;
   bool InvertHeight = false;
 };

@@ -2,7 +2,6 @@
 
 #include "slCoreBoundary.h"
 #include "slDetailInputs.h"
-#include "slFiniteParameters.h"
 #include "slPolyDataNormals.h"
 #include "slUpdateOrThrow.h"
 
@@ -19,24 +18,15 @@ vtkStandardNewMacro(slDisplacementFilter);
 
 slDisplacementFilter::slDisplacementFilter() = default;
 
-slDisplacementFilter::~slDisplacementFilter()
-{
-  this->SetFileName(nullptr);
-}
+slDisplacementFilter::~slDisplacementFilter() = default;
 
 int slDisplacementFilter::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  output->Initialize();
   slSurfaceFrames frames;
   slnormals::Texture height;
-  const std::string badParameter = slNonFiniteParameter({ { "Scale", this->Scale } });
-  if (!badParameter.empty())
-  {
-    return this->Fail(badParameter, output);
-  }
-  if (!slRunCore(this, output, [&] { slPrepareDetail(input, this->FileName, false, 1, frames, height); }))
+  if (!this->PrepareDetail(input, output, "Scale", this->Scale, false, 1, frames, height))
   {
     return 0;
   }
@@ -78,7 +68,6 @@ int slDisplacementFilter::RequestData(vtkInformation*, vtkInformationVector** in
 void slDisplacementFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
   os << indent << "Scale: " << this->Scale << "\n";
   os << indent << "InvertHeight: " << this->InvertHeight << "\n";
 }

@@ -22,20 +22,14 @@
 
 #include "ShadeLabNormalsModule.h"
 
-#include "slPolyDataFilter.h"
+#include "slSurfaceDetailFilter.h"
 
-class SHADELABNORMALS_EXPORT slDisplacementFilter : public slPolyDataFilter
+class SHADELABNORMALS_EXPORT slDisplacementFilter : public slSurfaceDetailFilter
 {
 public:
   static slDisplacementFilter* New();
-  vtkTypeMacro(slDisplacementFilter, slPolyDataFilter);
+  vtkTypeMacro(slDisplacementFilter, slSurfaceDetailFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /// The height image.
-  vtkSetStringMacro(FileName);
-  vtkGetStringMacro(FileName);
-  ///@}
 
   ///@{
   /// Displacement of height 1, in mesh units, −1e6..1e6. 0.05 by default.
@@ -60,7 +54,6 @@ private:
   slDisplacementFilter(const slDisplacementFilter&) = delete;
   void operator=(const slDisplacementFilter&) = delete;
 
-  char* FileName = nullptr;
   double Scale = 0.05;
   bool InvertHeight = false;
 };

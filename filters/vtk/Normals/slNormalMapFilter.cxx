@@ -1,8 +1,6 @@
 #include "slNormalMapFilter.h"
 
-#include "slCoreBoundary.h"
 #include "slDetailInputs.h"
-#include "slFiniteParameters.h"
 
 #include "shadelab/LightingGLSLDouble.h"
 
@@ -18,24 +16,15 @@ vtkStandardNewMacro(slNormalMapFilter);
 
 slNormalMapFilter::slNormalMapFilter() = default;
 
-slNormalMapFilter::~slNormalMapFilter()
-{
-  this->SetFileName(nullptr);
-}
+slNormalMapFilter::~slNormalMapFilter() = default;
 
 int slNormalMapFilter::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  output->Initialize();
   slSurfaceFrames frames;
   slnormals::Texture map;
-  const std::string badParameter = slNonFiniteParameter({ { "Strength", this->Strength } });
-  if (!badParameter.empty())
-  {
-    return this->Fail(badParameter, output);
-  }
-  if (!slRunCore(this, output, [&] { slPrepareDetail(input, this->FileName, true, 3, frames, map); }))
+  if (!this->PrepareDetail(input, output, "Strength", this->Strength, true, 3, frames, map))
   {
     return 0;
   }
@@ -61,7 +50,6 @@ int slNormalMapFilter::RequestData(vtkInformation*, vtkInformationVector** input
 void slNormalMapFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
   os << indent << "Strength: " << this->Strength << "\n";
   os << indent << "GreenDown: " << this->GreenDown << "\n";
 }

@@ -26,20 +26,14 @@
 
 #include "ShadeLabNormalsModule.h"
 
-#include "slPolyDataFilter.h"
+#include "slSurfaceDetailFilter.h"
 
-class SHADELABNORMALS_EXPORT slNormalMapFilter : public slPolyDataFilter
+class SHADELABNORMALS_EXPORT slNormalMapFilter : public slSurfaceDetailFilter
 {
 public:
   static slNormalMapFilter* New();
-  vtkTypeMacro(slNormalMapFilter, slPolyDataFilter);
+  vtkTypeMacro(slNormalMapFilter, slSurfaceDetailFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /// The normal-map image.
-  vtkSetStringMacro(FileName);
-  vtkGetStringMacro(FileName);
-  ///@}
 
   ///@{
   /// Scale of the map's x and y, 0..10. 1 by default.
@@ -64,7 +58,6 @@ private:
   slNormalMapFilter(const slNormalMapFilter&) = delete;
   void operator=(const slNormalMapFilter&) = delete;
 
-  char* FileName = nullptr;
   double Strength = 1.0;
   bool GreenDown = false;
 };
