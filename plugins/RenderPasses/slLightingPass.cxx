@@ -1,26 +1,24 @@
 #include "slLightingPass.h"
 
+#include "slLightingPassInternals.h"
+#include "slLightingPassQueries.h"
 #include "slLightingPassShaders.h"
+#include "slLightingPassUniforms.h"
 #include "slModelCheck.h"
 #include "slScene.h"
 
-#include "shadelab/BrdfAssignment.h"
 #include "shadelab/BrdfFile.h"
-#include "shadelab/Error.h"
 #include "shadelab/LightingGLSL.h"
 #include "shadelab/Scene.h"
 
 #include <vtkActor.h>
-#include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
+#include <vtkDataObject.h>
 #include <vtkLight.h>
 #include <vtkLightCollection.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
-#include <vtkPointData.h>
-#include <vtkPolyData.h>
-#include <vtkDataArray.h>
 #include <vtkOpenGLPolyDataMapper.h>
 #include <vtkProp.h>
 #include <vtkProperty.h>
@@ -30,364 +28,40 @@
 #include <vtkRenderer.h>
 #include <vtkShader.h>
 #include <vtkShaderProgram.h>
-#include <vtkWeakPointer.h>
 
 #include <algorithm>
-#include <iterator>
-#include <map>
+#include <utility>
 #include <vector>
 
+// The pass's lights, shaders and uniforms. Its .brdf file API is in
+// slLightingPassBrdf.cxx, the actors' interpolation in
+// slLightingPassInterpolation.cxx (slLightingPassInternals.h: the state they share).
 vtkStandardNewMacro(slLightingPass);
 
 namespace shaders = slLightingPassShaders;
+using namespace slLightingPassQueries;
+using namespace slLightingPassUniforms;
+using slLightingPassInterpolation::DrawnRenderer;
 
 namespace
 {
 const char* const kLightTag = "//SL::Light::Impl";
 const char* const kTextureTag = "//SL::TCoord::Impl";
 const char* const kDeclarationTag = "//SL::Light::Dec";
-
-bool contains(const std::string& text, const char* what)
-{
-  return text.find(what) != std::string::npos;
-}
-
-glm::vec3 toVec3(const double v[3])
-{
-  return glm::vec3(static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]));
-}
-
-/// The uniform names of light i's fields, in the order of
-/// SHADELAB_LIGHT_FIELDS ("slLights[2].position", ...), made once.
-struct LightUniformNames
-{
-  std::vector<std::string> fields;
-  explicit LightUniformNames(int i)
-  {
-    const std::string base = "slLights[" + std::to_string(i) + "].";
-#define SHADELAB_NAME(type, field, ...) fields.push_back(base + #field);
-    SHADELAB_LIGHT_FIELDS(SHADELAB_NAME)
-#undef SHADELAB_NAME
-  }
-};
-
-/// The uniform names of a material's fields, in the order of
-/// SHADELAB_MATERIAL_PARAMETERS ("slMat.ambient", ...), made once.
-struct MaterialUniformNames
-{
-  std::vector<std::string> fields;
-  explicit MaterialUniformNames(const std::string& uniform)
-  {
-#define SHADELAB_NAME(type, field, ...) fields.push_back(uniform + "." #field);
-    SHADELAB_MATERIAL_PARAMETERS(SHADELAB_NAME)
-#undef SHADELAB_NAME
-  }
-};
-
-void setUniform(vtkShaderProgram* program, const std::string& name, const glm::vec3& value)
-{
-  program->SetUniform3f(name.c_str(), &value[0]);
-}
-void setUniform(vtkShaderProgram* program, const std::string& name, float value)
-{
-  program->SetUniformf(name.c_str(), value);
-}
-/// The light's type is compiled into the shaders (slLightTypeOf), not uploaded.
-void setUniform(vtkShaderProgram*, const std::string&, int) {}
-
-/// Every field of @p light as the uniforms named @p names.
-void setLightUniforms(vtkShaderProgram* program, const LightUniformNames& names, const shadelab::glsl::slLight& light)
-{
-  size_t f = 0;
-#define SHADELAB_UPLOAD(type, field, ...) setUniform(program, names.fields[f++], light.field);
-  SHADELAB_LIGHT_FIELDS(SHADELAB_UPLOAD)
-#undef SHADELAB_UPLOAD
-}
-
-/// Every field of @p m as the uniforms named @p names.
-void setMaterialUniforms(
-  vtkShaderProgram* program, const MaterialUniformNames& names, const shadelab::glsl::slMaterial& m)
-{
-  size_t f = 0;
-#define SHADELAB_UPLOAD(type, field, ...) setUniform(program, names.fields[f++], m.field);
-  SHADELAB_MATERIAL_PARAMETERS(SHADELAB_UPLOAD)
-#undef SHADELAB_UPLOAD
-}
-
-/// The material of an actor's vtkProperty, as VTK's own lighting reads it;
-/// the numbers VTK has no place for (roughness, ...) at their defaults.
-shadelab::glsl::slMaterial materialOf(vtkProperty* p)
-{
-  shadelab::glsl::slMaterial m = shadelab::toEvaluationMaterial(shadelab::SceneMaterial());
-  m.ambient = static_cast<float>(p->GetAmbient()) * toVec3(p->GetAmbientColor());
-  m.diffuse = static_cast<float>(p->GetDiffuse()) * toVec3(p->GetDiffuseColor());
-  m.specular = static_cast<float>(p->GetSpecular()) * toVec3(p->GetSpecularColor());
-  m.emission = glm::vec3(0.0f);
-  m.shininess = static_cast<float>(p->GetSpecularPower());
-  return m;
-}
-
-/// True if the mapper draws a point array "Tangents" with 4 components (xyz,
-/// handedness). VTK's TANGENTS attribute only takes 3 components, so the
-/// array is found by name.
-bool hasTangentsWithHandedness(vtkAbstractMapper* mapper)
-{
-  auto* polyMapper = vtkOpenGLPolyDataMapper::SafeDownCast(mapper);
-  vtkPolyData* input = polyMapper ? polyMapper->GetInput() : nullptr;
-  vtkDataArray* tangents = input ? input->GetPointData()->GetArray("Tangents") : nullptr;
-  return tangents && tangents->GetNumberOfComponents() == 4;
-}
-
-/// Opaque actors whose property has lighting on. An actor whose property has
-/// lighting off (colour-mapped fields, widget handles, glyphs in their own
-/// colour) is drawn unlit by VTK, as without the pass, and a translucent one
-/// with VTK's lighting.
-bool isLitOpaqueActor(vtkActor* actor)
-{
-  return actor && actor->GetMapper() && !actor->HasTranslucentPolygonalGeometry() &&
-    actor->GetProperty()->GetLighting();
-}
-
-/// The polydata the pass lights: isLitOpaqueActor's, drawn by an OpenGL polydata mapper.
-bool isOurs(vtkAbstractMapper* mapper, vtkProp* prop)
-{
-  return vtkOpenGLPolyDataMapper::SafeDownCast(mapper) && isLitOpaqueActor(vtkActor::SafeDownCast(prop));
-}
-
-/// Whether VTK's fragment shader @p fragmentShader colours the surface with
-/// point or cell scalars (a colour attribute, a colour texture map or a cell
-/// colour buffer): then VTK's ambientColor and diffuseColor are the scalar
-/// colour times the property's intensities, in place of its colours.
-bool drawsScalarColours(const std::string& fragmentShader)
-{
-  return contains(fragmentShader, "vertexColorVSOutput") || contains(fragmentShader, "colortexture") ||
-    contains(fragmentShader, "textureC");
-}
-
-/// Whether VTK's fragment shader @p fragmentShader samples the actor's
-/// texture (vtkActor::SetTexture) at the mesh's texture coordinates.
-bool hasActorTexture(const std::string& fragmentShader)
-{
-  return contains(fragmentShader, "actortexture") && contains(fragmentShader, "tcoordVCVSOutput");
-}
-
-/// Whether @p prop's texture colours only faces seen from the front
-/// (vtkProperty::ShowTexturesOnBackfaceOff()). A change to it modifies the
-/// property, which rebuilds the actor's shaders, so it can be compiled in.
-bool textureFrontOnly(vtkProp* prop)
-{
-  vtkActor* actor = vtkActor::SafeDownCast(prop);
-  return actor && !actor->GetProperty()->GetShowTexturesOnBackface();
-}
-
-/// What the pass needs to know of a built shader program, read from its
-/// fragment shader's source once (the source is fixed once compiled, and
-/// copying it for every actor of every frame would cost in scenes of many
-/// actors).
-struct ProgramFacts
-{
-  bool scalarColours = false; ///< drawsScalarColours()
-  bool backface = false;      ///< a Variant::backface program (slMatBack)
-};
-
-/// Values the pass keeps per object it does not own (mappers, shader
-/// programs, properties, renderers), by address. An entry holds a weak
-/// pointer to its object: once the object is freed, the entry is not found,
-/// even by a new object at the same address. Entries of freed objects are
-/// dropped when an insertion finds the map past twice its size after the
-/// last sweep: a long-running program that makes and frees many actors
-/// keeps it within about twice the number of live objects, at an amortised
-/// constant cost per insertion.
-template <typename Object, typename Value>
-class WeakKeyedMap
-{
-public:
-  /// The value of @p object, or null if it has none (or is not the object
-  /// the entry at its address was made for).
-  const Value* Find(Object* object) const
-  {
-    const auto entry = this->Entries.find(object);
-    return entry != this->Entries.end() && entry->second.first == object ? &entry->second.second : nullptr;
-  }
-
-  /// Gives @p object the value @p value (in place of a freed object's).
-  const Value& Insert(Object* object, const Value& value)
-  {
-    if (this->Entries.size() > 2 * this->SizeAfterSweep)
-    {
-      for (auto entry = this->Entries.begin(); entry != this->Entries.end();)
-      {
-        entry = entry->second.first ? std::next(entry) : this->Entries.erase(entry);
-      }
-      this->SizeAfterSweep = this->Entries.size();
-    }
-    auto& entry = this->Entries[object];
-    entry = { object, value };
-    return entry.second;
-  }
-
-  /// Calls @p f(object, value) for every entry whose object is alive.
-  template <typename Function>
-  void ForEachLive(Function f) const
-  {
-    for (const auto& entry : this->Entries)
-    {
-      if (Object* object = entry.second.first.GetPointer())
-      {
-        f(object, entry.second.second);
-      }
-    }
-  }
-
-  void Clear()
-  {
-    this->Entries.clear();
-    this->SizeAfterSweep = 0;
-  }
-
-  size_t Size() const { return this->Entries.size(); }
-
-private:
-  std::map<Object*, std::pair<vtkWeakPointer<Object>, Value>> Entries;
-  size_t SizeAfterSweep = 0;
-};
-
-/// A property's interpolation as the pass found it (the user's) and as the
-/// pass set it (MatchInterpolation), to give the user's back.
-struct InterpolationChange
-{
-  int found = VTK_PHONG;
-  int set = VTK_PHONG;
-};
-
-/// The interpolation a property of interpolation @p given needs for the
-/// pass's @p frequency: VTK's mapper supplies face normals under flat
-/// interpolation and interpolated point normals under any other, so flat
-/// for FLAT, and for GOURAUD and PHONG the user's own unless it is flat
-/// (then Phong).
-int interpolationFor(int frequency, int given)
-{
-  if (frequency == slLightingPass::FLAT)
-  {
-    return VTK_FLAT;
-  }
-  return given == VTK_FLAT ? VTK_PHONG : given;
-}
-
-/// The properties whose interpolation the pass changed.
-using InterpolationChanges = WeakKeyedMap<vtkProperty, InterpolationChange>;
-
-/// Gives each property of @p changes still alive the interpolation the pass
-/// found, where it still has the one the pass set: a value the user gave
-/// since stays.
-void restoreInterpolations(const InterpolationChanges& changes)
-{
-  changes.ForEachLive([](vtkProperty* property, const InterpolationChange& change) {
-    if (property->GetInterpolation() == change.set)
-    {
-      property->SetInterpolation(change.found);
-    }
-  });
-}
-
-/// restoreInterpolations(@p changes) once @p window has drawn its frame.
-/// During a frame a mapper stamps its shaders after it has read the
-/// property: a change made then (by a pass freed in a mapper, which holds
-/// the last passes it drew with until it draws again) would never rebuild
-/// them, and the picture would keep the old interpolation.
-void restoreAfterFrame(vtkRenderWindow* window, InterpolationChanges changes)
-{
-  struct Pending
-  {
-    InterpolationChanges changes;
-    vtkCommand* command;
-  };
-  vtkNew<vtkCallbackCommand> command;
-  command->SetClientData(new Pending{ std::move(changes), command.GetPointer() });
-  command->SetClientDataDeleteCallback([](void* pending) { delete static_cast<Pending*>(pending); });
-  command->SetCallback([](vtkObject* caller, unsigned long, void* data, void*) {
-    auto* pending = static_cast<Pending*>(data);
-    restoreInterpolations(pending->changes);
-    caller->RemoveObserver(pending->command); // VTK keeps the command alive until it returns
-  });
-  window->AddObserver(vtkCommand::EndEvent, command);
-}
-
-/// A renderer the pass has drawn, watched for a change of its pass.
-struct DrawnRenderer
-{
-  /// The renderer's pass when the pass last drew it (the pass itself, or a
-  /// pass around it), by address: only a change of it counts.
-  const vtkRenderPass* top = nullptr;
-  unsigned long observer = 0; ///< the tag of the pass's ModifiedEvent observer
-  bool givenBack = false;     ///< the interpolations were given back on a change of its pass
-  /// Whether a change of the renderer's pass is taken for the pass's
-  /// removal. Off once the pass draws the renderer again, after one, under
-  /// another pass: a program that changes the passes around this one every
-  /// frame must not have the interpolations given back and set again (and
-  /// VTK's shaders rebuilt) every frame.
-  bool changeRemoves = true;
-};
 } // namespace
 
-struct slLightingPass::Internals
+const ProgramFacts& slLightingPass::Internals::FactsOf(vtkShaderProgram* program)
 {
-  std::vector<shadelab::glsl::slLight> LightsVC; // view coordinates
-  std::vector<LightUniformNames> Names;
-  const MaterialUniformNames FrontMaterialNames{ "slMat" };
-  const MaterialUniformNames BackMaterialNames{ "slMatBack" };
-  bool Parallel = false;
-  bool ReportedTooManyLights = false; // until the lights fit again
-  bool WarnedNoNormals = false;
-  bool WarnedNoTangents = false;
-  bool WarnedShadows = false;
-  // Mappers given the slTangentMC attribute (a new mapper at a freed one's
-  // address is not taken for it).
-  WeakKeyedMap<vtkMapper, bool> TangentMappers;
-  // What each shader program the pass sets is (ProgramFacts).
-  WeakKeyedMap<vtkShaderProgram, ProgramFacts> Programs;
-  // The properties whose interpolation the pass changed, with the user's
-  // (weak: the pass keeps no property alive).
-  InterpolationChanges Interpolations;
-  // The renderers the pass has drawn (WatchRenderer).
-  WeakKeyedMap<vtkRenderer, DrawnRenderer> Renderers;
-
-  const ProgramFacts& FactsOf(vtkShaderProgram* program)
+  if (const ProgramFacts* known = this->Programs.Find(program))
   {
-    if (const ProgramFacts* known = this->Programs.Find(program))
-    {
-      return *known;
-    }
-    const std::string& source = program->GetFragmentShader()->GetSource();
-    ProgramFacts facts;
-    facts.scalarColours = drawsScalarColours(source);
-    facts.backface = shaders::hasBackfaceMaterial(source);
-    return this->Programs.Insert(program, facts);
+    return *known;
   }
-
-  // The .brdf file, if any: its GLSL as the shaders hold it, its parameter
-  // values (uniforms), and what compiling its GLSL on its own gave.
-  std::unique_ptr<shadelab::BrdfFile> Brdf;
-  std::string BrdfSource;
-  std::vector<glm::vec3> BrdfValues;
-  // What compiling each (file, text) gave: "" or its one-line error. VTK
-  // keeps built variants, so a text already checked is not seen again.
-  std::map<std::string, std::string> BrdfChecked;
-
-  std::string BrdfKey() const { return this->Brdf->path + '\n' + this->BrdfSource; }
-  std::string BrdfError;
-  int ShaderBuilds = 0;
-
-  std::vector<int> LightTypes() const
-  {
-    std::vector<int> types;
-    for (const shadelab::glsl::slLight& l : this->LightsVC)
-    {
-      types.push_back(l.type);
-    }
-    return types;
-  }
-};
+  const std::string& source = program->GetFragmentShader()->GetSource();
+  ProgramFacts facts;
+  facts.scalarColours = drawsScalarColours(source);
+  facts.backface = shaders::hasBackfaceMaterial(source);
+  return this->Programs.Insert(program, facts);
+}
 
 slLightingPass::slLightingPass()
   : DelegatePass(vtkSmartPointer<vtkRenderStepsPass>::New())
@@ -413,7 +87,7 @@ slLightingPass::~slLightingPass()
   });
   if (drawing)
   {
-    restoreAfterFrame(drawing, std::move(this->Internal->Interpolations));
+    slLightingPassInterpolation::restoreAfterFrame(drawing, std::move(this->Internal->Interpolations));
   }
   else
   {
@@ -482,29 +156,6 @@ void slLightingPass::SetScene(slScene* scene)
   }
 }
 
-void slLightingPass::SetBrdfFromScene()
-{
-  const shadelab::SceneBrdf& brdf = this->Scene->GetScene().brdf;
-  if (brdf.file.empty())
-  {
-    this->RemoveBrdf();
-    return;
-  }
-  // Read each time: the file may have been edited since.
-  try
-  {
-    const shadelab::BrdfFile file = shadelab::readBrdfFile(this->Scene->GetBrdfFilePath());
-    this->SetBrdf(file, shadelab::brdfParameterValues(file, brdf.parameters));
-  }
-  catch (const shadelab::Error& e)
-  {
-    const std::string& source = this->Scene->GetScene().sourceFile;
-    this->RemoveBrdf();
-    this->Internal->BrdfError = e.what() + (source.empty() ? std::string() : " (brdf of " + source + ")");
-    vtkErrorMacro(<< this->Internal->BrdfError);
-  }
-}
-
 slScene* slLightingPass::GetScene()
 {
   return this->Scene;
@@ -561,218 +212,9 @@ bool slLightingPass::SetFrequencyName(const char* name)
   return true;
 }
 
-void slLightingPass::SetBrdf(const shadelab::BrdfFile& file, const std::vector<glm::vec3>& values)
-{
-  Internals& in = *this->Internal;
-  const std::string source = shaders::brdfSource(shadelab::brdfUniformDeclarations(file), file.shader);
-  if (source != in.BrdfSource)
-  {
-    this->ShaderStageTime.Modified(); // the BRDF's text is compiled into the shaders
-  }
-  in.Brdf.reset(new shadelab::BrdfFile(file));
-  in.BrdfSource = source;
-  in.BrdfValues = values;
-  in.BrdfValues.resize(file.parameters.size());
-  const auto checked = in.BrdfChecked.find(in.BrdfKey());
-  in.BrdfError = checked == in.BrdfChecked.end() ? std::string() : checked->second;
-  this->Modified();
-}
-
-bool slLightingPass::LoadBrdfFile(const char* path)
-{
-  try
-  {
-    const shadelab::BrdfFile file = shadelab::readBrdfFile(path ? path : "");
-    this->SetBrdf(file, shadelab::brdfParameterValues(file, {}));
-    return true;
-  }
-  catch (const shadelab::Error& e)
-  {
-    vtkErrorMacro(<< e.what());
-    return false;
-  }
-}
-
-bool slLightingPass::SetBrdfText(const char* text, const char* path)
-{
-  try
-  {
-    const shadelab::BrdfFile file = shadelab::parseBrdfText(text ? text : "", path ? path : "(text)");
-    this->SetBrdf(file, shadelab::brdfParameterValues(file, {}));
-    return true;
-  }
-  catch (const shadelab::Error& e)
-  {
-    vtkErrorMacro(<< e.what());
-    return false;
-  }
-}
-
-void slLightingPass::RemoveBrdf()
-{
-  Internals& in = *this->Internal;
-  if (in.Brdf)
-  {
-    in.Brdf.reset();
-    in.BrdfSource.clear();
-    in.BrdfValues.clear();
-    in.BrdfError.clear();
-    this->ShaderStageTime.Modified();
-    this->Modified();
-  }
-}
-
-bool slLightingPass::HasBrdf() const
-{
-  return this->Internal->Brdf != nullptr;
-}
-
-const char* slLightingPass::GetBrdfFileName() const
-{
-  return this->Internal->Brdf ? this->Internal->Brdf->path.c_str() : "";
-}
-
-int slLightingPass::GetNumberOfBrdfParameters() const
-{
-  return this->Internal->Brdf ? static_cast<int>(this->Internal->Brdf->parameters.size()) : 0;
-}
-
-namespace
-{
-/// Parameter @p i of @p file, or null (after a warning) when out of range.
-const shadelab::BrdfParameter* parameterAt(const shadelab::BrdfFile* file, int i)
-{
-  if (!file || i < 0 || i >= static_cast<int>(file->parameters.size()))
-  {
-    return nullptr;
-  }
-  return &file->parameters[static_cast<size_t>(i)];
-}
-
-void copyTo(const glm::vec3& v, double out[3])
-{
-  for (int c = 0; c < 3; ++c)
-  {
-    out[c] = static_cast<double>(v[c]);
-  }
-}
-} // namespace
-
-const char* slLightingPass::GetBrdfParameterName(int i) const
-{
-  const shadelab::BrdfParameter* p = parameterAt(this->Internal->Brdf.get(), i);
-  return p ? p->name.c_str() : nullptr;
-}
-
-int slLightingPass::GetBrdfParameterKind(int i) const
-{
-  const shadelab::BrdfParameter* p = parameterAt(this->Internal->Brdf.get(), i);
-  return p ? static_cast<int>(p->kind) : -1;
-}
-
-double slLightingPass::GetBrdfParameterMinimum(int i) const
-{
-  const shadelab::BrdfParameter* p = parameterAt(this->Internal->Brdf.get(), i);
-  return p ? static_cast<double>(p->minimum) : 0.0;
-}
-
-double slLightingPass::GetBrdfParameterMaximum(int i) const
-{
-  const shadelab::BrdfParameter* p = parameterAt(this->Internal->Brdf.get(), i);
-  return p ? static_cast<double>(p->maximum) : 0.0;
-}
-
-void slLightingPass::GetBrdfParameterDefault(int i, double value[3]) const
-{
-  const shadelab::BrdfParameter* p = parameterAt(this->Internal->Brdf.get(), i);
-  copyTo(p ? p->defaultValue : glm::vec3(0.0f), value);
-}
-
-void slLightingPass::GetBrdfParameterValue(int i, double value[3]) const
-{
-  const shadelab::BrdfParameter* p = parameterAt(this->Internal->Brdf.get(), i);
-  copyTo(p ? this->Internal->BrdfValues[static_cast<size_t>(i)] : glm::vec3(0.0f), value);
-}
-
-bool slLightingPass::SetBrdfValues(const std::vector<std::string>& assignments)
-{
-  Internals& in = *this->Internal;
-  if (!in.Brdf)
-  {
-    vtkErrorMacro(<< "no .brdf file to set parameters of");
-    return false;
-  }
-  try
-  {
-    // The current values first (as assignments), then the new ones: the
-    // core parses and checks every value, as it does for --param.
-    std::vector<std::string> all;
-    for (size_t i = 0; i < in.Brdf->parameters.size(); ++i)
-    {
-      all.push_back(shadelab::brdfAssignment(in.Brdf->parameters[i], in.BrdfValues[i]));
-    }
-    all.insert(all.end(), assignments.begin(), assignments.end());
-    in.BrdfValues = shadelab::brdfParameterValues(*in.Brdf, all);
-  }
-  catch (const shadelab::Error& e)
-  {
-    vtkErrorMacro(<< e.what());
-    return false;
-  }
-  this->Modified(); // a uniform: the shaders stay as they are
-  return true;
-}
-
-bool slLightingPass::SetBrdfParameter(const char* assignment)
-{
-  return this->SetBrdfValues({ assignment ? assignment : "" });
-}
-
-bool slLightingPass::SetBrdfParameter(const char* name, double value)
-{
-  return this->SetBrdfValues({ std::string(name ? name : "") + "=" + shadelab::brdfNumberText(value) });
-}
-
-bool slLightingPass::SetBrdfParameter(const char* name, double r, double g, double b)
-{
-  return this->SetBrdfValues(
-    { std::string(name ? name : "") + "=" + shadelab::brdfNumberText(r) + "," + shadelab::brdfNumberText(g) + "," + shadelab::brdfNumberText(b) });
-}
-
-const char* slLightingPass::GetBrdfError() const
-{
-  return this->Internal->BrdfError.c_str();
-}
-
 int slLightingPass::GetNumberOfShaderBuilds() const
 {
   return this->Internal->ShaderBuilds;
-}
-
-bool slLightingPass::CheckBrdf(const std::string& checkShader)
-{
-  Internals& in = *this->Internal;
-  const auto checked = in.BrdfChecked.find(in.BrdfKey());
-  if (checked != in.BrdfChecked.end())
-  {
-    in.BrdfError = checked->second;
-    return in.BrdfError.empty();
-  }
-  vtkNew<vtkShader> shader;
-  shader->SetType(vtkShader::Fragment);
-  shader->SetSource(checkShader);
-  const bool compiled = shader->Compile();
-  const std::string log = shader->GetError();
-  shader->Cleanup();
-  in.BrdfError = compiled ? std::string()
-                          : shadelab::brdfCompileError(*in.Brdf, log,
-                              shaders::brdfShaderFirstLine(checkShader, static_cast<int>(in.Brdf->parameters.size())));
-  in.BrdfChecked[in.BrdfKey()] = in.BrdfError;
-  if (!compiled)
-  {
-    vtkErrorMacro(<< in.BrdfError);
-  }
-  return compiled;
 }
 
 vtkMTimeType slLightingPass::GetShaderStageMTime()
@@ -862,84 +304,6 @@ void slLightingPass::MapTangents(const vtkRenderState* s)
       this->Internal->TangentMappers.Insert(mapper, true);
     }
   }
-}
-
-void slLightingPass::MatchInterpolation(const vtkRenderState* s)
-{
-  // VTK's mapper supplies per-face normals under flat interpolation and
-  // interpolated point normals otherwise: make it supply what we need
-  // (interpolationFor), and remember the user's value to give it back.
-  InterpolationChanges& changes = this->Internal->Interpolations;
-  for (int i = 0; i < s->GetPropArrayCount(); ++i)
-  {
-    vtkActor* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
-    if (!isLitOpaqueActor(actor))
-    {
-      continue; // drawn by VTK as without the pass, in its own interpolation
-    }
-    vtkProperty* property = actor->GetProperty();
-    const int current = property->GetInterpolation();
-    const InterpolationChange* change = changes.Find(property);
-    // A value other than the one the pass set is the user's, and the one
-    // to give back from now on.
-    const bool userChanged = change && change->set != current;
-    const int given = change && !userChanged ? change->found : current;
-    const int wanted = interpolationFor(this->Frequency, given);
-    // Only on a change: a property's modification time rebuilds the
-    // actor's shaders, so the pass never sets it frame after frame.
-    if (wanted != current || userChanged)
-    {
-      property->SetInterpolation(wanted);
-      changes.Insert(property, { given, wanted });
-    }
-  }
-}
-
-void slLightingPass::RestoreInterpolations()
-{
-  restoreInterpolations(this->Internal->Interpolations);
-  this->Internal->Interpolations.Clear();
-}
-
-void slLightingPass::WatchRenderer(vtkRenderer* renderer)
-{
-  WeakKeyedMap<vtkRenderer, DrawnRenderer>& renderers = this->Internal->Renderers;
-  const DrawnRenderer* known = renderers.Find(renderer);
-  if (known && known->top == renderer->GetPass() && !known->givenBack)
-  {
-    return; // every frame but the first in a renderer
-  }
-  DrawnRenderer drawn = known ? *known : DrawnRenderer();
-  if (!known)
-  {
-    // vtkRenderer::SetPass() tells no pass, but modifies the renderer.
-    drawn.observer = renderer->AddObserver(vtkCommand::ModifiedEvent, this, &slLightingPass::RendererModified);
-  }
-  // Drawn again after a change of the renderer's pass gave the
-  // interpolations back: under the pass it had before, the pass was taken
-  // out and put back; under another, that change was one around the pass,
-  // not its removal, and such changes are not taken for one again.
-  drawn.changeRemoves = drawn.changeRemoves && (!drawn.givenBack || renderer->GetPass() == drawn.top);
-  drawn.givenBack = false;
-  drawn.top = renderer->GetPass();
-  renderers.Insert(renderer, drawn);
-}
-
-void slLightingPass::RendererModified(vtkObject* caller, unsigned long, void*)
-{
-  auto* renderer = static_cast<vtkRenderer*>(caller);
-  const DrawnRenderer* drawn = this->Internal->Renderers.Find(renderer);
-  if (!drawn || drawn->givenBack || !drawn->changeRemoves || renderer->GetPass() == drawn->top)
-  {
-    return; // modified for anything but a new pass
-  }
-  // The renderer's pass changed (vtkRenderer::SetPass): the pass is no
-  // longer drawn there, alone or inside the old one. Given back now, before
-  // VTK draws a frame without the pass.
-  DrawnRenderer givenBack = *drawn;
-  givenBack.givenBack = true;
-  this->Internal->Renderers.Insert(renderer, givenBack);
-  this->RestoreInterpolations();
 }
 
 void slLightingPass::Render(const vtkRenderState* s)
@@ -1185,23 +549,7 @@ bool slLightingPass::SetShaderParameters(
   };
   if (brdf)
   {
-    for (size_t i = 0; i < in.Brdf->parameters.size(); ++i)
-    {
-      const shadelab::BrdfParameter& p = in.Brdf->parameters[i];
-      const glm::vec3& v = in.BrdfValues[i];
-      switch (p.kind)
-      {
-        case shadelab::BrdfParameter::Kind::Float:
-          program->SetUniformf(p.name.c_str(), v.x);
-          break;
-        case shadelab::BrdfParameter::Kind::Bool:
-          program->SetUniformi(p.name.c_str(), v.x != 0.0f ? 1 : 0);
-          break;
-        case shadelab::BrdfParameter::Kind::Color:
-          program->SetUniform3f(p.name.c_str(), &v[0]);
-          break;
-      }
-    }
+    setBrdfUniforms(program, *in.Brdf, in.BrdfValues);
   }
   const std::vector<shadelab::glsl::slLight>& lights = in.LightsVC;
   if (actor && facts && facts->backface)
