@@ -6,6 +6,7 @@
  * and writing images, each turning failures into one-line shadelab::Errors.
  */
 
+#include "shadelab/OutOfMemory.h"
 #include "shadelab/Scene.h"
 
 #include <vtkSmartPointer.h>
@@ -44,8 +45,9 @@ private:
 };
 
 /// Runs @p work, the step @p step of a command, and returns what it returns:
-/// a std::bad_alloc it throws becomes an OutOfMemory naming @p step (one
-/// that names an inner step already is passed on as it is).
+/// an exception it throws that says memory ran out (isOutOfMemory())
+/// becomes an OutOfMemory naming @p step (one that names an inner step
+/// already is passed on as it is).
 template <class Work>
 decltype(auto) inStep(const std::string& step, Work&& work)
 {
@@ -57,8 +59,12 @@ decltype(auto) inStep(const std::string& step, Work&& work)
   {
     throw;
   }
-  catch (const std::bad_alloc&)
+  catch (const std::exception& e)
   {
+    if (!isOutOfMemory(e))
+    {
+      throw;
+    }
     throw OutOfMemory(step);
   }
 }

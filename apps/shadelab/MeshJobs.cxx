@@ -129,13 +129,9 @@ void runOnMesh(const std::string& input, const std::function<void()>& work)
   {
     throw Error(input + ": out of memory (" + e.step() + ")");
   }
-  catch (const std::bad_alloc&)
-  {
-    throw Error(input + ": out of memory");
-  }
   catch (const std::exception& e)
   {
-    throw Error(input + ": " + e.what());
+    throw Error(input + ": " + (isOutOfMemory(e) ? std::string("out of memory") : e.what()));
   }
 }
 

@@ -4,6 +4,8 @@
 
 #include "slOutputWindow.h"
 
+#include "shadelab/OutOfMemory.h"
+
 #include <exception>
 #include <iostream>
 #include <new>
@@ -97,14 +99,9 @@ int main(int argc, char** argv)
         shadelab::app::reportProblem(name, e.what());
         return 2;
       }
-      catch (const std::bad_alloc&) // outside the work on a mesh (runOnMesh names it)
+      catch (const std::exception& e) // outside the work on a mesh (runOnMesh names it)
       {
-        shadelab::app::reportProblem(name, "out of memory");
-        return 1;
-      }
-      catch (const std::exception& e)
-      {
-        shadelab::app::reportProblem(name, e.what());
+        shadelab::app::reportProblem(name, shadelab::isOutOfMemory(e) ? "out of memory" : e.what());
         return 1;
       }
     }

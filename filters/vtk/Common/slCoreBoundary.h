@@ -20,6 +20,7 @@
  */
 
 #include "shadelab/Error.h"
+#include "shadelab/OutOfMemory.h"
 
 #include <vtkAbstractArray.h>
 #include <vtkDataObject.h>
@@ -84,8 +85,9 @@ inline void slSetNumberOfTuplesOrThrow(vtkAbstractArray* array, vtkIdType tuples
 /// @p self so that no exception leaves through VTK's executive: one that did
 /// would leave the executive inside the request, and refuse the filter's
 /// next update ("UpdateInformation invoked during another request"), as in
-/// a batch that goes on after a mesh that did not fit in memory. A
-/// std::bad_alloc becomes vtkErrorMacro "@p prefix out of memory (in CLASS)",
+/// a batch that goes on after a mesh that did not fit in memory. An
+/// exception that says memory ran out (shadelab::isOutOfMemory())
+/// becomes vtkErrorMacro "@p prefix out of memory (in CLASS)",
 /// another std::exception "@p prefix WHAT"; the output on port 0 is emptied
 /// and 0 returned.
 template <class Request>
@@ -97,13 +99,9 @@ vtkTypeBool slProcessRequestSafely(
   {
     return std::forward<Request>(request)();
   }
-  catch (const std::bad_alloc&)
-  {
-    problem = std::string("out of memory (in ") + self->GetClassName() + ")";
-  }
   catch (const std::exception& e)
   {
-    problem = e.what();
+    problem = shadelab::isOutOfMemory(e) ? std::string("out of memory (in ") + self->GetClassName() + ")" : e.what();
   }
   if (vtkDataObject* output = outputVector ? vtkDataObject::GetData(outputVector) : nullptr)
   {

@@ -13,6 +13,7 @@
 #include "slPointWelding.h"
 
 #include "shadelab/InputFile.h"
+#include "shadelab/OutOfMemory.h"
 #include "shadelab/PrintableText.h"
 
 #include <vtkAlgorithm.h>
@@ -303,8 +304,12 @@ bool readOwnFormat(const char* fileName, const std::string& ext, bool merge, vtk
     }
     return true;
   }
-  catch (const std::bad_alloc&)
+  catch (const std::exception& e)
   {
+    if (!shadelab::isOutOfMemory(e))
+    {
+      throw;
+    }
     return false; // VTK's path then says what the file needs
   }
 }
@@ -402,13 +407,9 @@ int slMeshReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInform
     {
       reader->Update();
     }
-    catch (const std::bad_alloc&)
-    {
-      return this->Fail("out of memory (reading)");
-    }
     catch (const std::exception& e)
     {
-      return this->Fail(shadelab::printableText(e.what(), 200));
+      return this->Fail(shadelab::isOutOfMemory(e) ? "out of memory (reading)" : shadelab::printableText(e.what(), 200));
     }
     if (errors->HasError())
     {
