@@ -73,6 +73,12 @@ struct Lookahead
   }
 };
 
+/// What fill() does between groups of four triangles when given nothing else.
+struct NothingBetween
+{
+  SL_ALWAYS_INLINE void operator()(int) const {}
+};
+
 /// Up to Capacity consecutive triangles: their points in, the contribution
 /// of each corner to its vertex out: corner k of triangle i adds (cornerX,
 /// cornerY, cornerZ)[k][i], its weight times the triangle's Newell vector.
@@ -114,9 +120,13 @@ struct TriangleBlock
   /// Fills the empty block with the @p n (at most Capacity) triangles that
   /// start at connectivity position @p o, one after the other: add() without
   /// the per-triangle bookkeeping. Triangle i also asks @p ahead for its
-  /// triangle i (which must hold n triangles when its ids are set).
-  template <typename Id, typename AccId = Id>
-  void fill(const Id* connectivity, const T* xyz, int64_t o, int n, const Lookahead<T, Id, AccId>& ahead = {})
+  /// triangle i (which must hold n triangles when its ids are set). After
+  /// each group of four triangles, group g, it calls @p between(g): the
+  /// caller's work (another block's scatter, scatterGroup()) that then
+  /// waits for memory alongside the gathering instead of after it.
+  template <typename Id, typename AccId = Id, typename Between = NothingBetween>
+  void fill(const Id* connectivity, const T* xyz, int64_t o, int n, const Lookahead<T, Id, AccId>& ahead = {},
+    Between between = {})
   {
     this->start = o;
     this->count = n;
@@ -134,6 +144,10 @@ struct TriangleBlock
         this->y[k][i] = p[1];
         this->z[k][i] = p[2];
       }
+      if ((i & 3) == 3)
+      {
+        between(i >> 2);
+      }
     }
   }
 
@@ -141,9 +155,9 @@ struct TriangleBlock
   /// a point's coordinates and the next point's x come in one 16-byte load,
   /// and four triangles' corners are transposed into the block at once
   /// (SSE2; fill() elsewhere). @p n must be a multiple of 4.
-  template <typename Id, typename AccId = Id>
-  void fillBelowLastPoint(
-    const Id* connectivity, const T* xyz, int64_t o, int n, const Lookahead<T, Id, AccId>& ahead = {})
+  template <typename Id, typename AccId = Id, typename Between = NothingBetween>
+  void fillBelowLastPoint(const Id* connectivity, const T* xyz, int64_t o, int n,
+    const Lookahead<T, Id, AccId>& ahead = {}, Between between = {})
   {
 #if defined(__SSE2__)
     if constexpr (std::is_same<T, float>::value)
@@ -171,11 +185,12 @@ struct TriangleBlock
           _mm_store_ps(&this->y[k][i], p1);
           _mm_store_ps(&this->z[k][i], p2);
         }
+        between(i >> 2);
       }
       return;
     }
 #endif
-    this->fill(connectivity, xyz, o, n, ahead);
+    this->fill(connectivity, xyz, o, n, ahead, between);
   }
 
   /// Newell vectors and the weights of @p W (see slCornerWeights.h) of the
@@ -287,17 +302,30 @@ struct TriangleBlock
   template <bool Owned, typename AccId, typename Sink>
   void scatter(const AccId* accIds, Sink sink) const
   {
-    const AccId* to = accIds + this->start;
     const int q = (this->count + 3) / 4;
     for (int j = 0; j < q; ++j)
     {
-      for (int i = j; i < this->count; i += q)
+      this->scatterGroup<Owned>(j, accIds, sink);
+    }
+  }
+
+  /// Group @p j of scatter(): triangles j, j + q, j + 2q and j + 3q, where
+  /// q = (count + 3) / 4. A full block has Capacity / 4 groups, as many as
+  /// fill() has groups of four triangles: filling one full block while
+  /// adding another's corners group by group mixes the two streams of
+  /// cache misses, as a loop that gathers and adds triangle by triangle
+  /// does.
+  template <bool Owned, typename AccId, typename Sink>
+  SL_ALWAYS_INLINE void scatterGroup(int j, const AccId* accIds, Sink& sink) const
+  {
+    const AccId* to = accIds + this->start;
+    const int q = (this->count + 3) / 4;
+    for (int i = j; i < this->count; i += q)
+    {
+      for (int k = 0; k < 3; ++k)
       {
-        for (int k = 0; k < 3; ++k)
-        {
-          sink.template add<Owned>(
-            static_cast<int64_t>(to[3 * i + k]), this->cornerX[k][i], this->cornerY[k][i], this->cornerZ[k][i]);
-        }
+        sink.template add<Owned>(
+          static_cast<int64_t>(to[3 * i + k]), this->cornerX[k][i], this->cornerY[k][i], this->cornerZ[k][i]);
       }
     }
   }
