@@ -274,6 +274,13 @@ bool scatter(const Polygons<Id>& polys, const AccId* accIds, const T* xyz, int64
           block->fill(polys.connectivity, xyz, polys.begin(f), capacity, ahead, between);
         }
       };
+      if (!lookahead)
+      {
+        fillBlock(NothingBetween());
+        flush(ownsEverything || inRange);
+        f += capacity - 1;
+        continue;
+      }
       if (!weighed)
       {
         fillBlock(NothingBetween());
@@ -287,20 +294,13 @@ bool scatter(const Polygons<Id>& polys, const AccId* accIds, const T* xyz, int64
         fillBlock([&](int group) { weighed->template scatterGroup<false>(group, accIds, sink); });
       }
       block->template weigh<W>();
-      if (!lookahead)
-      {
-        addCorners(*block, ownsEverything || inRange);
-        block->count = 0;
-        f += capacity - 1;
-        continue;
-      }
-      if (weighed)
-      {
-        weighed->count = 0;
-      }
-      std::swap(block, weighed);
-      block = block ? block : blocks + 1;
+      // The block just weighed waits for the next fill; the one whose
+      // corners that fill added (or, the first time, the other) is filled next.
+      TriangleBlock<T>* emptied = weighed ? weighed : (block == blocks ? blocks + 1 : blocks);
+      emptied->count = 0;
+      weighed = block;
       weighedOwned = ownsEverything || inRange;
+      block = emptied;
       f += capacity - 1;
       continue;
     }
