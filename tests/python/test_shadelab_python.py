@@ -41,6 +41,25 @@ class MeshReaderTest(unittest.TestCase):
         self.assertEqual(reader.GetOutput().GetNumberOfPoints(), 0)
 
 
+class ReaderErrorOnStderrTest(unittest.TestCase):
+    """A script without an error observer sees each reader's one line on stderr."""
+
+    def stderr_of_update(self, reader_class, path):
+        script = f"import shadelab; r = shadelab.{reader_class}(); r.SetFileName({path!r}); r.Update()"
+        done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, check=False)
+        return done.stderr
+
+    def test_image_reader(self):
+        # The line is written after the capture of the image libraries' own
+        # output ends, not into it.
+        stderr = self.stderr_of_update("slImageReader", "/nonexistent/x.png")
+        self.assertIn("/nonexistent/x.png: cannot read image: ", stderr)
+
+    def test_mesh_reader(self):
+        stderr = self.stderr_of_update("slMeshReader", "/nonexistent/m.ply")
+        self.assertIn("/nonexistent/m.ply: cannot open file", stderr)
+
+
 class SceneTest(unittest.TestCase):
     def test_default_scene_to_vtk_lights(self):
         scene = shadelab.slScene()

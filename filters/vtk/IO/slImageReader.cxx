@@ -115,44 +115,47 @@ int slImageReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInfor
     vtkErrorMacro(<< name << ": cannot read image: " << codecProblem);
     return 0;
   }
-  // The image libraries' own lines on stderr are held back: the problem is
-  // reported once, in the error.
-  slStderrCapture quiet;
   slImageHeader header;
   std::string reason;
-  const bool haveHeader = codec->ReadHeader(name, header, reason);
-  const bool asFloat = !(header.EightBit && !this->OutputFloat);
   vtkSmartPointer<vtkDataArray> scalars;
-  const std::string tooLarge = haveHeader ? sizeProblem(header) : "";
-  if (!tooLarge.empty())
   {
-    reason = tooLarge;
-  }
-  else if (haveHeader)
-  {
-    if (asFloat)
+    // The image libraries' own lines on stderr are held back while they
+    // run: the problem is reported once, in the error below, which comes
+    // after the capture ends so that it is not held back with them.
+    slStderrCapture quiet;
+    const bool haveHeader = codec->ReadHeader(name, header, reason);
+    const bool asFloat = !(header.EightBit && !this->OutputFloat);
+    const std::string tooLarge = haveHeader ? sizeProblem(header) : "";
+    if (!tooLarge.empty())
     {
-      scalars = vtkSmartPointer<vtkFloatArray>::New();
+      reason = tooLarge;
     }
-    else
+    else if (haveHeader)
     {
-      scalars = vtkSmartPointer<vtkUnsignedCharArray>::New();
-    }
-    scalars->SetName("ImageScalars");
-    scalars->SetNumberOfComponents(header.Channels);
-    scalars->SetNumberOfTuples(static_cast<vtkIdType>(header.Width) * header.Height);
-    if (codec->ReadPixels(name, header, asFloat, scalars->GetVoidPointer(0), reason))
-    {
-      reason.clear();
+      if (asFloat)
+      {
+        scalars = vtkSmartPointer<vtkFloatArray>::New();
+      }
+      else
+      {
+        scalars = vtkSmartPointer<vtkUnsignedCharArray>::New();
+      }
+      scalars->SetName("ImageScalars");
+      scalars->SetNumberOfComponents(header.Channels);
+      scalars->SetNumberOfTuples(static_cast<vtkIdType>(header.Width) * header.Height);
+      if (codec->ReadPixels(name, header, asFloat, scalars->GetVoidPointer(0), reason))
+      {
+        reason.clear();
+      }
+      else
+      {
+        reason = failureReason(reason, quiet);
+      }
     }
     else
     {
       reason = failureReason(reason, quiet);
     }
-  }
-  else
-  {
-    reason = failureReason(reason, quiet);
   }
   if (!reason.empty())
   {
