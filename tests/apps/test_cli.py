@@ -120,7 +120,7 @@ class RenderTest(unittest.TestCase):
     def test_missing_mesh(self):
         r = run("render", "/nonexistent/cow.obj", "-o", self.out)
         self.assertEqual(r.returncode, 1)
-        self.assertEqual(r.stderr, "shadelab render: /nonexistent/cow.obj: cannot open file\n")
+        self.assertEqual(r.stderr, "shadelab render: /nonexistent/cow.obj: cannot open file: No such file or directory\n")
         self.assertFalse(os.path.exists(self.out))
 
     def test_unreadable_mesh_keeps_existing_output(self):
@@ -401,7 +401,7 @@ class CompareTest(unittest.TestCase):
     def test_bad_input(self):
         r = run("compare", "/nonexistent/m.stl", "-o", "/tmp/never.png")
         self.assertEqual(r.returncode, 1)
-        self.assertEqual(r.stderr, "shadelab compare: /nonexistent/m.stl: cannot open file\n")
+        self.assertEqual(r.stderr, "shadelab compare: /nonexistent/m.stl: cannot open file: No such file or directory\n")
         r = run("compare", SPOT, "-o", "/tmp/never.png", "--amplify", "0")
         self.assertEqual(r.returncode, 2)
         self.assertEqual(r.stderr, "shadelab compare: option --amplify: 0 is out of range [1, 1000]\n")

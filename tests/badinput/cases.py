@@ -498,7 +498,7 @@ CASES = [
     mesh_case("glb version 1", "a.glb", b"glTF\x01\0\0\0" + bytes(20), 'binary glTF version 1 (only 2 is read)'),
     # any mesh
     mesh_case("mesh is a directory", "d.obj", None, 'is a directory, not a mesh file'),
-    mesh_case("mesh missing", "nothere.obj", "skip", 'cannot open file'),
+    mesh_case("mesh missing", "nothere.obj", "skip", 'cannot open file: No such file or directory'),
     mesh_case("mesh unsupported extension", "a.xyz", b"1 2 3\n", 'unsupported mesh format ".xyz" (supported: .obj .ply .stl .vtp .vtk .off .gltf .glb)'),
     # Non-finite attributes
     # Normals, texture coordinates and tangents must be finite in every format (the filters carried a
@@ -573,7 +573,7 @@ CASES = [
     scene_case("scene utf16", '{"imageSize": [64, 64]}'.encode("utf-16"), "line 1, column 1: malformed JSON: syntax error while parsing value - invalid literal; last read: '\\xFF'"),
     ("scene is a directory", ["cosine", "m.off", "--scene", "s.json", "-o", "out.vtp"], {"m.off": TETRA_OFF,
      "s.json": None}, 1, 'shadelab cosine: s.json: is a directory, not a scene file\n'),
-    ("scene missing", ["cosine", "m.off", "--scene", "nothere.json", "-o", "out.vtp"], {"m.off": TETRA_OFF}, 1, 'shadelab cosine: nothere.json: cannot open scene file\n'),
+    ("scene missing", ["cosine", "m.off", "--scene", "nothere.json", "-o", "out.vtp"], {"m.off": TETRA_OFF}, 1, 'shadelab cosine: nothere.json: cannot open scene file: No such file or directory\n'),
     # images
     image_case("png truncated", "t.png", png(cut=20), 'shadelab light: t.png: cannot read image: PNG chunk \'IDAT\' at byte 33 declares 16 bytes of data; 8 bytes remain in the file\n'),
     image_case("png bad crc", "t.png", png(crc_ok=False), 'shadelab light: t.png: cannot read image: PNG read error: IDAT: CRC error PNG library error\n'),
@@ -735,7 +735,7 @@ CASES = [
               'b.brdf: --param "n=500": n 500 is out of range [1, 100] (line 2)', ["--param", "n=500"]),
     brdf_case("brdf unknown param", b"::begin parameters\nfloat n 1 100 50\n::end parameters\n" + BRDF_SHADER,
               'b.brdf: --param "k=1": the file has no parameter "k" (it has n)', ["--param", "k=1"]),
-    brdf_case("brdf missing file", None, 'b.brdf: cannot open BRDF file'),
+    brdf_case("brdf missing file", None, 'b.brdf: cannot open BRDF file: No such file or directory'),
     cli_case("brdf param before file", ["lobe", "--param", "n=3", "--brdf", "b.brdf", "-o", "out.png"],
              'shadelab lobe: --param n=3 comes before any --brdf FILE\n', files={"b.brdf": BRDF_SHADER}),
     cli_case("brdf lobes on a mesh", ["lobe", "m.off", "--brdf", "b.brdf", "-o", "out.png"],

@@ -196,7 +196,7 @@ TEST(BrdfFile, NamesAMissingOrUnreadableFile)
       }
       catch (const Error& e)
       {
-        EXPECT_STREQ(e.what(), "/nonexistent/none.brdf: cannot open BRDF file");
+        EXPECT_STREQ(e.what(), "/nonexistent/none.brdf: cannot open BRDF file: No such file or directory");
         throw;
       }
     },

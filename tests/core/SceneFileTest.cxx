@@ -202,7 +202,7 @@ TEST(SceneFile, MissingFile)
   }
   catch (const Error& e)
   {
-    EXPECT_STREQ(e.what(), "/nonexistent/scene.json: cannot open scene file");
+    EXPECT_STREQ(e.what(), "/nonexistent/scene.json: cannot open scene file: No such file or directory");
   }
 }
 

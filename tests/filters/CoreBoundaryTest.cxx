@@ -65,7 +65,7 @@ TEST(CoreBoundary, CoreErrorFailsTheUpdateWithItsMessage)
   EXPECT_EQ(probe->GetOutput()->GetNumberOfPoints(), 0) << "the output must be empty";
   // VTK's own message, heard through the filter's ErrorEvent.
   EXPECT_NE(message.find("CoreProbe"), std::string::npos) << message;
-  EXPECT_NE(message.find(kMissingScene + ": cannot open scene file"), std::string::npos) << message;
+  EXPECT_NE(message.find(kMissingScene + ": cannot open scene file: No such file or directory"), std::string::npos) << message;
 }
 
 TEST(CoreBoundary, UpdateOrThrowGivesBackTheOneLine)
@@ -79,7 +79,7 @@ TEST(CoreBoundary, UpdateOrThrowGivesBackTheOneLine)
   }
   catch (const shadelab::Error& error)
   {
-    EXPECT_EQ(std::string(error.what()), kMissingScene + ": cannot open scene file");
+    EXPECT_EQ(std::string(error.what()), kMissingScene + ": cannot open scene file: No such file or directory");
   }
   EXPECT_FALSE(probe->HasObserver(vtkCommand::ErrorEvent)) << "the capture must stop watching";
 }

@@ -297,8 +297,18 @@ TEST(MeshReader, BadOFFNamesTheLine)
 TEST(MeshReader, MissingFile)
 {
   const ReadResult r = read("/nonexistent/bunny.obj");
-  EXPECT_EQ(r.error, "/nonexistent/bunny.obj: cannot open file");
+  EXPECT_EQ(r.error, "/nonexistent/bunny.obj: cannot open file: No such file or directory");
   EXPECT_EQ(r.mesh->GetNumberOfPoints(), 0);
+}
+
+TEST(MeshReader, PathThroughAFileSaysWhy)
+{
+  // The system's reason, not a bare "cannot open": here a file stands
+  // where the path needs a folder.
+  const TestFolder folder;
+  folder.write("plain.off", "OFF\n0 0 0\n");
+  const std::string path = folder.path("plain.off") + "/m.obj";
+  EXPECT_EQ(read(path).error, path + ": cannot open file: Not a directory");
 }
 
 TEST(MeshReader, UnsupportedExtension)

@@ -37,7 +37,7 @@ class MeshReaderTest(unittest.TestCase):
     def test_error_message_for_missing_file(self):
         reader = shadelab.slMeshReader()
         reader.SetFileName("/nonexistent/m.ply")
-        self.assertEqual(update_error(reader), "/nonexistent/m.ply: cannot open file")
+        self.assertEqual(update_error(reader), "/nonexistent/m.ply: cannot open file: No such file or directory")
         self.assertEqual(reader.GetOutput().GetNumberOfPoints(), 0)
 
 

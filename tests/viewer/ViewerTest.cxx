@@ -734,7 +734,7 @@ private slots:
   {
     QString error;
     QVERIFY(!this->Window->openFile(this->path("missing.brdf"), &error));
-    QCOMPARE(error, this->path("missing.brdf") + ": cannot open BRDF file");
+    QCOMPARE(error, this->path("missing.brdf") + ": cannot open BRDF file: No such file or directory");
     QVERIFY(this->Window->document()->scene().brdf.file.empty());
 
     // GLSL that does not compile: the view says so in one line, with the file's line.

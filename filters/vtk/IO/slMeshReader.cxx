@@ -379,7 +379,7 @@ int slMeshReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInform
   std::ifstream probe(this->FileName, std::ios::binary);
   if (!probe)
   {
-    return this->Fail("cannot open file");
+    return this->Fail("cannot open file: " + shadelab::openFailureReason(this->FileName));
   }
 
   vtkNew<vtkPolyData> mesh;

@@ -1,6 +1,11 @@
 #include "shadelab/InputFile.h"
 
+#include <cerrno>
 #include <filesystem>
+#include <system_error>
+
+#include <fcntl.h>
+#include <unistd.h>
 
 namespace shadelab
 {
@@ -19,6 +24,17 @@ std::string inputFileProblem(const std::string& path, const std::string& what)
     return "is a directory, not " + what;
   }
   return "is not a regular file (a device, pipe or socket)";
+}
+
+std::string openFailureReason(const std::string& path)
+{
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd >= 0)
+  {
+    ::close(fd);
+    return "it could not be opened";
+  }
+  return std::generic_category().message(errno);
 }
 
 } // namespace shadelab

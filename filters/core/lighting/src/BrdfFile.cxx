@@ -513,7 +513,7 @@ BrdfFile readBrdfFile(const std::string& path)
   std::ifstream in(path, std::ios::binary);
   if (!in)
   {
-    throw Error(path + ": cannot open BRDF file");
+    throw Error(path + ": cannot open BRDF file: " + openFailureReason(path));
   }
   in.seekg(0, std::ios::end);
   const std::streamoff size = in.tellg();

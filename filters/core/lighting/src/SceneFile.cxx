@@ -633,7 +633,7 @@ Scene readSceneFile(const std::string& path)
   std::ifstream in(path, std::ios::binary);
   if (!in)
   {
-    throw Error(path + ": cannot open scene file");
+    throw Error(path + ": cannot open scene file: " + openFailureReason(path));
   }
   std::stringstream text;
   text << in.rdbuf();
