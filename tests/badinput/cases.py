@@ -498,6 +498,7 @@ CASES = [
     mesh_case("glb version 1", "a.glb", b"glTF\x01\0\0\0" + bytes(20), 'binary glTF version 1 (only 2 is read)'),
     # any mesh
     mesh_case("mesh is a directory", "d.obj", None, 'is a directory, not a mesh file'),
+    mesh_case("mesh is a directory without extension", "d", None, 'is a directory, not a mesh file'),
     mesh_case("mesh missing", "nothere.obj", "skip", 'cannot open file: No such file or directory'),
     mesh_case("mesh unsupported extension", "a.xyz", b"1 2 3\n", 'unsupported mesh format ".xyz" (supported: .obj .ply .stl .vtp .vtk .off .gltf .glb)'),
     # Non-finite attributes

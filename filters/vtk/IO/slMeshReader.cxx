@@ -366,15 +366,16 @@ int slMeshReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInform
   {
     return this->Fail("no file name given");
   }
-  const std::string ext = slLowerExtension(this->FileName);
-  if (!CanReadFile(this->FileName))
-  {
-    return this->Fail("unsupported mesh format \"" + ext + "\" (supported: " + GetSupportedExtensions() + ")");
-  }
+  // Before the extension: a folder or a device is no mesh whatever its name.
   const std::string fileProblem = shadelab::inputFileProblem(this->FileName, "a mesh file");
   if (!fileProblem.empty())
   {
     return this->Fail(fileProblem);
+  }
+  const std::string ext = slLowerExtension(this->FileName);
+  if (!CanReadFile(this->FileName))
+  {
+    return this->Fail("unsupported mesh format \"" + ext + "\" (supported: " + GetSupportedExtensions() + ")");
   }
   std::ifstream probe(this->FileName, std::ios::binary);
   if (!probe)
