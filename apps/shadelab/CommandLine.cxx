@@ -71,7 +71,7 @@ CommandLine::CommandLine(const std::vector<std::string>& args, const std::vector
       {
         names += (names.empty() ? "" : ", ") + choice;
       }
-      throw UsageError("option --" + spec->name + ": unknown value \"" + inlineValue + "\" (" + names + ")");
+      throw UsageError("--" + spec->name + ": unknown value \"" + inlineValue + "\" (" + names + ")");
     }
     this->Values[spec->name] = inlineValue;
     this->Ordered.emplace_back(spec->name, inlineValue);
@@ -95,12 +95,12 @@ double CommandLine::getNumber(const std::string& name, double fallback, double l
   const double value = std::strtod(it->second.c_str(), &end);
   if (it->second.empty() || *end != '\0' || !std::isfinite(value))
   {
-    throw UsageError("option --" + name + ": \"" + it->second + "\" is not a number");
+    throw UsageError("--" + name + ": \"" + it->second + "\" is not a number");
   }
   if (value < lo || value > hi)
   {
     std::ostringstream s;
-    s << "option --" << name << ": " << value << " is out of range [" << lo << ", " << hi << "]";
+    s << "--" << name << ": " << value << " is out of range [" << lo << ", " << hi << "]";
     throw UsageError(s.str());
   }
   return value;
@@ -111,7 +111,7 @@ int CommandLine::getIndex(const std::string& name, int fallback, int lo, int hi)
   const double value = this->getNumber(name, fallback, lo, hi);
   if (value != std::floor(value))
   {
-    throw UsageError("option --" + name + ": \"" + this->get(name) + "\" is not a whole number");
+    throw UsageError("--" + name + ": \"" + this->get(name) + "\" is not a whole number");
   }
   return static_cast<int>(value);
 }

@@ -158,7 +158,7 @@ void checkLightOption(const CommandLine& cl, int light, slScene* scene)
   const int count = scene->GetNumberOfLights();
   if (light >= count)
   {
-    throw Error("option --light: light " + std::to_string(light) + " is out of range: " +
+    throw Error("--light: light " + std::to_string(light) + " is out of range: " +
       (cl.has("scene") ? cl.get("scene") : std::string("the built-in scene")) + " has " + std::to_string(count) +
       (count == 1 ? " light" : " lights"));
   }

@@ -110,7 +110,7 @@ void checkTangentsFor(slScene* scene, vtkPolyData* mesh, const std::string& path
 /// The same check for drawing @p mesh with @p model.
 void checkTangentsFor(ShadingModel model, vtkPolyData* mesh, const std::string& path);
 
-/// Throws shadelab::Error "option --light: light K is out of range: FILE has
+/// Throws shadelab::Error "--light: light K is out of range: FILE has
 /// N lights" (the scene file of --scene, or the built-in scene) unless
 /// @p scene has light @p light; -1 (every light) passes. Exit status 1: only
 /// the scene can tell.

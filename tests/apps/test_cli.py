@@ -213,7 +213,7 @@ class RenderTest(unittest.TestCase):
             r = run("render", SPOT, "--component", "cos", "--light", k, "-o", self.out)
             self.assertEqual(r.returncode, status, r.stderr)
             self.assertEqual(r.stderr.count("\n"), 1, r.stderr)
-            self.assertTrue(r.stderr.startswith("shadelab render: option --light: "), r.stderr)
+            self.assertTrue(r.stderr.startswith("shadelab render: --light: "), r.stderr)
         self.assertFalse(os.path.exists(self.out))
 
     def test_more_lights_than_the_pass_holds(self):
@@ -395,7 +395,7 @@ class CompareTest(unittest.TestCase):
         self.assertEqual(r.returncode, 1)
         self.assertIn("the ward model is anisotropic and needs tangents", r.stderr)
         r = run("compare", SPOT, "--grid", "phong", "--columns", "0", "-o", out)
-        self.assertEqual((r.returncode, r.stderr), (2, "shadelab compare: option --columns: 0 is out of range [1, 64]\n"))
+        self.assertEqual((r.returncode, r.stderr), (2, "shadelab compare: --columns: 0 is out of range [1, 64]\n"))
         self.assertFalse(os.path.exists(out))
 
     def test_bad_input(self):
@@ -404,7 +404,7 @@ class CompareTest(unittest.TestCase):
         self.assertEqual(r.stderr, "shadelab compare: /nonexistent/m.stl: cannot open file: No such file or directory\n")
         r = run("compare", SPOT, "-o", "/tmp/never.png", "--amplify", "0")
         self.assertEqual(r.returncode, 2)
-        self.assertEqual(r.stderr, "shadelab compare: option --amplify: 0 is out of range [1, 1000]\n")
+        self.assertEqual(r.stderr, "shadelab compare: --amplify: 0 is out of range [1, 1000]\n")
 
 
 class LobeImageTest(unittest.TestCase):

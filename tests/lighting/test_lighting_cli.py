@@ -268,7 +268,7 @@ class LightingCommandsTest(unittest.TestCase):
         self.assertAlmostEqual(fine / peak, 1.0, delta=0.01)
         r = run("lobe", "--model", "phong", "--theta-resolution", "1025", "-o", self.out("x.vtp"))
         self.assertEqual((r.returncode, r.stderr),
-                         (2, "shadelab lobe: option --theta-resolution: 1025 is out of range [1, 1024]\n"))
+                         (2, "shadelab lobe: --theta-resolution: 1025 is out of range [1, 1024]\n"))
 
     def test_lobe_of_brdf_files_alone_refuses_model_options(self):
         """A .brdf file's f_r reads its own parameters: the built-in models' options would change nothing."""
