@@ -1,5 +1,6 @@
 // shadelab normals MESH... -o OUT [--weighting W] [--feature-angle DEG] [...]
 #include "CommandLine.h"
+#include "Counted.h"
 #include "Commands.h"
 #include "Inputs.h"
 #include "MeshJobs.h"
@@ -31,9 +32,9 @@ void computeNormals(const CommandLine& cl, const MeshJob& job)
   normals->SetInputData(mesh);
   vtkSmartPointer<vtkPolyData> out = runMeshFilter(normals, job.input);
   writeMesh(out, job.output, cl);
-  std::cout << "wrote " << job.output << ": " << out->GetNumberOfPoints() << " points ("
+  std::cout << "wrote " << job.output << ": " << counted(out->GetNumberOfPoints(), "point") << " ("
             << out->GetNumberOfPoints() - mesh->GetNumberOfPoints() << " added along sharp edges), "
-            << out->GetNumberOfPolys() << " polygons, " << normals->GetNumberOfFlippedPolygons()
+            << counted(out->GetNumberOfPolys(), "polygon") << ", " << normals->GetNumberOfFlippedPolygons()
             << " reversed, weighting " << slPolyDataNormals::GetWeightingName(normals->GetWeighting()) << "\n";
 }
 

@@ -1,5 +1,6 @@
 // shadelab tangents MESH -o OUT [normals options]
 #include "CommandLine.h"
+#include "Counted.h"
 #include "Commands.h"
 #include "Inputs.h"
 #include "MeshJobs.h"
@@ -72,7 +73,7 @@ int runTangents(const std::vector<std::string>& args)
     tangents->SetInputData(mesh);
     vtkSmartPointer<vtkPolyData> out = runMeshFilter(tangents, path);
     writeMesh(out, cl.get("output"), cl);
-    std::cout << "wrote " << cl.get("output") << ": " << out->GetNumberOfPoints() << " points ("
+    std::cout << "wrote " << cl.get("output") << ": " << counted(out->GetNumberOfPoints(), "point") << " ("
               << tangents->GetNumberOfSplitPoints() << " split along mirror seams)\n";
   });
   return 0;

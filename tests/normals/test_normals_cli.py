@@ -44,6 +44,18 @@ class NormalsCommandTest(unittest.TestCase):
         self.assertGreater(a.GetNumberOfPoints(), b.GetNumberOfPoints())
         self.assertEqual(a.GetNumberOfPolys(), b.GetNumberOfPolys())
 
+    def test_summary_line_counts_in_words(self):
+        # One triangle: "1 polygon", not "1 polygons"; fandisk's counts (its
+        # OBJ holds 6475 points and 12946 triangles) in the plural.
+        triangle, out = self.path("t.obj"), self.path("t.vtp")
+        with open(triangle, "w") as f:
+            f.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
+        r = run("normals", triangle, "-o", out)
+        self.assertEqual(r.stdout, f"wrote {out}: 3 points (0 added along sharp edges), 1 polygon, 0 reversed, "
+                                   "weighting angle\n")
+        r = run("normals", FANDISK, "-o", out, "--no-split")
+        self.assertIn(": 6475 points (0 added along sharp edges), 12946 polygons, ", r.stdout)
+
     def test_bad_input_gives_one_line_and_no_output(self):
         out = self.path("out.vtp")
         cases = [
