@@ -112,6 +112,23 @@ double directionalAlbedo(int model, const glsl::slMaterial& material, double the
     std::sort(breaks.begin(), breaks.end());
   }
 
+  // Values of N.V where a halfway model's f_r has a kink or a step, which
+  // become breaks of the polar integral (about N, in H, they are curves
+  // that the bisection would chase): Ashikhmin-Shirley divides by
+  // max(N.L, N.V); the approximation of Beckmann's Lambda drops to 0 where
+  // cot(theta_o) / alpha reaches 1.6 (from -6e-5: a small step). For
+  // Ashikhmin-Shirley that took the time of 10 angles from 0.46 s to 0.10 s.
+  std::vector<double> kinkElevations;
+  if (lobe == SpecularLobe::AshikhminShirley)
+  {
+    kinkElevations.push_back(cosI);
+  }
+  if (lobe == SpecularLobe::Beckmann)
+  {
+    const double cot = 1.6 * std::max<double>(m.roughness, glsld::SL_MIN_ROUGHNESS);
+    kinkElevations.push_back(cot / std::sqrt(1.0 + cot * cot));
+  }
+
   // The frame of the pole: R with T1 in the plane of incidence (N.T1 =
   // sin theta_i) for the Phong and Lambert models; N for Blinn-Phong's H.
   const glm::dvec3 R(-sinI, 0.0, cosI), T1(cosI, 0.0, sinI), T2(0.0, 1.0, 0.0);
@@ -121,6 +138,19 @@ double directionalAlbedo(int model, const glsl::slMaterial& material, double the
     // (Blinn-Phong, t the angle of H from N): the horizon is at
     // t = pi/2 + delta, or half that.
     const double delta = std::atan2(sinI * cosPhi, cosI);
+    if (lobe == SpecularLobe::None)
+    {
+      // The diffuse models, about N: Oren-Nayar's kinks lie on lines of
+      // these coordinates, at theta_o = theta_i (where its alpha and beta
+      // swap) and at the azimuth's right angle (max(0, cos(phi_o - phi_i)),
+      // where the outer integral is split). About R they are curves, which
+      // the bisection chased: 60 ms an angle instead of under 1.
+      auto f = [&](double t) {
+        const glm::dvec3 V(std::sin(t) * cosPhi, std::sin(t) * sinPhi, std::cos(t));
+        return integrand(V) * std::sin(t);
+      };
+      return piecewise(f, std::vector<double>{ thetaI }, 0.5 * kPi, tolerance);
+    }
     if (blinn)
     {
       auto f = [&](double t) {
@@ -128,7 +158,25 @@ double directionalAlbedo(int model, const glsl::slMaterial& material, double the
         const double LdotH = glm::dot(L, H);
         return integrand(2.0 * LdotH * H - L) * 4.0 * LdotH * std::sin(t);
       };
-      return piecewise(f, breaks, 0.5 * (0.5 * kPi + delta), tolerance);
+      if (kinkElevations.empty())
+      {
+        return piecewise(f, breaks, 0.5 * (0.5 * kPi + delta), tolerance);
+      }
+      // N.V = r cos(2t - delta): it equals c at 2t = delta +- acos(c / r).
+      const double r = std::hypot(sinI * cosPhi, cosI);
+      std::vector<double> withKinks = breaks;
+      for (double c : kinkElevations)
+      {
+        if (std::abs(c) < r)
+        {
+          const double a = std::acos(c / r);
+          for (double t : { 0.5 * (delta - a), 0.5 * (delta + a) })
+          {
+            withKinks.insert(std::upper_bound(withKinks.begin(), withKinks.end(), t), t);
+          }
+        }
+      }
+      return piecewise(f, withKinks, 0.5 * (0.5 * kPi + delta), tolerance);
     }
     auto f = [&](double t) {
       const glm::dvec3 V = std::cos(t) * R + std::sin(t) * (cosPhi * T1 + sinPhi * T2);
