@@ -66,7 +66,12 @@ double piecewise(const F& f, const std::vector<double>& breaks, double end, doub
       start = b;
     }
   }
-  return sum + adaptive(f, start, end, tolerance * (end - start) / end);
+  // The last piece ends at the horizon, where Ward's f_r cos(theta_o) goes
+  // as the square root of cos(theta_o): with t = end - s^2 the integrand
+  // becomes smooth there (and stays smooth for the other models).
+  const double width = std::sqrt(end - start);
+  auto bySquare = [&](double s) { return f(end - s * s) * 2.0 * s; };
+  return sum + adaptive(bySquare, 0.0, width, tolerance * (end - start) / end);
 }
 } // namespace
 
