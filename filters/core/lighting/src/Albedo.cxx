@@ -135,7 +135,7 @@ double directionalAlbedo(int model, const glsl::slMaterial& material, double the
   }
 
   // The frame of the pole: R with T1 in the plane of incidence (N.T1 =
-  // sin theta_i) for the Phong and Lambert models; N for Blinn-Phong's H.
+  // sin theta_i) for the Phong models; N for Blinn-Phong's H.
   const glm::dvec3 R(-sinI, 0.0, cosI), T1(cosI, 0.0, sinI), T2(0.0, 1.0, 0.0);
   auto overAzimuth = [&](double phi, double tolerance) {
     const double cosPhi = std::cos(phi), sinPhi = std::sin(phi);

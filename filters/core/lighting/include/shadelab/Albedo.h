@@ -10,13 +10,17 @@
  * lecture models read literally are not: Lambert k_d cos theta gives pi k_d.
  *
  * The integral is taken in the lobe's own polar coordinates, where the
- * integrand is smooth and its peak sits at the pole: about the mirror
- * direction R for the Phong and Lambert models, about the normal in the space
- * of half vectors H for Blinn-Phong (dw_o = 4 (L.H) dw_h). For each azimuth
- * the polar angle runs exactly to the horizon, so the hemisphere's edge is an
- * integration limit rather than a kink, and the polar range is split at the
- * lobe's width 1/sqrt(n + 1) times 1, 2, 4, ... (and at R.V = 0 for Phong,
- * where max(0, R.V)^n has a kink). Each piece, and the azimuth, is integrated
+ * integrand is smooth and its peak sits at the pole: about the normal for
+ * the diffuse models (split at theta_o = theta_i, Oren-Nayar's kink), about
+ * the mirror direction R for the Phong models, about the normal in the space
+ * of half vectors H for Blinn-Phong and the microfacet models (dw_o = 4 (L.H)
+ * dw_h). For each azimuth the polar angle runs exactly to the horizon, so
+ * the hemisphere's edge is an integration limit rather than a kink, and the
+ * polar range is split at the lobe's width times 1, 2, 4, ... (and at
+ * R.V = 0 for Phong, where max(0, R.V)^n has a kink; where N.V crosses the
+ * kinks of Ashikhmin-Shirley and Beckmann in H). The last piece is taken in
+ * s = sqrt(t_horizon - t), smooth where Ward's integrand goes as a square
+ * root of cos(theta_o). Each piece, and the azimuth, is integrated
  * by adaptive 15-point Gauss-Kronrod, bisecting until the Kronrod estimate
  * |K15 - G7| of each piece is below its share of 1e-9 max(1, |a|).
  */
