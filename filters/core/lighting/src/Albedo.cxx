@@ -114,8 +114,16 @@ double directionalAlbedo(int model, const glsl::slMaterial& material, double the
   if (!blinn)
   {
     breaks.push_back(0.5 * kPi);
-    std::sort(breaks.begin(), breaks.end());
   }
+  if (lobe == SpecularLobe::AshikhminShirley)
+  {
+    // Its exponent is taken as the mean of nu and nv where
+    // 1 - (N.H)^2 <= SL_MIN_COS_THETA: a small step at sin(t) = 1e-3 that
+    // the bisection chased 40 levels deep at every azimuth (at 89 degrees,
+    // 48 ms of the angle's 51).
+    breaks.push_back(std::asin(std::sqrt(glsld::SL_MIN_COS_THETA)));
+  }
+  std::sort(breaks.begin(), breaks.end());
 
   // Values of N.V where a halfway model's f_r has a kink or a step, which
   // become breaks of the polar integral (about N, in H, they are curves

@@ -18,7 +18,9 @@
  * the hemisphere's edge is an integration limit rather than a kink, and the
  * polar range is split at the lobe's width times 1, 2, 4, ... (and at
  * R.V = 0 for Phong, where max(0, R.V)^n has a kink; where N.V crosses the
- * kinks of Ashikhmin-Shirley and Beckmann in H). The last piece is taken in
+ * kinks of Ashikhmin-Shirley and Beckmann in H, and at the step of
+ * Ashikhmin-Shirley's exponent where 1 - (N.H)^2 reaches SL_MIN_COS_THETA).
+ * The last piece is taken in
  * s = sqrt(t_horizon - t), smooth where Ward's integrand goes as a square
  * root of cos(theta_o). Each piece, and the azimuth, is integrated
  * by adaptive 15-point Gauss-Kronrod, bisecting until the Kronrod estimate
