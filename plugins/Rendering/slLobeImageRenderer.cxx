@@ -49,6 +49,9 @@ namespace
 const unsigned char kPalette[6][3] = { { 228, 26, 28 }, { 55, 126, 184 }, { 77, 175, 74 }, { 152, 78, 163 },
   { 255, 127, 0 }, { 166, 86, 40 } };
 
+/// Incidence angles of the albedo curves, 0 to 89 degrees.
+constexpr int kAlbedoCurveAngles = 46;
+
 vtkSmartPointer<vtkActor> lineActor(const double from[3], const double to[3], double r, double g, double b)
 {
   vtkNew<vtkLineSource> line;
@@ -214,8 +217,18 @@ bool slLobeImageRenderer::Render()
   vtkSmartPointer<vtkChartXY> albedo =
     makeChart("directional albedo", "incidence (degrees)", "albedo");
 
+  // The curves of the models drawn, no others.
   vtkNew<slAlbedoTable> albedoTable;
   slCopyMaterialNumbers(this->LobeParameters.Get(), albedoTable.Get());
+  albedoTable->SetNumberOfAngles(kAlbedoCurveAngles);
+  albedoTable->DisableAllModels();
+  for (const Entry& entry : this->Entries)
+  {
+    if (entry.Model >= 0)
+    {
+      albedoTable->SetModelEnabled(entry.Model, true);
+    }
+  }
   albedoTable->Update();
   vtkTable* curves = albedoTable->GetOutput();
   vtkAbstractArray* degrees = curves->GetColumnByName("IncidenceDegrees");

@@ -134,6 +134,49 @@ TEST(AlbedoTable, ClosedFormsAtTheMaterialsRoughnessAndIndex)
   EXPECT_GT(std::abs(column(table->GetOutput(), "ward", 2) - oblique), 1e-3);
 }
 
+TEST(AlbedoTable, OnlyTheEnabledModelsHaveColumns)
+{
+  vtkNew<slAlbedoTable> table;
+  table->SetNumberOfAngles(3);
+  table->SetShininess(20.0);
+  table->DisableAllModels();
+  const int phong = static_cast<int>(ShadingModel::Phong), ward = static_cast<int>(ShadingModel::Ward);
+  // Enabled out of order: the columns stay in model order, each under its name.
+  EXPECT_TRUE(table->SetModelEnabled(ward, true));
+  EXPECT_TRUE(table->SetModelEnabled(phong, true));
+  table->Update();
+  vtkTable* t = table->GetOutput();
+  ASSERT_EQ(t->GetNumberOfColumns(), 3);
+  EXPECT_STREQ(t->GetColumnName(0), "IncidenceDegrees");
+  EXPECT_STREQ(t->GetColumnName(1), "phong");
+  EXPECT_STREQ(t->GetColumnName(2), "ward");
+  // Lecture Phong at normal incidence: 2 pi / (n + 2); Ward's column holds
+  // Ward's values (those of the table of every model).
+  EXPECT_NEAR(column(t, "phong", 0), 2.0 * kPi / 22.0, 1e-6);
+  vtkNew<slAlbedoTable> every;
+  every->SetNumberOfAngles(3);
+  every->Update();
+  EXPECT_EQ(every->GetOutput()->GetNumberOfColumns(), 1 + kLightingModelCount);
+  for (int row = 0; row < 3; ++row)
+  {
+    EXPECT_EQ(column(t, "ward", row), column(every->GetOutput(), "ward", row)) << row;
+  }
+  // A change of the selection updates the table.
+  EXPECT_TRUE(table->SetModelEnabled(ward, false));
+  EXPECT_FALSE(table->GetModelEnabled(ward));
+  EXPECT_TRUE(table->GetModelEnabled(phong));
+  table->Update();
+  EXPECT_EQ(table->GetOutput()->GetNumberOfColumns(), 2);
+  table->EnableAllModels();
+  table->Update();
+  EXPECT_EQ(table->GetOutput()->GetNumberOfColumns(), 1 + kLightingModelCount);
+  // No such model: an error, and nothing changes.
+  const std::string error = callError(table, [&] { return table->SetModelEnabled(kLightingModelCount, false); });
+  EXPECT_NE(error.find("SetModelEnabled: 11 is not a lighting model (0 to 10)"), std::string::npos) << error;
+  EXPECT_FALSE(table->GetModelEnabled(-1));
+  EXPECT_TRUE(table->GetModelEnabled(kLightingModelCount - 1));
+}
+
 TEST(BRDFLobeSource, NormalisedLambertIsAHemisphereOfRadiusRhoOverPi)
 {
   vtkNew<slBRDFLobeSource> lobe;

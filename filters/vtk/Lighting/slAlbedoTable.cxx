@@ -18,6 +18,7 @@ vtkStandardNewMacro(slAlbedoTable);
 
 slAlbedoTable::slAlbedoTable()
   : Material(new shadelab::SceneMaterial)
+  , ModelEnabled(static_cast<size_t>(shadelab::kLightingModelCount), true)
 {
   this->Material->shininess = 20.0f;
   this->SetNumberOfInputPorts(0);
@@ -44,13 +45,21 @@ int slAlbedoTable::RequestData(vtkInformation*, vtkInformationVector**, vtkInfor
     degrees->SetValue(a, this->MaximumIncidence * a / (angles - 1));
   }
   output->AddColumn(degrees);
-  const int models = static_cast<int>(modelNames().size());
-  std::vector<double> values(static_cast<size_t>(models * angles));
+  std::vector<int> models;
+  for (int model = 0; model < kLightingModelCount; ++model)
+  {
+    if (this->ModelEnabled[static_cast<size_t>(model)])
+    {
+      models.push_back(model);
+    }
+  }
+  const int count = static_cast<int>(models.size());
+  std::vector<double> values(static_cast<size_t>(count * angles));
   const glsl::slMaterial material = toEvaluationMaterial(*this->Material);
-  vtkSMPTools::For(0, models * angles, [&](vtkIdType begin, vtkIdType end) {
+  vtkSMPTools::For(0, count * angles, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType k = begin; k < end; ++k)
     {
-      const int model = static_cast<int>(k / angles), a = static_cast<int>(k % angles);
+      const int model = models[static_cast<size_t>(k / angles)], a = static_cast<int>(k % angles);
       glsl::slMaterial m = material;
       m.ambient = m.emission = glm::vec3(0.0f);
       // The diffuse albedo of a model without a specular term, else its specular one.
@@ -61,14 +70,14 @@ int slAlbedoTable::RequestData(vtkInformation*, vtkInformationVector**, vtkInfor
         directionalAlbedo(model, m, degrees->GetValue(a) * 3.14159265358979323846 / 180.0);
     }
   });
-  for (int model = 0; model < models; ++model)
+  for (int i = 0; i < count; ++i)
   {
     vtkNew<vtkDoubleArray> column;
-    column->SetName(modelNames()[static_cast<size_t>(model)].c_str());
+    column->SetName(modelName(static_cast<ShadingModel>(models[static_cast<size_t>(i)])));
     column->SetNumberOfTuples(angles);
     for (int a = 0; a < angles; ++a)
     {
-      column->SetValue(a, values[static_cast<size_t>(model * angles + a)]);
+      column->SetValue(a, values[static_cast<size_t>(i * angles + a)]);
     }
     output->AddColumn(column);
   }
@@ -77,10 +86,56 @@ int slAlbedoTable::RequestData(vtkInformation*, vtkInformationVector**, vtkInfor
 
 SL_MATERIAL_NUMBER_METHODS(slAlbedoTable)
 
+bool slAlbedoTable::SetModelEnabled(int model, bool enabled)
+{
+  if (!shadelab::isLightingModel(model))
+  {
+    vtkErrorMacro(<< "SetModelEnabled: " << model << " is not a lighting model (0 to "
+                  << shadelab::kLightingModelCount - 1 << ")");
+    return false;
+  }
+  if (this->ModelEnabled[static_cast<size_t>(model)] != enabled)
+  {
+    this->ModelEnabled[static_cast<size_t>(model)] = enabled;
+    this->Modified();
+  }
+  return true;
+}
+
+bool slAlbedoTable::GetModelEnabled(int model)
+{
+  return shadelab::isLightingModel(model) && this->ModelEnabled[static_cast<size_t>(model)];
+}
+
+void slAlbedoTable::EnableAllModels()
+{
+  for (int model = 0; model < shadelab::kLightingModelCount; ++model)
+  {
+    this->SetModelEnabled(model, true);
+  }
+}
+
+void slAlbedoTable::DisableAllModels()
+{
+  for (int model = 0; model < shadelab::kLightingModelCount; ++model)
+  {
+    this->SetModelEnabled(model, false);
+  }
+}
+
 void slAlbedoTable::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   slPrintMaterialNumbers(os, indent, *this->Material);
   os << indent << "NumberOfAngles: " << this->NumberOfAngles << "\n";
   os << indent << "MaximumIncidence: " << this->MaximumIncidence << "\n";
+  os << indent << "Models:";
+  for (int model = 0; model < shadelab::kLightingModelCount; ++model)
+  {
+    if (this->ModelEnabled[static_cast<size_t>(model)])
+    {
+      os << " " << shadelab::modelName(static_cast<shadelab::ShadingModel>(model));
+    }
+  }
+  os << "\n";
 }
