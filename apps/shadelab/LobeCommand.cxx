@@ -116,11 +116,13 @@ void refuseModelOptionsForFilesAlone(const CommandLine& cl)
   }
 }
 
-/// The albedo table as CSV, written all-or-nothing.
+/// The albedo table as CSV, written all-or-nothing, with 10 significant
+/// digits: the built-in models' albedo is integrated to 1e-9 relative
+/// (Albedo.h), which 6 digits would round away.
 void writeTable(vtkTable* table, const std::string& path)
 {
   std::ostringstream csv;
-  csv.precision(6);
+  csv.precision(10);
   for (vtkIdType c = 0; c < table->GetNumberOfColumns(); ++c)
   {
     csv << (c ? "," : "") << table->GetColumnName(c);
@@ -185,7 +187,8 @@ void refuseOptionsOfOtherModes(const CommandLine& cl, LobeMode mode)
     { "ks", { M::LobeImage, M::LobeMesh }, "a single lobe (-o LOBE.vtp or LOBE.png)" },
     { "cosine", { M::LobeImage, M::LobeMesh, M::LobesOnMesh }, "lobes, not with --albedo-table" },
     { "slice", { M::LobeMesh }, "a single lobe as a mesh (-o LOBE.vtp)" },
-    { "models", { M::LobeImage }, "a single lobe as an image (-o LOBE.png)" },
+    { "models", { M::LobeImage, M::AlbedoTable }, "a single lobe as an image (-o LOBE.png) or --albedo-table" },
+    { "angles", { M::AlbedoTable }, "--albedo-table" },
     { "points", { M::LobesOnMesh }, "lobes on MESH" },
     { "light", { M::LobesOnMesh }, "lobes on MESH" },
     { "scale", { M::LobesOnMesh }, "lobes on MESH" },
@@ -255,7 +258,16 @@ std::vector<OptionSpec> lobeOptions()
   specs.push_back({ "light", "l", "INDEX", "lobes on MESH: the light giving the incident direction (default: the first light that has one)" });
   specs.push_back({ "scale", "", "X", "lobes on MESH: largest lobe / bounding-box diagonal (default 0.1)" });
   specs.push_back({ "albedo-table", "", "", "write the directional albedo table of every model (CSV)" });
-  specs.push_back({ "models", "", "A,B,...", "single lobe as an image: overlay these models (default: --model)" });
+  {
+    vtkNew<slAlbedoTable> table;
+    std::ostringstream text;
+    text << "albedo table: incidence angles from 0 to " << table->GetMaximumIncidence() << " degrees (default "
+         << table->GetNumberOfAngles() << ", " << table->GetNumberOfAnglesMinValue() << " to "
+         << table->GetNumberOfAnglesMaxValue() << ")";
+    specs.push_back({ "angles", "", "N", text.str() });
+  }
+  specs.push_back({ "models", "", "A,B,...",
+    "single lobe as an image: overlay these models (default: --model); albedo table: only these models' columns (default: --model, else all)" });
   for (const OptionSpec& spec : brdfOptionSpecs())
   {
     specs.push_back(spec);
@@ -277,7 +289,8 @@ int runLobe(const std::vector<std::string>& args)
                  "       shadelab lobe [--models A,B,...] [--brdf F.brdf [--param N=V ...] ...] [--incidence DEG]\n"
                  "           -o LOBE.png   (3D lobes, polar plot, albedo; at most six BRDFs)\n"
                  "       shadelab lobe MESH [--scene S.json] [--points N] -o LOBES.vtp|LOBES.png\n"
-                 "       shadelab lobe --albedo-table [--shininess N] [--roughness X ...] [--brdf F.brdf ...] -o TABLE.csv\n\n"
+                 "       shadelab lobe --albedo-table [--models A,B,...] [--angles N] [--shininess N] [--roughness X ...]\n"
+                 "           [--brdf F.brdf ...] -o TABLE.csv\n\n"
                  "A BRDF lobe r(w_o) = f_r(w_i, w_o) (optionally x cos theta_o) around +z, lobes on a\n"
                  "mesh in each point's normal frame lit by the scene's light, or the directional albedo\n"
                  "of every model against the angle of incidence. A BRDF Explorer .brdf file's BRDF is\n"
@@ -335,6 +348,17 @@ int runLobe(const std::vector<std::string>& args)
   {
     vtkNew<slAlbedoTable> table;
     applyMaterialOptionsByKey(cl, table.GetPointer());
+    table->SetNumberOfAngles(cl.getIndex(
+      "angles", table->GetNumberOfAngles(), table->GetNumberOfAnglesMinValue(), table->GetNumberOfAnglesMaxValue()));
+    if (cl.has("models") || cl.has("model"))
+    {
+      table->DisableAllModels();
+      const std::string names = cl.get("models", modelName(static_cast<ShadingModel>(modelNumber(cl))));
+      for (const ShadingModel model : parseModelList("models", names, true))
+      {
+        table->SetModelEnabled(static_cast<int>(model), true);
+      }
+    }
     slUpdateOrThrow(table);
     vtkTable* out = table->GetOutput();
     vtkAbstractArray* degrees = out->GetColumnByName("IncidenceDegrees");

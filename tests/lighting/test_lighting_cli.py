@@ -1,6 +1,7 @@
 """shadelab cosine / light / lobe / reference: help, outputs, one-line errors."""
 import math
 import os
+import struct
 import subprocess
 import sys
 import tempfile
@@ -59,6 +60,31 @@ class LightingCommandsTest(unittest.TestCase):
             self.assertTrue(os.path.getsize(job[job.index("-o") + 1]) > 0, job)
         with open(self.out("albedo.csv")) as f:
             self.assertTrue(f.readline().startswith("IncidenceDegrees,lambert,phong"))
+
+    def test_albedo_table_of_chosen_models_and_angles(self):
+        """--models and --model choose the columns (in the table's order), --angles the rows
+        (0 to 89 degrees); lecture Phong's albedo at normal incidence is 2 pi / (n + 2)."""
+        r = run("lobe", "--albedo-table", "--models", "ward,phong", "--angles", "4", "--shininess", "30",
+                "-o", self.out("two.csv"))
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(self.out("two.csv")) as f:
+            rows = [line.strip().split(",") for line in f]
+        self.assertEqual(rows[0], ["IncidenceDegrees", "phong", "ward"])
+        for row, degrees in zip(rows[1:], [0.0, 89.0 / 3, 2 * 89.0 / 3, 89.0], strict=True):
+            self.assertAlmostEqual(float(row[0]), degrees, places=8)
+        # Written with 10 significant digits, integrated to 1e-9 relative.
+        self.assertAlmostEqual(float(rows[1][1]), 2 * math.pi / 32, places=8)
+        r = run("lobe", "--albedo-table", "--model", "oren-nayar", "--roughness", "0", "-o", self.out("one.csv"))
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(self.out("one.csv")) as f:
+            rows = [line.strip().split(",") for line in f]
+        self.assertEqual(rows[0], ["IncidenceDegrees", "oren-nayar"])
+        self.assertEqual(len(rows), 11)
+        # Oren-Nayar at roughness 0 is the normalised Lambert: 1 at every angle, but for
+        # its 1 / pi, which slLighting.glsl takes from pi rounded to float.
+        float_pi = struct.unpack("f", struct.pack("f", math.pi))[0]
+        for row in rows[1:]:
+            self.assertAlmostEqual(float(row[1]), math.pi / float_pi, places=9)
 
     def test_scene_diffuse_texture_multiplies_k_d(self):
         """material.diffuseTexture is the base colour of light's Diffuse, as render draws it: k_d * texel * N.L."""
