@@ -11,6 +11,9 @@ from inputs import (QUAD_OBJ, TETRA_OFF, THREE_LIGHTS, dds_volume, exr, exr_attr
                     vtp_appended_base64_header, vtp_compressed_header)
 
 
+EXTRACT_SURFACE = "extract its surface first (vtkDataSetSurfaceFilter, or ParaView's Extract Surface) and save it as .vtp"
+
+
 def mesh_case(name, file_name, data, message, status=1):
     """shadelab normals on one mesh file."""
     return (name, ["normals", file_name, "-o", "out.vtp"], {file_name: data}, status,
@@ -423,7 +426,7 @@ CASES = [
               'line 8: POLYGONS: "4294967298" is not an integer VTK reads as int'),
     mesh_case("vtk dataset type with a tail", "a.vtk", legacy_vtk(b"POLYGONS 1 4\n3 0 1 2\n", dataset=b"POLYDATAx"),
               'line 4: dataset type "POLYDATAX" is not POLYDATA, though VTK would read it as POLYDATA'),
-    mesh_case("vtk not polydata", "a.vtk", legacy_vtk(b"", dataset=b"UNSTRUCTURED_GRID"), 'Cannot read dataset type: unstructured_grid'),
+    mesh_case("vtk not polydata", "a.vtk", legacy_vtk(b"", dataset=b"UNSTRUCTURED_GRID"), 'line 4: the dataset is UNSTRUCTURED_GRID, not a surface (POLYDATA): ' + EXTRACT_SURFACE),
     mesh_case("vtk truncated polygons", "a.vtk", legacy_vtk(b"POLYGONS 2 8\n3 0 1 2\n"), 'line 9: the file ends where value 5 of 8 of POLYGONS should be'),
     mesh_case("vtk garbage", "a.vtk", b"\x00\x01binary junk\xff", 'the file ends within its three header lines'),
     # found by fuzzing: NUL bytes in the version line crashed vtkDataReader
@@ -501,6 +504,9 @@ CASES = [
     mesh_case("mesh is a directory without extension", "d", None, 'is a directory, not a mesh file'),
     mesh_case("mesh missing", "nothere.obj", "skip", 'cannot open file: No such file or directory'),
     mesh_case("mesh unsupported extension", "a.xyz", b"1 2 3\n", 'unsupported mesh format ".xyz" (supported: .obj .ply .stl .vtp .vtk .off .gltf .glb)'),
+    mesh_case("mesh of an unstructured grid", "a.vtu", b'<VTKFile type="UnstructuredGrid"/>\n',
+              'unsupported mesh format ".vtu" (supported: .obj .ply .stl .vtp .vtk .off .gltf .glb): '
+              'a VTK dataset that is not a surface; ' + EXTRACT_SURFACE),
     # Non-finite attributes
     # Normals, texture coordinates and tangents must be finite in every format (the filters carried a
     # NaN into their output, which ShadeLab's own OBJ reader then rejected); text formats name the line.

@@ -196,7 +196,10 @@ void walk(const std::string& bytes)
       const std::string type = upper(w.word("the dataset type"));
       if (type.compare(0, 8, "POLYDATA") != 0)
       {
-        return; // not polydata: vtkPolyDataReader reads nothing and says so
+        // vtkPolyDataReader would read nothing and say only "Cannot read
+        // dataset type".
+        fail("line " + std::to_string(w.line()) + ": the dataset is " + shadelab::printableText(type) +
+          ", not a surface (POLYDATA): " + kExtractSurfaceFirst);
       }
       if (type != "POLYDATA")
       {

@@ -22,6 +22,11 @@
 /// element or byte where there is one.
 std::string slMeshFileProblem(const std::string& fileName, const std::string& ext);
 
+/// What a VTK dataset that is not a surface (a .vtu, or a legacy .vtk
+/// file of an UNSTRUCTURED_GRID, ...) needs before ShadeLab can read it.
+inline constexpr const char* kExtractSurfaceFirst =
+  "extract its surface first (vtkDataSetSurfaceFilter, or ParaView's Extract Surface) and save it as .vtp";
+
 /// The bytes of the file @p fileName, all of them, in one read ("" if it
 /// does not open). The checks that need the whole file read it so.
 std::string slReadWholeFile(const std::string& fileName);

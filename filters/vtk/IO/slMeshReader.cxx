@@ -43,8 +43,10 @@
 #include <vtkStringArray.h>
 #include <vtkXMLPolyDataReader.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <memory>
 #include <new>
 #include <string>
@@ -375,7 +377,12 @@ int slMeshReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInform
   const std::string ext = slLowerExtension(this->FileName);
   if (!CanReadFile(this->FileName))
   {
-    return this->Fail("unsupported mesh format \"" + ext + "\" (supported: " + GetSupportedExtensions() + ")");
+    // VTK's XML formats of datasets other than polydata, serial and parallel.
+    static const char* const notSurfaces[] = { ".vtu", ".vts", ".vtr", ".vti", ".vtm", ".pvtu", ".pvts", ".pvtr",
+      ".pvti" };
+    const bool dataset = std::find(std::begin(notSurfaces), std::end(notSurfaces), ext) != std::end(notSurfaces);
+    return this->Fail("unsupported mesh format \"" + ext + "\" (supported: " + GetSupportedExtensions() + ")" +
+      (dataset ? std::string(": a VTK dataset that is not a surface; ") + kExtractSurfaceFirst : std::string()));
   }
   std::ifstream probe(this->FileName, std::ios::binary);
   if (!probe)
