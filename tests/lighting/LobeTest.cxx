@@ -142,7 +142,7 @@ TEST(AlbedoTable, OnlyTheEnabledModelsHaveColumns)
   table->DisableAllModels();
   const int phong = static_cast<int>(ShadingModel::Phong), ward = static_cast<int>(ShadingModel::Ward);
   // Enabled out of order: the columns stay in model order, each under its name.
-  EXPECT_TRUE(table->SetModelEnabled(ward, true));
+  EXPECT_TRUE(table->SetModelEnabled("ward", true));
   EXPECT_TRUE(table->SetModelEnabled(phong, true));
   table->Update();
   vtkTable* t = table->GetOutput();
@@ -171,8 +171,12 @@ TEST(AlbedoTable, OnlyTheEnabledModelsHaveColumns)
   table->Update();
   EXPECT_EQ(table->GetOutput()->GetNumberOfColumns(), 1 + kLightingModelCount);
   // No such model: an error, and nothing changes.
-  const std::string error = callError(table, [&] { return table->SetModelEnabled(kLightingModelCount, false); });
-  EXPECT_NE(error.find("SetModelEnabled: 11 is not a lighting model (0 to 10)"), std::string::npos) << error;
+  std::string error = callError(table, [&] { return table->SetModelEnabled(kLightingModelCount, false); });
+  EXPECT_NE(error.find("SetModelEnabled: 11 is not a lighting model (0 lambert, 1 phong,"), std::string::npos)
+    << error;
+  error = callError(table, [&] { return table->SetModelEnabled("toon", false); });
+  EXPECT_NE(error.find("SetModelEnabled: \"toon\" is not a lighting model (lambert, phong,"), std::string::npos)
+    << error;
   EXPECT_FALSE(table->GetModelEnabled(-1));
   EXPECT_TRUE(table->GetModelEnabled(kLightingModelCount - 1));
 }

@@ -5,6 +5,7 @@
 
 #include "slFiniteParameters.h"
 #include "slMaterialNumbers.h"
+#include "slModelCheck.h"
 
 #include <vtkDoubleArray.h>
 #include <vtkInformationVector.h>
@@ -88,10 +89,8 @@ SL_MATERIAL_NUMBER_METHODS(slAlbedoTable)
 
 bool slAlbedoTable::SetModelEnabled(int model, bool enabled)
 {
-  if (!shadelab::isLightingModel(model))
+  if (!slCheckModel(this, model, false, "SetModelEnabled"))
   {
-    vtkErrorMacro(<< "SetModelEnabled: " << model << " is not a lighting model (0 to "
-                  << shadelab::kLightingModelCount - 1 << ")");
     return false;
   }
   if (this->ModelEnabled[static_cast<size_t>(model)] != enabled)
@@ -100,6 +99,23 @@ bool slAlbedoTable::SetModelEnabled(int model, bool enabled)
     this->Modified();
   }
   return true;
+}
+
+bool slAlbedoTable::SetModelEnabled(const char* name, bool enabled)
+{
+  const int model = slModelNumber(name);
+  if (model < 0)
+  {
+    std::string names;
+    for (const std::string& known : shadelab::modelNames())
+    {
+      names += (names.empty() ? "" : ", ") + known;
+    }
+    vtkErrorMacro(<< "SetModelEnabled: \"" << (name ? name : "(null)") << "\" is not a lighting model (" << names
+                  << ")");
+    return false;
+  }
+  return this->SetModelEnabled(model, enabled);
 }
 
 bool slAlbedoTable::GetModelEnabled(int model)

@@ -85,13 +85,14 @@ public:
   ///@}
 
   ///@{
-  /// Which models get a column, by SL_MODEL_* value (isLightingModel()):
-  /// every model by default. A disabled model is not computed (the albedo
-  /// of all eleven at 10 angles takes about 0.2 s on one thread; a viewer
-  /// that draws one needs one). Columns stay in model order. An unknown
-  /// model is an error (vtkErrorMacro): false, nothing changes, and
-  /// GetModelEnabled() returns false.
+  /// Which models get a column, by SL_MODEL_* value (isLightingModel()) or
+  /// by scene-file name ("ward"): every model by default. A disabled model
+  /// is not computed (the albedo of all eleven at 10 angles takes about
+  /// 0.2 s on one thread; a viewer that draws one needs one). Columns stay
+  /// in model order. An unknown model is an error (vtkErrorMacro): false,
+  /// nothing changes, and GetModelEnabled() returns false.
   bool SetModelEnabled(int model, bool enabled);
+  bool SetModelEnabled(const char* name, bool enabled);
   bool GetModelEnabled(int model);
   void EnableAllModels();
   void DisableAllModels();

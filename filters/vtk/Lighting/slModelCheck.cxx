@@ -4,14 +4,14 @@
 
 #include <vtkObject.h>
 
-bool slCheckModel(vtkObject* self, int model, bool sceneOwnAllowed)
+bool slCheckModel(vtkObject* self, int model, bool sceneOwnAllowed, const char* setter)
 {
   const std::string problem = sceneOwnAllowed && model == -1 ? std::string() : shadelab::modelValueProblem(model);
   if (problem.empty())
   {
     return true;
   }
-  vtkErrorWithObjectMacro(self, "SetModel: " << problem << (sceneOwnAllowed ? ", or -1 for the scene's own" : ""));
+  vtkErrorWithObjectMacro(self, << setter << ": " << problem << (sceneOwnAllowed ? ", or -1 for the scene's own" : ""));
   return false;
 }
 

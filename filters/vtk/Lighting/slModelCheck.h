@@ -15,9 +15,11 @@ class vtkObject;
 
 /// True if @p model is a lighting model (or -1 when @p sceneOwnAllowed: the
 /// scene's own); else reports "SetModel: 7 is not a lighting model (0
-/// lambert, 1 phong, ...)" as an error of @p self (vtkErrorWithObjectMacro,
-/// so observers of @p self's ErrorEvent receive it) and returns false.
-SHADELABLIGHTING_EXPORT bool slCheckModel(vtkObject* self, int model, bool sceneOwnAllowed = false);
+/// lambert, 1 phong, ...)" (the @p setter's name first) as an error of
+/// @p self (vtkErrorWithObjectMacro, so observers of @p self's ErrorEvent
+/// receive it) and returns false.
+SHADELABLIGHTING_EXPORT bool slCheckModel(
+  vtkObject* self, int model, bool sceneOwnAllowed = false, const char* setter = "SetModel");
 
 /// The SL_MODEL_* value of the model named @p name in scene files
 /// ("phong", "cook-torrance-ggx", ...; shadelab::modelNames()), or -2 for a
