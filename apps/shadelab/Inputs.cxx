@@ -92,7 +92,7 @@ ShadingModel parseModelOption(const std::string& option, const std::string& valu
   ShadingModel model;
   if (!parseModelName(value, model))
   {
-    throw UsageError("--" + option + ": \"" + value + "\" is not a lighting model (" + commaSeparated(modelNames()) + ")");
+    throw UsageError("--" + option + ": " + modelNameProblem(value.c_str()));
   }
   return model;
 }

@@ -204,10 +204,13 @@ void slLightingPass::SetComponent(int component)
 bool slLightingPass::SetFrequencyName(const char* name)
 {
   shadelab::ShadingFrequency frequency;
-  if (!name || !shadelab::parseFrequencyName(name, frequency))
+  const std::string problem = shadelab::frequencyNameProblem(name);
+  if (!problem.empty())
   {
+    vtkErrorMacro(<< "SetFrequencyName: " << problem);
     return false;
   }
+  shadelab::parseFrequencyName(name, frequency);
   this->SetFrequency(static_cast<int>(frequency));
   return true;
 }

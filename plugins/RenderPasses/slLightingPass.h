@@ -187,7 +187,8 @@ public:
   /// Any other value is an error (vtkErrorMacro) and leaves the model as it was.
   void SetModel(int model);
   vtkGetMacro(Model, int);
-  /// By scene-file name; false for an unknown name.
+  /// By scene-file name; an unknown name is an error (vtkErrorMacro):
+  /// false, and the model as it was.
   bool SetModelName(const char* name);
   ///@}
 
@@ -195,6 +196,8 @@ public:
   /// Shading frequency: FLAT, GOURAUD or PHONG.
   void SetFrequency(int frequency);
   vtkGetMacro(Frequency, int);
+  /// By name ("flat", "gouraud", "phong"); another name is an error
+  /// (vtkErrorMacro): false, and the frequency as it was.
   bool SetFrequencyName(const char* name);
   ///@}
 

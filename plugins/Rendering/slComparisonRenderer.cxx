@@ -66,12 +66,20 @@ void slComparisonRenderer::SetMesh(vtkPolyData* mesh)
 
 bool slComparisonRenderer::AddPanel(const char* text, const char* model, const char* frequency)
 {
-  shadelab::ShadingModel m;
-  shadelab::ShadingFrequency f;
-  if (!model || !frequency || !shadelab::parseModelName(model, m) || !shadelab::parseFrequencyName(frequency, f))
+  std::string problem = shadelab::modelNameProblem(model);
+  if (problem.empty())
   {
+    problem = shadelab::frequencyNameProblem(frequency);
+  }
+  if (!problem.empty())
+  {
+    vtkErrorMacro(<< "AddPanel: " << problem);
     return false;
   }
+  shadelab::ShadingModel m;
+  shadelab::ShadingFrequency f;
+  shadelab::parseModelName(model, m);
+  shadelab::parseFrequencyName(frequency, f);
   this->Panels.push_back({ text ? text : "", static_cast<int>(m), static_cast<int>(f) });
   this->Modified();
   return true;

@@ -47,7 +47,7 @@ public:
   ///@}
 
   /// Adds a panel with a model and frequency by their scene-file names.
-  /// Returns false (and adds nothing) for an unknown name.
+  /// An unknown name is an error (vtkErrorMacro): false, and nothing added.
   bool AddPanel(const char* label, const char* model, const char* frequency);
   void RemoveAllPanels();
   int GetNumberOfPanels() const { return static_cast<int>(this->Panels.size()); }

@@ -48,6 +48,8 @@ namespace
 /// Distinct colours (0-255) for up to six overlaid models.
 const unsigned char kPalette[6][3] = { { 228, 26, 28 }, { 55, 126, 184 }, { 77, 175, 74 }, { 152, 78, 163 },
   { 255, 127, 0 }, { 166, 86, 40 } };
+/// BRDFs overlaid at most: one colour each.
+constexpr size_t kMaxEntries = sizeof(kPalette) / sizeof(kPalette[0]);
 
 /// Incidence angles of the albedo curves, 0 to 89 degrees.
 constexpr int kAlbedoCurveAngles = 46;
@@ -107,11 +109,18 @@ slLobeImageRenderer::~slLobeImageRenderer() = default;
 
 bool slLobeImageRenderer::AddModel(const char* name)
 {
-  shadelab::ShadingModel model;
-  if (!name || !shadelab::parseModelName(name, model) || this->Entries.size() >= 6)
+  const std::string problem = shadelab::modelNameProblem(name);
+  if (!problem.empty())
+  {
+    vtkErrorMacro(<< "AddModel: " << problem);
+    return false;
+  }
+  if (!this->HasRoomFor("AddModel"))
   {
     return false;
   }
+  shadelab::ShadingModel model;
+  shadelab::parseModelName(name, model);
   Entry entry;
   entry.Model = static_cast<int>(model);
   this->Entries.push_back(entry);
@@ -121,7 +130,12 @@ bool slLobeImageRenderer::AddModel(const char* name)
 
 bool slLobeImageRenderer::AddBRDFFile(const char* path)
 {
-  if (!path || this->Entries.size() >= 6)
+  if (!path || !*path)
+  {
+    vtkErrorMacro(<< "AddBRDFFile: no file name given");
+    return false;
+  }
+  if (!this->HasRoomFor("AddBRDFFile"))
   {
     return false;
   }
@@ -130,6 +144,16 @@ bool slLobeImageRenderer::AddBRDFFile(const char* path)
   this->Entries.push_back(entry);
   this->Modified();
   return true;
+}
+
+bool slLobeImageRenderer::HasRoomFor(const char* adder)
+{
+  if (this->Entries.size() < kMaxEntries)
+  {
+    return true;
+  }
+  vtkErrorMacro(<< adder << ": " << kMaxEntries << " BRDFs (models and .brdf files) are overlaid already, the most there can be");
+  return false;
 }
 
 void slLobeImageRenderer::AddBRDFFileParameter(const char* nameValue)
@@ -143,7 +167,7 @@ void slLobeImageRenderer::AddBRDFFileParameter(const char* nameValue)
 
 void slLobeImageRenderer::GetColor(int index, unsigned char rgb[3])
 {
-  const unsigned char* c = kPalette[std::clamp(index, 0, 5)];
+  const unsigned char* c = kPalette[std::clamp(index, 0, static_cast<int>(kMaxEntries) - 1)];
   std::copy(c, c + 3, rgb);
 }
 

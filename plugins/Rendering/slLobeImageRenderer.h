@@ -37,12 +37,13 @@ public:
   vtkTypeMacro(slLobeImageRenderer, slPanelRenderer);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// Adds a model by its scene-file name; false for an unknown name or
-  /// when six BRDFs (models and files) are overlaid already.
+  /// Adds a model by its scene-file name; an unknown name, or a seventh
+  /// BRDF (models and files: six are overlaid at most), is an error
+  /// (vtkErrorMacro): false, and nothing added.
   bool AddModel(const char* name);
 
-  /// Adds a BRDF Explorer .brdf file, read when rendering; false when six
-  /// BRDFs are overlaid already. Its name in the legends is the file's
+  /// Adds a BRDF Explorer .brdf file, read when rendering; no name, or a
+  /// seventh BRDF, is an error (vtkErrorMacro): false, and nothing added. Its name in the legends is the file's
   /// name without its folder (shadelab::brdfDisplayName()).
   bool AddBRDFFile(const char* path);
 
@@ -86,6 +87,9 @@ private:
     std::vector<std::string> Overrides;
   };
   std::vector<Entry> Entries;
+  /// True if another BRDF fits (one colour each); else an error of
+  /// @p adder, false.
+  bool HasRoomFor(const char* adder);
   std::vector<double> FileAlbedos;
   vtkSmartPointer<slBRDFLobeSource> LobeParameters;
 };

@@ -93,6 +93,14 @@ TEST(LobeImage, BadBRDFFileIsOneLine)
   {
     EXPECT_TRUE(many->AddBRDFFile("a.brdf"));
   }
-  EXPECT_FALSE(many->AddModel("phong"));
-  EXPECT_FALSE(many->AddBRDFFile("a.brdf"));
+  EXPECT_EQ(callError(many, [&] { return many->AddModel("phong"); }),
+    "AddModel: 6 BRDFs (models and .brdf files) are overlaid already, the most there can be");
+  EXPECT_EQ(callError(many, [&] { return many->AddBRDFFile("a.brdf"); }),
+    "AddBRDFFile: 6 BRDFs (models and .brdf files) are overlaid already, the most there can be");
+  // A model's name as scene files spell it; a file's name.
+  vtkNew<slLobeImageRenderer> named;
+  const std::string toon = callError(named, [&] { return named->AddModel("Phong"); });
+  EXPECT_EQ(toon.rfind("AddModel: \"Phong\" is not a lighting model (lambert, phong, blinn-phong,", 0), 0u) << toon;
+  EXPECT_EQ(callError(named, [&] { return named->AddBRDFFile(""); }), "AddBRDFFile: no file name given");
+  EXPECT_TRUE(named->AddModel("phong"));
 }

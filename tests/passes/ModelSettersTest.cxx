@@ -2,9 +2,12 @@
 // is not a row of LightingTables.h: one error naming the valid models, and
 // the model stays as it was (never clamped to another model).
 #include "shadelab/LightingTables.h"
+#include "shadelab/Scene.h"
 #include "slBRDFLobeSource.h"
+#include "slComparisonRenderer.h"
 #include "slLightingPass.h"
 #include "slRadianceFilter.h"
+#include "slScene.h"
 
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
@@ -17,9 +20,9 @@
 
 namespace
 {
-/// The error messages @p object reports while @p model is set.
-template <typename T>
-std::vector<std::string> errorsSettingModel(T* object, int model)
+/// The error messages @p object reports during @p call.
+template <typename Call>
+std::vector<std::string> errorsDuring(vtkObject* object, Call&& call)
 {
   std::vector<std::string> errors;
   vtkNew<vtkCallbackCommand> observer;
@@ -28,9 +31,27 @@ std::vector<std::string> errorsSettingModel(T* object, int model)
     static_cast<std::vector<std::string>*>(list)->push_back(static_cast<const char*>(message));
   });
   const unsigned long tag = object->AddObserver(vtkCommand::ErrorEvent, observer);
-  object->SetModel(model);
+  call();
   object->RemoveObserver(tag);
   return errors;
+}
+
+/// The error messages @p object reports while @p model is set.
+template <typename T>
+std::vector<std::string> errorsSettingModel(T* object, int model)
+{
+  return errorsDuring(object, [&] { object->SetModel(model); });
+}
+
+/// Expects @p call to return false with one error that holds @p text.
+template <typename Call>
+void expectOneError(vtkObject* object, Call&& call, const std::string& text)
+{
+  bool result = true;
+  const std::vector<std::string> errors = errorsDuring(object, [&] { result = call(); });
+  EXPECT_FALSE(result) << text;
+  ASSERT_EQ(errors.size(), 1u) << text;
+  EXPECT_NE(errors[0].find(text), std::string::npos) << errors[0];
 }
 
 template <typename T>
@@ -97,12 +118,41 @@ TEST(ModelSetters, ByNameAsInSceneFiles)
   const int last = static_cast<int>(shadelab::kLightingModels[shadelab::kLightingModelCount - 1].model);
   for (const char* bad : { "Phong", "blinn phong", "", "6" })
   {
-    EXPECT_FALSE(lobe->SetModelName(bad)) << bad;
-    EXPECT_FALSE(radiance->SetModelName(bad)) << bad;
-    EXPECT_FALSE(pass->SetModelName(bad)) << bad;
+    // One error naming the models, as scene files spell them.
+    const std::string text = std::string("SetModelName: \"") + bad + "\" is not a lighting model (lambert, phong,";
+    expectOneError(lobe, [&] { return lobe->SetModelName(bad); }, text);
+    expectOneError(radiance, [&] { return radiance->SetModelName(bad); }, text);
+    expectOneError(pass, [&] { return pass->SetModelName(bad); }, text);
   }
-  EXPECT_FALSE(radiance->SetModelName(nullptr));
+  expectOneError(radiance, [&] { return radiance->SetModelName(nullptr); }, "SetModelName: (null) is not a lighting model");
   EXPECT_EQ(lobe->GetModel(), last);
   EXPECT_EQ(radiance->GetModel(), last);
   EXPECT_EQ(pass->GetModel(), last);
+}
+
+TEST(ModelSetters, SceneFrequencyAndComparisonPanelsByName)
+{
+  // The scene, the pass's frequency and a comparison's panels take names too,
+  // and say which there are when one is not.
+  vtkNew<slScene> scene;
+  vtkNew<slLightingPass> pass;
+  vtkNew<slComparisonRenderer> comparison;
+  EXPECT_TRUE(scene->SetModelName("ward"));
+  EXPECT_TRUE(scene->SetFrequencyName("flat"));
+  EXPECT_TRUE(pass->SetFrequencyName("gouraud"));
+  expectOneError(scene, [&] { return scene->SetModelName("Ward"); },
+    "SetModelName: \"Ward\" is not a lighting model (lambert, phong,");
+  expectOneError(scene, [&] { return scene->SetFrequencyName("smooth"); },
+    "SetFrequencyName: \"smooth\" is not a shading frequency (flat, gouraud, phong)");
+  expectOneError(pass, [&] { return pass->SetFrequencyName(nullptr); },
+    "SetFrequencyName: (null) is not a shading frequency (flat, gouraud, phong)");
+  EXPECT_EQ(scene->GetModelName(), "ward");
+  EXPECT_EQ(scene->GetFrequencyName(), "flat");
+  EXPECT_EQ(pass->GetFrequency(), static_cast<int>(shadelab::ShadingFrequency::Gouraud));
+  expectOneError(comparison, [&] { return comparison->AddPanel("a", "toon", "phong"); },
+    "AddPanel: \"toon\" is not a lighting model (lambert, phong,");
+  expectOneError(comparison, [&] { return comparison->AddPanel("a", "phong", "smooth"); },
+    "AddPanel: \"smooth\" is not a shading frequency (flat, gouraud, phong)");
+  EXPECT_EQ(comparison->GetNumberOfPanels(), 0);
+  EXPECT_TRUE(comparison->AddPanel("a", "phong", "flat"));
 }

@@ -217,7 +217,6 @@ TEST(ImageRegressionLobes, ThreePartsWithModelsOverlaid)
   vtkNew<slLobeImageRenderer> lobes;
   ASSERT_TRUE(lobes->AddModel("phong"));
   ASSERT_TRUE(lobes->AddModel("blinn-phong-normalized"));
-  EXPECT_FALSE(lobes->AddModel("toon"));
   lobes->GetLobeParameters()->SetIncidenceAngle(40.0);
   lobes->SetPanelWidth(240);
   lobes->SetPanelHeight(200);

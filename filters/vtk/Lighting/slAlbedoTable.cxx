@@ -103,19 +103,7 @@ bool slAlbedoTable::SetModelEnabled(int model, bool enabled)
 
 bool slAlbedoTable::SetModelEnabled(const char* name, bool enabled)
 {
-  const int model = slModelNumber(name);
-  if (model < 0)
-  {
-    std::string names;
-    for (const std::string& known : shadelab::modelNames())
-    {
-      names += (names.empty() ? "" : ", ") + known;
-    }
-    vtkErrorMacro(<< "SetModelEnabled: \"" << (name ? name : "(null)") << "\" is not a lighting model (" << names
-                  << ")");
-    return false;
-  }
-  return this->SetModelEnabled(model, enabled);
+  return slCheckModelName(this, name, "SetModelEnabled") && this->SetModelEnabled(slModelNumber(name), enabled);
 }
 
 bool slAlbedoTable::GetModelEnabled(int model)

@@ -60,8 +60,8 @@ public:
   /// Any other value is an error (vtkErrorMacro) and leaves the model as it was.
   void SetModel(int model);
   vtkGetMacro(Model, int);
-  /// By scene-file name (those of slScene::SetModelName()); false, and the
-  /// model as it was, for an unknown name.
+  /// By scene-file name (those of slScene::SetModelName()); an unknown
+  /// name is an error (vtkErrorMacro): false, and the model as it was.
   bool SetModelName(const char* name);
   std::string GetModelName() const;
   ///@}

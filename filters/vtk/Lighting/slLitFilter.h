@@ -111,8 +111,9 @@ public:
   void SetModel(int model);
   vtkGetMacro(Model, int);
   /// By scene-file name ("phong", "cook-torrance-ggx", ...: those of
-  /// slScene::SetModelName()); false, and the model as it was, for an
-  /// unknown name. GetModelName() is "" while the model is the scene's own.
+  /// slScene::SetModelName()); an unknown name is an error (vtkErrorMacro):
+  /// false, and the model as it was. GetModelName() is "" while the model
+  /// is the scene's own.
   bool SetModelName(const char* name);
   std::string GetModelName() const;
   ///@}

@@ -15,6 +15,17 @@ bool slCheckModel(vtkObject* self, int model, bool sceneOwnAllowed, const char* 
   return false;
 }
 
+bool slCheckModelName(vtkObject* self, const char* name, const char* setter)
+{
+  const std::string problem = shadelab::modelNameProblem(name);
+  if (problem.empty())
+  {
+    return true;
+  }
+  vtkErrorWithObjectMacro(self, << setter << ": " << problem);
+  return false;
+}
+
 int slModelNumber(const char* name)
 {
   shadelab::ShadingModel model;

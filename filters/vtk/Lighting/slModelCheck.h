@@ -26,17 +26,22 @@ SHADELABLIGHTING_EXPORT bool slCheckModel(
 /// null or unknown name: what every SetModelName() passes to its SetModel().
 SHADELABLIGHTING_EXPORT int slModelNumber(const char* name);
 
-/// @p self->SetModel() with the model named @p name; false, and nothing
-/// set, for a null or unknown name. The body of every SetModelName().
+/// True if @p name is a model's scene-file name; else reports
+/// "SetModelName: \"Phong\" is not a lighting model (lambert, phong, ...)"
+/// (the @p setter's name first) as an error of @p self and returns false.
+SHADELABLIGHTING_EXPORT bool slCheckModelName(vtkObject* self, const char* name, const char* setter = "SetModelName");
+
+/// @p self->SetModel() with the model named @p name; false, an error
+/// (slCheckModelName()) and nothing set for a null or unknown name. The
+/// body of every SetModelName().
 template <typename Self>
 bool slSetModelByName(Self* self, const char* name)
 {
-  const int model = slModelNumber(name);
-  if (model < 0)
+  if (!slCheckModelName(self, name))
   {
     return false;
   }
-  self->SetModel(model);
+  self->SetModel(slModelNumber(name));
   return true;
 }
 

@@ -59,10 +59,13 @@ std::string slScene::GetModelName() const
 
 bool slScene::SetModelName(const char* name)
 {
-  if (!name || !shadelab::parseModelName(name, this->Data->model))
+  const std::string problem = shadelab::modelNameProblem(name);
+  if (!problem.empty())
   {
+    vtkErrorMacro(<< "SetModelName: " << problem);
     return false;
   }
+  shadelab::parseModelName(name, this->Data->model);
   this->Modified();
   return true;
 }
@@ -74,10 +77,13 @@ std::string slScene::GetFrequencyName() const
 
 bool slScene::SetFrequencyName(const char* name)
 {
-  if (!name || !shadelab::parseFrequencyName(name, this->Data->frequency))
+  const std::string problem = shadelab::frequencyNameProblem(name);
+  if (!problem.empty())
   {
+    vtkErrorMacro(<< "SetFrequencyName: " << problem);
     return false;
   }
+  shadelab::parseFrequencyName(name, this->Data->frequency);
   this->Modified();
   return true;
 }

@@ -85,13 +85,14 @@ public:
   /// lighting table (shadelab/LightingTables.h), "lambert", "phong",
   /// "blinn-phong", their "-normalized" variants, "cook-torrance-ggx" and the
   /// others `shadelab render --help` lists. SetModelName() returns false for
-  /// an unknown name.
+  /// an unknown name, which is an error (vtkErrorMacro) naming the models.
   std::string GetModelName() const;
   bool SetModelName(const char* name);
   ///@}
 
   ///@{
-  /// Shading frequency by name ("flat", "gouraud", "phong").
+  /// Shading frequency by name ("flat", "gouraud", "phong"); another name
+  /// is an error (vtkErrorMacro): false, and the frequency as it was.
   std::string GetFrequencyName() const;
   bool SetFrequencyName(const char* name);
   ///@}

@@ -1,6 +1,10 @@
 #include "shadelab/Scene.h"
 
+#include "shadelab/PrintableText.h"
+
 #include <glm/gtc/constants.hpp>
+
+#include <algorithm>
 
 namespace shadelab
 {
@@ -102,6 +106,20 @@ std::string valueProblem(int value, const std::vector<std::string>& names, const
   }
   return std::to_string(value) + " is not " + what + " (" + list + ")";
 }
+
+std::string nameProblem(const char* name, const std::vector<std::string>& names, const char* what)
+{
+  if (name && std::find(names.begin(), names.end(), name) != names.end())
+  {
+    return "";
+  }
+  std::string list;
+  for (const std::string& known : names)
+  {
+    list += (list.empty() ? "" : ", ") + known;
+  }
+  return (name ? "\"" + printableText(name) + "\"" : std::string("(null)")) + " is not " + what + " (" + list + ")";
+}
 } // namespace
 
 std::string modelValueProblem(int value)
@@ -111,6 +129,15 @@ std::string modelValueProblem(int value)
 std::string lightTypeValueProblem(int value)
 {
   return valueProblem(value, lightTypeNames(), "a light type");
+}
+
+std::string modelNameProblem(const char* name)
+{
+  return nameProblem(name, modelNames(), "a lighting model");
+}
+std::string frequencyNameProblem(const char* name)
+{
+  return nameProblem(name, frequencyNames(), "a shading frequency");
 }
 
 bool parseModelName(const std::string& name, ShadingModel& out)

@@ -158,6 +158,12 @@ const std::vector<std::string>& lightSpaceNames();
 std::string modelValueProblem(int value);
 std::string lightTypeValueProblem(int value);
 
+/// "" if @p name spells a lighting model (a shading frequency); else the
+/// problem, for any way in that takes a name: "\"Phong\" is not a
+/// lighting model (lambert, phong, ...)" (a null name reads as "(null)").
+std::string modelNameProblem(const char* name);
+std::string frequencyNameProblem(const char* name);
+
 /// Parse a spelling; returns false (leaving @p out alone) if it is not one.
 bool parseModelName(const std::string& name, ShadingModel& out);
 bool parseFrequencyName(const std::string& name, ShadingFrequency& out);
