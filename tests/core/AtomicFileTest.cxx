@@ -1,5 +1,7 @@
 #include "shadelab/AtomicFile.h"
 
+#include "TestFolder.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -36,19 +38,14 @@ int entriesIn(const std::string& folder)
   return count;
 }
 
-std::string freshFolder()
-{
-  char pattern[] = "/tmp/shadelab-atomic-XXXXXX";
-  return mkdtemp(pattern);
-}
-
 /// The tests below run with either kind of temporary file.
 class AtomicFileOfKind : public ::testing::TestWithParam<TemporaryKind>
 {
 protected:
   void SetUp() override
   {
-    if (GetParam() == TemporaryKind::Unnamed && !AtomicOutput(freshFolder() + "/probe").unnamed())
+    const TestFolder probe;
+    if (GetParam() == TemporaryKind::Unnamed && !AtomicOutput(probe.path("probe")).unnamed())
     {
       GTEST_SKIP() << "/tmp's file system has no O_TMPFILE (or /proc is not mounted)";
     }
@@ -70,7 +67,8 @@ INSTANTIATE_TEST_SUITE_P(Kinds, AtomicFileOfKind, ::testing::Values(TemporaryKin
 
 TEST_P(AtomicFileOfKind, WritesAndReplaces)
 {
-  const std::string folder = freshFolder();
+  const TestFolder temporary;
+  const std::string folder = temporary.root();
   const std::string path = folder + "/out.txt";
   this->write(path, "first");
   EXPECT_EQ(slurp(path), "first");
@@ -82,7 +80,8 @@ TEST_P(AtomicFileOfKind, WritesAndReplaces)
 TEST_P(AtomicFileOfKind, NewFilesGetTheUsualPermissions)
 {
   // Like a file opened for writing: 0666 less the umask (not mkstemp's 0600).
-  const std::string folder = freshFolder();
+  const TestFolder temporary;
+  const std::string folder = temporary.root();
   const mode_t mask = umask(022);
   this->write(folder + "/new.txt", "x");
   umask(mask);
@@ -99,7 +98,8 @@ TEST_P(AtomicFileOfKind, NewFilesGetTheUsualPermissions)
 
 TEST_P(AtomicFileOfKind, UncommittedOutputLeavesTheOldFile)
 {
-  const std::string folder = freshFolder();
+  const TestFolder temporary;
+  const std::string folder = temporary.root();
   const std::string path = folder + "/image.png";
   writeFileAtomically(path, "old");
   {
@@ -140,7 +140,8 @@ TEST_P(AtomicFileOfKind, InterruptedWriterLeavesNoTemporaryFile)
   // A writer killed mid-write, by a signal it may catch or by one it cannot.
   for (const int signal : { SIGINT, SIGKILL })
   {
-    const std::string folder = freshFolder();
+    const TestFolder temporary;
+    const std::string folder = temporary.root();
     const std::string path = folder + "/mesh.vtp";
     writeFileAtomically(path, "old");
     int pipeEnds[2];
@@ -202,7 +203,8 @@ TEST(AtomicFile, TemporaryNamesStayWithinNameMax)
 
 TEST_P(AtomicFileOfKind, WritesTheLongestValidName)
 {
-  const std::string folder = freshFolder();
+  const TestFolder temporary;
+  const std::string folder = temporary.root();
   const std::string path = folder + "/" + std::string(251, 'n') + ".vtp"; // 255 bytes
   this->write(path, "data");
   EXPECT_EQ(slurp(path), "data");
@@ -211,7 +213,8 @@ TEST_P(AtomicFileOfKind, WritesTheLongestValidName)
 
 TEST_P(AtomicFileOfKind, RemovesStaleTemporariesButNotLiveOnes)
 {
-  const std::string folder = freshFolder();
+  const TestFolder temporary;
+  const std::string folder = temporary.root();
   const std::string path = folder + "/out.vtp";
   // A live writer of the same target holds its temporary file's lock.
   AtomicOutput live(path, GetParam());
@@ -229,7 +232,8 @@ TEST_P(AtomicFileOfKind, RemovesStaleTemporariesButNotLiveOnes)
 
 TEST_P(AtomicFileOfKind, CommitWrittenRefusesAShortFile)
 {
-  const std::string folder = freshFolder();
+  const TestFolder temporary;
+  const std::string folder = temporary.root();
   const std::string path = folder + "/mesh.ply";
   writeFileAtomically(path, "old");
   try
@@ -257,7 +261,8 @@ TEST_P(AtomicFileOfKind, WritesThroughSymbolicLinks)
 {
   // A link to a figure in another folder (relative, then absolute, then a
   // link to a link): the figure is replaced, the link stays a link.
-  const std::string folder = freshFolder();
+  const TestFolder temporary;
+  const std::string folder = temporary.root();
   ASSERT_EQ(mkdir((folder + "/slides").c_str(), 0755), 0);
   const std::string figure = folder + "/slides/fig.png";
   writeFileAtomically(figure, "old");

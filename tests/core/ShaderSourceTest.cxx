@@ -5,6 +5,8 @@
 // installs: its absence is a failure, not a skip).
 #include "shadelab/LightingShaderSource.h"
 
+#include "TestFolder.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -46,9 +48,9 @@ TEST(ShaderSource, CompilesAsGLSL150)
   {
     FAIL() << "glslangValidator not installed (Debian package glslang-tools; run scripts/install-deps.sh)";
   }
-  char folder[] = "/tmp/shadelab-glsl-XXXXXX";
-  ASSERT_NE(mkdtemp(folder), nullptr);
-  const std::string path = std::string(folder) + "/lighting.frag";
+  const TestFolder folder;
+  ASSERT_TRUE(folder.valid());
+  const std::string path = folder.path("lighting.frag");
   {
     std::ofstream out(path);
     out << "#version 150\n"

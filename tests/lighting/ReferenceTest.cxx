@@ -3,7 +3,7 @@
 // small distant light, zero variance where theory says so, and 1/sqrt(N).
 #include "LightingTestMeshes.h"
 
-#include "../filters/TestFolder.h"
+#include "TestFolder.h"
 #include "slImageWriter.h"
 #include "slRadianceReference.h"
 #include "VTKErrors.h"

@@ -5,6 +5,7 @@
 #include "slImageWriter.h"
 #include "slLightingPass.h"
 #include "slNormalMapFilter.h"
+#include "TestFolder.h"
 #include "VTKErrors.h"
 
 #include <vtkActor.h>
@@ -159,9 +160,9 @@ TEST_P(NormalMap, GPUDecodesAsTheCPUFilter)
   stage.actor->GetProperty()->SetNormalTexture(tiltedNormalMap(tilt));
   const float gpu = stage.render().at(50, 50)[0];
 
-  char folder[] = "/tmp/shadelab-normalmap-XXXXXX";
-  ASSERT_NE(mkdtemp(folder), nullptr);
-  const std::string path = std::string(folder) + "/map.png";
+  const TestFolder folder;
+  ASSERT_TRUE(folder.valid());
+  const std::string path = folder.path("map.png");
   vtkNew<slImageWriter> writer;
   writer->SetInputData(tiltedNormalImage(tilt));
   writer->SetFileName(path.c_str());
@@ -169,10 +170,7 @@ TEST_P(NormalMap, GPUDecodesAsTheCPUFilter)
   vtkNew<slNormalMapFilter> mapped;
   mapped->SetInputData(tangentPlane(GetParam(), 1.0f, skew));
   mapped->SetFileName(path.c_str());
-  const std::string error = updateError(mapped);
-  std::remove(path.c_str());
-  rmdir(folder);
-  ASSERT_EQ(error, "");
+  ASSERT_EQ(updateError(mapped), "");
   double n[3];
   mapped->GetOutput()->GetPointData()->GetNormals()->GetTuple(0, n);
   const double cpu = std::max(0.0, -(n[0] * scene.lights[0].direction.x + n[1] * scene.lights[0].direction.y +

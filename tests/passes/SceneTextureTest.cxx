@@ -10,6 +10,7 @@
 #include "slRadianceFilter.h"
 #include "slScene.h"
 #include "slSceneRenderer.h"
+#include "TestFolder.h"
 #include "VTKErrors.h"
 
 #include "shadelab/Scene.h"
@@ -55,30 +56,6 @@ int blockOf(int x, int y)
 {
   return (y >= kTextureSize / 2 ? 2 : 0) + (x >= kTextureSize / 2 ? 1 : 0);
 }
-
-/// A folder of its own for the test's images, removed afterwards.
-class TemporaryFolder
-{
-public:
-  TemporaryFolder()
-  {
-    char pattern[] = "/tmp/shadelab-texture-XXXXXX";
-    const char* made = mkdtemp(pattern);
-    this->Folder = made ? made : "";
-  }
-  ~TemporaryFolder()
-  {
-    std::error_code ignored;
-    std::filesystem::remove_all(this->Folder, ignored);
-  }
-  TemporaryFolder(const TemporaryFolder&) = delete;
-  TemporaryFolder& operator=(const TemporaryFolder&) = delete;
-  bool valid() const { return !this->Folder.empty(); }
-  std::string path(const std::string& name) const { return this->Folder + "/" + name; }
-
-private:
-  std::string Folder;
-};
 
 /// The block texture with @p channels channels (1: the red channel as
 /// grey; 3: RGB): 8-bit values v, or v / 255 as float.
@@ -334,7 +311,7 @@ std::string lightingName(const ::testing::TestParamInfo<bool>& info)
 
 TEST_P(SceneTexture, DeepImagesRenderAsTheEightBitOne)
 {
-  TemporaryFolder folder;
+  TestFolder folder;
   ASSERT_TRUE(folder.valid());
   vtkSmartPointer<vtkImageData> bytes = blockTexture(3, false);
   vtkSmartPointer<vtkImageData> floats = blockTexture(3, true);
@@ -355,7 +332,7 @@ TEST_P(SceneTexture, DeepImagesRenderAsTheEightBitOne)
 
 TEST_P(SceneTexture, SixteenBitGreyRendersAsEightBitGrey)
 {
-  TemporaryFolder folder;
+  TestFolder folder;
   ASSERT_TRUE(folder.valid());
   vtkSmartPointer<vtkImageData> grey = blockTexture(1, false);
   writeImage(grey, folder.path("grey8.png"));
@@ -372,7 +349,7 @@ TEST_P(SceneTexture, FloatValuesAreUsedAsStored)
   // The rule of slDiffuseColors on the CPU: float texels are used as they
   // are, above 1 included (HDR brightens k_d; the pixel is clamped at the
   // end), not normalised to their range; a value that is not finite is 0.
-  TemporaryFolder folder;
+  TestFolder folder;
   ASSERT_TRUE(folder.valid());
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const std::array<std::array<float, 3>, 4> texels = { { { 2.5f, 0.5f, 1.0f }, { 0.25f, 0.25f, 0.25f },
@@ -413,7 +390,7 @@ TEST(SceneTextureCPU, DeepImagesGiveTheEightBitColours)
 {
   // slRadianceFilter's lookup (slDiffuseColors) of the same picture as 8-bit
   // PNG, 16-bit PNG and float EXR: the same k_d at every point.
-  TemporaryFolder folder;
+  TestFolder folder;
   ASSERT_TRUE(folder.valid());
   vtkSmartPointer<vtkImageData> bytes = blockTexture(3, false);
   writeImage(bytes, folder.path("texture8.png"));

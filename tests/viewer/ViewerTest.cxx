@@ -177,10 +177,12 @@ class ViewerTest : public QObject
   Q_OBJECT
 
 private:
-  QTemporaryDir Folder;
+  // Made by the first test run, not by the constructor: test discovery
+  // (-functions) ends the program with exit(), which would leave it behind.
+  std::unique_ptr<QTemporaryDir> Folder;
   std::unique_ptr<MainWindow> Window;
 
-  QString path(const QString& name) const { return this->Folder.filePath(name); }
+  QString path(const QString& name) const { return this->Folder->filePath(name); }
   Rgb grab() { return toRgb(this->Window->view()->grabImage()); }
 
 private slots:
@@ -621,7 +623,11 @@ private slots:
 
   void init()
   {
-    QVERIFY(this->Folder.isValid());
+    if (!this->Folder)
+    {
+      this->Folder.reset(new QTemporaryDir);
+    }
+    QVERIFY(this->Folder->isValid());
     QFile file(this->path("scene.json"));
     QVERIFY(file.open(QIODevice::WriteOnly));
     file.write(kSceneText);
