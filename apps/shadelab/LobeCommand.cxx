@@ -49,6 +49,12 @@ int modelNumber(const CommandLine& cl)
   return static_cast<int>(cl.has("model") ? parseModelOption("model", cl.get("model")) : ShadingModel::Phong);
 }
 
+/// The models --models names ("all" when @p allowAll), else --model's.
+std::vector<ShadingModel> chosenModels(const CommandLine& cl, bool allowAll)
+{
+  return parseModelList("models", cl.get("models", modelName(static_cast<ShadingModel>(modelNumber(cl)))), allowAll);
+}
+
 /// --theta-resolution and --phi-resolution onto @p lobes (slBRDFLobeSource
 /// or slLobesOnMesh), each within the class's own range; not given, the
 /// class's default.
@@ -353,8 +359,7 @@ int runLobe(const std::vector<std::string>& args)
     if (cl.has("models") || cl.has("model"))
     {
       table->DisableAllModels();
-      const std::string names = cl.get("models", modelName(static_cast<ShadingModel>(modelNumber(cl))));
-      for (const ShadingModel model : parseModelList("models", names, true))
+      for (const ShadingModel model : chosenModels(cl, true))
       {
         table->SetModelEnabled(static_cast<int>(model), true);
       }
@@ -387,8 +392,7 @@ int runLobe(const std::vector<std::string>& args)
     vtkNew<slLobeImageRenderer> image;
     if (cl.has("models") || cl.has("model") || brdfs.empty())
     {
-      const std::string names = cl.get("models", modelName(static_cast<ShadingModel>(modelNumber(cl))));
-      for (const ShadingModel model : parseModelList("models", names, false))
+      for (const ShadingModel model : chosenModels(cl, false))
       {
         if (!image->AddModel(modelName(model)))
         {

@@ -204,13 +204,11 @@ void slLightingPass::SetComponent(int component)
 bool slLightingPass::SetFrequencyName(const char* name)
 {
   shadelab::ShadingFrequency frequency;
-  const std::string problem = shadelab::frequencyNameProblem(name);
-  if (!problem.empty())
+  if (!name || !shadelab::parseFrequencyName(name, frequency))
   {
-    vtkErrorMacro(<< "SetFrequencyName: " << problem);
+    vtkErrorMacro(<< "SetFrequencyName: " << shadelab::frequencyNameProblem(name));
     return false;
   }
-  shadelab::parseFrequencyName(name, frequency);
   this->SetFrequency(static_cast<int>(frequency));
   return true;
 }

@@ -66,20 +66,18 @@ void slComparisonRenderer::SetMesh(vtkPolyData* mesh)
 
 bool slComparisonRenderer::AddPanel(const char* text, const char* model, const char* frequency)
 {
-  std::string problem = shadelab::modelNameProblem(model);
-  if (problem.empty())
-  {
-    problem = shadelab::frequencyNameProblem(frequency);
-  }
-  if (!problem.empty())
-  {
-    vtkErrorMacro(<< "AddPanel: " << problem);
-    return false;
-  }
   shadelab::ShadingModel m;
   shadelab::ShadingFrequency f;
-  shadelab::parseModelName(model, m);
-  shadelab::parseFrequencyName(frequency, f);
+  if (!model || !shadelab::parseModelName(model, m))
+  {
+    vtkErrorMacro(<< "AddPanel: " << shadelab::modelNameProblem(model));
+    return false;
+  }
+  if (!frequency || !shadelab::parseFrequencyName(frequency, f))
+  {
+    vtkErrorMacro(<< "AddPanel: " << shadelab::frequencyNameProblem(frequency));
+    return false;
+  }
   this->Panels.push_back({ text ? text : "", static_cast<int>(m), static_cast<int>(f) });
   this->Modified();
   return true;

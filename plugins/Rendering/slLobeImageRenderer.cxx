@@ -109,18 +109,16 @@ slLobeImageRenderer::~slLobeImageRenderer() = default;
 
 bool slLobeImageRenderer::AddModel(const char* name)
 {
-  const std::string problem = shadelab::modelNameProblem(name);
-  if (!problem.empty())
+  shadelab::ShadingModel model;
+  if (!name || !shadelab::parseModelName(name, model))
   {
-    vtkErrorMacro(<< "AddModel: " << problem);
+    vtkErrorMacro(<< "AddModel: " << shadelab::modelNameProblem(name));
     return false;
   }
   if (!this->HasRoomFor("AddModel"))
   {
     return false;
   }
-  shadelab::ShadingModel model;
-  shadelab::parseModelName(name, model);
   Entry entry;
   entry.Model = static_cast<int>(model);
   this->Entries.push_back(entry);

@@ -43,8 +43,9 @@ public:
   bool AddModel(const char* name);
 
   /// Adds a BRDF Explorer .brdf file, read when rendering; no name, or a
-  /// seventh BRDF, is an error (vtkErrorMacro): false, and nothing added. Its name in the legends is the file's
-  /// name without its folder (shadelab::brdfDisplayName()).
+  /// seventh BRDF, is an error (vtkErrorMacro): false, and nothing added.
+  /// Its name in the legends is the file's name without its folder
+  /// (shadelab::brdfDisplayName()).
   bool AddBRDFFile(const char* path);
 
   /// A "name=value" override (shadelab::brdfParameterValues()) for the

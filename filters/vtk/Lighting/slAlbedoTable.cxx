@@ -103,7 +103,8 @@ bool slAlbedoTable::SetModelEnabled(int model, bool enabled)
 
 bool slAlbedoTable::SetModelEnabled(const char* name, bool enabled)
 {
-  return slCheckModelName(this, name, "SetModelEnabled") && this->SetModelEnabled(slModelNumber(name), enabled);
+  const int model = slModelNumber(name);
+  return model < 0 ? slCheckModelName(this, name, "SetModelEnabled") : this->SetModelEnabled(model, enabled);
 }
 
 bool slAlbedoTable::GetModelEnabled(int model)

@@ -37,11 +37,12 @@ SHADELABLIGHTING_EXPORT bool slCheckModelName(vtkObject* self, const char* name,
 template <typename Self>
 bool slSetModelByName(Self* self, const char* name)
 {
-  if (!slCheckModelName(self, name))
+  const int model = slModelNumber(name);
+  if (model < 0)
   {
-    return false;
+    return slCheckModelName(self, name); // reports it
   }
-  self->SetModel(slModelNumber(name));
+  self->SetModel(model);
   return true;
 }
 

@@ -59,13 +59,11 @@ std::string slScene::GetModelName() const
 
 bool slScene::SetModelName(const char* name)
 {
-  const std::string problem = shadelab::modelNameProblem(name);
-  if (!problem.empty())
+  if (!name || !shadelab::parseModelName(name, this->Data->model))
   {
-    vtkErrorMacro(<< "SetModelName: " << problem);
+    vtkErrorMacro(<< "SetModelName: " << shadelab::modelNameProblem(name));
     return false;
   }
-  shadelab::parseModelName(name, this->Data->model);
   this->Modified();
   return true;
 }
@@ -77,13 +75,11 @@ std::string slScene::GetFrequencyName() const
 
 bool slScene::SetFrequencyName(const char* name)
 {
-  const std::string problem = shadelab::frequencyNameProblem(name);
-  if (!problem.empty())
+  if (!name || !shadelab::parseFrequencyName(name, this->Data->frequency))
   {
-    vtkErrorMacro(<< "SetFrequencyName: " << problem);
+    vtkErrorMacro(<< "SetFrequencyName: " << shadelab::frequencyNameProblem(name));
     return false;
   }
-  shadelab::parseFrequencyName(name, this->Data->frequency);
   this->Modified();
   return true;
 }

@@ -119,8 +119,8 @@ double directionalAlbedo(int model, const glsl::slMaterial& material, double the
   {
     // Its exponent is taken as the mean of nu and nv where
     // 1 - (N.H)^2 <= SL_MIN_COS_THETA: a small step at sin(t) = 1e-3 that
-    // the bisection chased 40 levels deep at every azimuth (at 89 degrees,
-    // 48 ms of the angle's 51).
+    // the bisection chased 40 levels deep at every azimuth (at 89 degrees
+    // 311,415 evaluations of f_r without this break, 50,160 with it).
     breaks.push_back(std::asin(std::sqrt(glsld::SL_MIN_COS_THETA)));
   }
   std::sort(breaks.begin(), breaks.end());
